@@ -1,0 +1,35 @@
+# The two commands of the README. Both install missing Debian packages, configure and build.
+PRESET ?= release
+BUILD := build/$(PRESET)
+JOBS ?= $(shell nproc)
+
+.PHONY: all setup configure build demo test test-slow asan bench clean
+
+all: build
+
+setup:
+	@bash scripts/setup
+
+configure: setup
+	@[ -f $(BUILD)/build.ninja ] || cmake --preset $(PRESET) >/dev/null
+
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	@$(BUILD)/cli/dtlab demo --out out/demo
+
+test: build
+	@ctest --test-dir $(BUILD) -LE slow -j $(JOBS) --output-on-failure
+
+test-slow: build
+	@ctest --test-dir $(BUILD) -L slow -j $(JOBS) --output-on-failure
+
+asan:
+	@$(MAKE) --no-print-directory test PRESET=asan
+
+bench: build
+	@$(BUILD)/bench/dtlab_bench_predicates
+
+clean:
+	rm -rf build out

@@ -1,0 +1,9 @@
+#pragma once
+#include "cli/command.hpp"
+
+namespace dtlab::cli {
+
+// Registers every subcommand; defined in commands.cpp.
+void register_commands(CLI::App& app, int& rc);
+
+}  // namespace dtlab::cli

@@ -1,0 +1,91 @@
+#include "kernel/point_io.hpp"
+
+#include <cstdio>
+#include <memory>
+
+#include "kernel/line_reader.hpp"
+
+namespace dtlab {
+
+namespace {
+
+bool ends_with(const std::string& s, std::string_view suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using File = std::unique_ptr<std::FILE, FileCloser>;
+
+File open_for_writing(const std::string& path) {
+  File f(std::fopen(path.c_str(), "w"));
+  if (!f) throw InputError(path, 0, "cannot open file for writing");
+  return f;
+}
+
+}  // namespace
+
+PointFile read_points(const std::string& path) {
+  if (ends_with(path, ".node")) return read_node(path);
+  if (ends_with(path, ".xyz") || ends_with(path, ".txt")) return read_xyz(path);
+  throw InputError(path, 0, "unknown point file extension (expected .node or .xyz)");
+}
+
+PointFile read_node(const std::string& path) {
+  LineReader r(path);
+  std::vector<std::string_view> tok;
+  if (!r.next(tok)) r.fail("empty .node file: missing header");
+  if (tok.size() < 1 || tok.size() > 4) r.fail("header must be: <#points> [dim] [#attributes] [#markers]");
+  const long n = r.to_long(tok[0]);
+  const long dim = tok.size() > 1 ? r.to_long(tok[1]) : 3;
+  const long attrs = tok.size() > 2 ? r.to_long(tok[2]) : 0;
+  const long markers = tok.size() > 3 ? r.to_long(tok[3]) : 0;
+  if (n < 0) r.fail("negative point count");
+  if (dim != 3) r.fail("dimension must be 3, got " + std::to_string(dim));
+  if (attrs < 0 || markers < 0 || markers > 1) r.fail("bad attribute or marker count");
+  PointFile out;
+  out.points.reserve(static_cast<std::size_t>(n));
+  const std::size_t want = 4 + static_cast<std::size_t>(attrs + markers);
+  for (long i = 0; i < n; ++i) {
+    if (!r.next(tok)) r.fail("expected " + std::to_string(n) + " points, file ends after " + std::to_string(i));
+    if (tok.size() != want)
+      r.fail("expected " + std::to_string(want) + " fields, got " + std::to_string(tok.size()));
+    const long index = r.to_long(tok[0]);
+    if (i == 0) {
+      if (index != 0 && index != 1) r.fail("first point index must be 0 or 1");
+      out.first_index = static_cast<int>(index);
+    } else if (index != i + out.first_index) {
+      r.fail("point index " + std::to_string(index) + " out of sequence (expected " +
+             std::to_string(i + out.first_index) + ")");
+    }
+    out.points.push_back({r.to_double(tok[1]), r.to_double(tok[2]), r.to_double(tok[3])});
+  }
+  if (r.next(tok)) r.fail("unexpected data after the last point");
+  return out;
+}
+
+PointFile read_xyz(const std::string& path) {
+  LineReader r(path);
+  std::vector<std::string_view> tok;
+  PointFile out;
+  while (r.next(tok)) {
+    if (tok.size() < 3) r.fail("expected 'x y z', got " + std::to_string(tok.size()) + " field(s)");
+    out.points.push_back({r.to_double(tok[0]), r.to_double(tok[1]), r.to_double(tok[2])});
+  }
+  return out;
+}
+
+void write_node(const std::string& path, const std::vector<Point3>& points) {
+  File f = open_for_writing(path);
+  std::fprintf(f.get(), "%zu 3 0 0\n", points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    std::fprintf(f.get(), "%zu %.17g %.17g %.17g\n", i, points[i].x, points[i].y, points[i].z);
+}
+
+void write_xyz(const std::string& path, const std::vector<Point3>& points) {
+  File f = open_for_writing(path);
+  for (const Point3& p : points) std::fprintf(f.get(), "%.17g %.17g %.17g\n", p.x, p.y, p.z);
+}
+
+}  // namespace dtlab

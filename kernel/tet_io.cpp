@@ -1,0 +1,85 @@
+#include "kernel/tet_io.hpp"
+
+#include <cstdio>
+#include <memory>
+
+#include "kernel/line_reader.hpp"
+#include "kernel/point_io.hpp"
+
+namespace dtlab {
+
+namespace {
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+}  // namespace
+
+void write_tetgen(const std::string& prefix, const Tetrahedralization& t) {
+  write_node(prefix + ".node", t.points);
+  std::unique_ptr<std::FILE, FileCloser> f(std::fopen((prefix + ".ele").c_str(), "w"));
+  if (!f) throw InputError(prefix + ".ele", 0, "cannot open file for writing");
+  std::fprintf(f.get(), "%zu 4 0\n", t.tets.size());
+  for (std::size_t i = 0; i < t.tets.size(); ++i) {
+    const Tet& k = t.tets[i];
+    std::fprintf(f.get(), "%zu %u %u %u %u\n", i, k[1], k[0], k[2], k[3]);
+  }
+}
+
+std::vector<Tet> read_ele(const std::string& path, int first_index, std::size_t point_count) {
+  LineReader r(path);
+  std::vector<std::string_view> tok;
+  if (!r.next(tok)) r.fail("empty .ele file: missing header");
+  if (tok.size() < 1 || tok.size() > 3) r.fail("header must be: <#tets> [nodes per tet] [#attributes]");
+  const long n = r.to_long(tok[0]);
+  const long per = tok.size() > 1 ? r.to_long(tok[1]) : 4;
+  const long attrs = tok.size() > 2 ? r.to_long(tok[2]) : 0;
+  if (n < 0) r.fail("negative tetrahedron count");
+  if (per != 4) r.fail("only linear tetrahedra (4 nodes) are supported, got " + std::to_string(per));
+  if (attrs < 0) r.fail("negative attribute count");
+  std::vector<Tet> tets;
+  tets.reserve(static_cast<std::size_t>(n));
+  for (long i = 0; i < n; ++i) {
+    if (!r.next(tok)) r.fail("expected " + std::to_string(n) + " tetrahedra, file ends after " + std::to_string(i));
+    if (tok.size() != static_cast<std::size_t>(5 + attrs))
+      r.fail("expected " + std::to_string(5 + attrs) + " fields, got " + std::to_string(tok.size()));
+    Tet k{};
+    for (int j = 0; j < 4; ++j) {
+      const long v = r.to_long(tok[1 + j]) - first_index;
+      if (v < 0 || static_cast<std::size_t>(v) >= point_count)
+        r.fail("vertex index " + std::string(tok[1 + j]) + " out of range");
+      k[j] = static_cast<std::uint32_t>(v);
+    }
+    std::swap(k[0], k[1]);
+    tets.push_back(k);
+  }
+  return tets;
+}
+
+Tetrahedralization read_tetgen(const std::string& prefix) {
+  PointFile pf = read_node(prefix + ".node");
+  Tetrahedralization t;
+  t.tets = read_ele(prefix + ".ele", pf.first_index, pf.points.size());
+  t.points = std::move(pf.points);
+  return t;
+}
+
+void write_vtu(const std::string& path, const Tetrahedralization& t) {
+  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(path.c_str(), "w"));
+  if (!f) throw InputError(path, 0, "cannot open file for writing");
+  std::FILE* o = f.get();
+  std::fprintf(o, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
+  std::fprintf(o, " <UnstructuredGrid>\n  <Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n", t.points.size(), t.tets.size());
+  std::fprintf(o, "   <Points>\n    <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
+  for (const Point3& p : t.points) std::fprintf(o, "%.17g %.17g %.17g\n", p.x, p.y, p.z);
+  std::fprintf(o, "    </DataArray>\n   </Points>\n   <Cells>\n");
+  std::fprintf(o, "    <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+  // VTK_TETRA wants the right-handed order, like TetGen's.
+  for (const Tet& k : t.tets) std::fprintf(o, "%u %u %u %u\n", k[1], k[0], k[2], k[3]);
+  std::fprintf(o, "    </DataArray>\n    <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
+  for (std::size_t i = 1; i <= t.tets.size(); ++i) std::fprintf(o, "%zu\n", 4 * i);
+  std::fprintf(o, "    </DataArray>\n    <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+  for (std::size_t i = 0; i < t.tets.size(); ++i) std::fprintf(o, "10\n");
+  std::fprintf(o, "    </DataArray>\n   </Cells>\n  </Piece>\n </UnstructuredGrid>\n</VTKFile>\n");
+}
+
+}  // namespace dtlab

@@ -1,0 +1,23 @@
+#pragma once
+// Tetrahedra files: TetGen .ele (with its .node) and ParaView .vtu.
+//
+// Orientation: TetGen writes every tet with orient3d(a,b,c,d) < 0 in Shewchuk's
+// convention (d above the counter-clockwise triangle abc). dtlab keeps tets with
+// orient3d > 0 in memory and swaps the first two vertices on the way in and out,
+// so our .ele files read like TetGen's.
+#include <string>
+
+#include "kernel/tetrahedralization.hpp"
+
+namespace dtlab {
+
+// Writes PREFIX.node and PREFIX.ele (0-based numbering).
+void write_tetgen(const std::string& prefix, const Tetrahedralization& t);
+// Reads PREFIX.node and PREFIX.ele; tets come back in dtlab's orientation
+// (first two vertices swapped), whatever their actual sign: checking it is the
+// checker's job.
+Tetrahedralization read_tetgen(const std::string& prefix);
+std::vector<Tet> read_ele(const std::string& path, int first_index, std::size_t point_count);
+void write_vtu(const std::string& path, const Tetrahedralization& t);
+
+}  // namespace dtlab
