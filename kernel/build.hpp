@@ -1,0 +1,71 @@
+#pragma once
+// The public entry point of the kernel: the Delaunay tetrahedralization of a point
+// set by the one flip-based incremental inserter (kernel/inserter.hpp), with the
+// predicate backend chosen at run time (instantiated once per backend in build.cpp).
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "kernel/tetrahedralization.hpp"
+
+namespace dtlab {
+
+enum class Boundary { infinite, bigtet };
+enum class InsertionOrder { input, brio };
+
+struct BuildOptions {
+  Boundary boundary = Boundary::infinite;
+  double bigtet_factor = 10.0;  // bigtet size; 1 = the smallest one holding the bounding box
+  InsertionOrder order = InsertionOrder::brio;
+  std::uint64_t seed = 1;       // walk randomisation and BRIO rounds
+};
+
+// The runtime predicate choice: backend name (naive|epsilon|adaptive|exact),
+// the epsilon band (epsilon backend only) and symbolic perturbation on/off.
+struct PredicateSpec {
+  std::string backend = "adaptive";
+  double eps = 1e-12;
+  bool relative_eps = false;
+  bool perturb = true;
+};
+
+// Named failures of a build. Robust backends never produce the first three on
+// valid input; non-robust ones may, and the build stops there.
+enum class FailureKind {
+  walk_cycle,              // point location exceeded its step bound
+  flip_stuck,              // the flip loop exceeded its bound
+  inconsistent_adjacency,  // the mesh's adjacency was found broken during insertion
+  lower_dimensional,       // fewer than 4 points, or all collinear / coplanar
+  outside_boundary,        // --boundary bigtet: a point outside the enclosing tetrahedron
+};
+const char* failure_name(FailureKind k);
+
+struct BuildFailure {
+  FailureKind kind;
+  std::int64_t point = -1;  // input index of the point being inserted, -1 if none
+  std::string detail;
+};
+
+struct BuildStats {
+  std::uint64_t inserted = 0;
+  std::uint64_t flips14 = 0, flips23 = 0, flips32 = 0, flips44 = 0;
+  std::uint64_t walk_steps = 0;
+  std::uint64_t orient3d_calls = 0, insphere_calls = 0;
+  double seconds = 0;  // wall time of the insertion loop
+};
+
+struct BuildResult {
+  Tetrahedralization mesh;               // compacted finite tets over the input points
+  std::vector<std::uint32_t> duplicates; // inputs equal to an earlier point: not inserted
+  std::vector<std::uint32_t> skipped;    // inputs not inserted because the build failed first
+  std::optional<BuildFailure> failure;
+  BuildStats stats;
+  std::size_t peak_tets = 0;             // tet slots allocated (incl. infinite and free)
+};
+
+BuildResult build_delaunay(std::span<const Point3> points, const PredicateSpec& predicates,
+                           const BuildOptions& options = {});
+
+}  // namespace dtlab

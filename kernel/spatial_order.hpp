@@ -1,0 +1,24 @@
+#pragma once
+// Insertion orders: the input order, or a biased randomized insertion order (BRIO,
+// Amenta, Choi & Rote 2003) with each round sorted along a Hilbert curve, so that
+// consecutive points are close (short walks) while the rounds keep the expected
+// cost of randomized incremental construction.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "predicates/point.hpp"
+
+namespace dtlab {
+
+// 63-bit Hilbert index of a point with 21-bit integer coordinates.
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z);
+
+// Indices of points sorted along a Hilbert curve over their bounding box.
+void hilbert_sort(std::span<const Point3> points, std::span<std::uint32_t> indices);
+
+// A BRIO permutation of 0..n-1: random rounds of sizes ~n/2^k, last round largest,
+// each round Hilbert-sorted.
+std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed);
+
+}  // namespace dtlab
