@@ -3,7 +3,7 @@
 namespace dtlab::cli {
 
 void register_commands(CLI::App& app, int& rc) {
-  add_pending_command(app, rc, "tetra", "Delaunay tetrahedralization of a point file", "#4 [3/8]");
+  add_tetra_command(app, rc);
   add_pending_command(app, rc, "check", "exact invariant check of a .node/.ele pair", "#5 [4/8]");
   add_pending_command(app, rc, "oracle", "compare against CGAL and TetGen", "#5 [4/8]");
   add_pending_command(app, rc, "fuzz", "degeneracy fuzz campaigns", "#6 [5/8]");

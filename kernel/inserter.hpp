@@ -214,27 +214,79 @@ class Inserter {
     return true;
   }
 
+  // Flip 2-3, written out: N_k (k != i) is T with its vertex at position k replaced
+  // by d. Its facet k is T's old facet k, its facet i is Ta's old facet opposite
+  // T[k], and its facet l (l != i, k) is N_l's facet k.
   bool flip23(std::uint32_t t, int i, std::uint32_t ta, std::uint32_t d) {
-    const std::uint32_t* tv = mesh_.verts(t);
-    std::array<std::uint32_t, 4> nt[3];
-    int k = 0;
-    for (int j = 0; j < 4; ++j)
-      if (j != i) nt[k++] = swap_in(tv, j, d);
-    const std::uint32_t old[2] = {t, ta};
+    std::uint32_t tv[4], outer_t[4], outer_ta[4];
+    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(t, k), outer_t[k] = mesh_.adj(4 * t + k);
+    for (int k = 0; k < 4; ++k) {
+      if (k == i) continue;
+      const int m = mesh_.index_of(ta, tv[k]);
+      if (m < 0) return fail(FailureKind::inconsistent_adjacency, "flip 2-3: neighbour lacks a vertex");
+      outer_ta[k] = mesh_.adj(4 * ta + m);
+    }
+    mesh_.destroy(t);
+    mesh_.destroy(ta);
+    std::uint32_t n[4];
+    for (int k = 0; k < 4; ++k) {
+      if (k == i) continue;
+      std::uint32_t w[4] = {tv[0], tv[1], tv[2], tv[3]};
+      w[k] = d;
+      n[k] = mesh_.create(w[0], w[1], w[2], w[3]);
+    }
+    for (int k = 0; k < 4; ++k) {
+      if (k == i) continue;
+      mesh_.link(4 * n[k] + k, outer_t[k]);
+      mesh_.link(4 * n[k] + i, outer_ta[k]);
+      for (int l = k + 1; l < 4; ++l)
+        if (l != i) mesh_.link(4 * n[k] + l, 4 * n[l] + k);
+      stack_.push_back(n[k]);
+    }
+    last_ = n[(i + 1) & 3];
     ++stats_.flips23;
-    return replace(old, 2, nt, 3);
+    return true;
   }
 
-  // Removes the edge of T opposite p and the vertex at position x.
+  // Flip 3-2 on the edge yz of T opposite p and x (positions i and x): the tets T,
+  // Ta and N = (p,y,z,d) become M_y, M_z (T with y, resp. z, replaced by d). M_y's
+  // facet at y's position is T's old one, its facet i is Ta's facet opposite y,
+  // its facet x is N's facet opposite y, and its facet at z's position is M_z's
+  // facet at y's position.
   bool flip32(std::uint32_t t, int i, int x, std::uint32_t ta, std::uint32_t third, std::uint32_t d) {
-    const std::uint32_t* tv = mesh_.verts(t);
-    std::array<std::uint32_t, 4> nt[2];
-    int k = 0;
-    for (int j = 0; j < 4; ++j)
-      if (j != i && j != x) nt[k++] = swap_in(tv, j, d);
-    const std::uint32_t old[3] = {t, ta, third};
+    std::uint32_t tv[4];
+    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(t, k);
+    int yz[2], q = 0;
+    for (int k = 0; k < 4; ++k)
+      if (k != i && k != x) yz[q++] = k;
+    std::uint32_t outer_t[2], outer_ta[2], outer_n[2];
+    for (int r = 0; r < 2; ++r) {
+      const int k = yz[r];
+      const int ma = mesh_.index_of(ta, tv[k]), mn = mesh_.index_of(third, tv[k]);
+      if (ma < 0 || mn < 0) return fail(FailureKind::inconsistent_adjacency, "flip 3-2: neighbour lacks a vertex");
+      outer_t[r] = mesh_.adj(4 * t + k);
+      outer_ta[r] = mesh_.adj(4 * ta + ma);
+      outer_n[r] = mesh_.adj(4 * third + mn);
+    }
+    mesh_.destroy(t);
+    mesh_.destroy(ta);
+    mesh_.destroy(third);
+    std::uint32_t m[2];
+    for (int r = 0; r < 2; ++r) {
+      std::uint32_t w[4] = {tv[0], tv[1], tv[2], tv[3]};
+      w[yz[r]] = d;
+      m[r] = mesh_.create(w[0], w[1], w[2], w[3]);
+    }
+    for (int r = 0; r < 2; ++r) {
+      mesh_.link(4 * m[r] + yz[r], outer_t[r]);
+      mesh_.link(4 * m[r] + i, outer_ta[r]);
+      mesh_.link(4 * m[r] + x, outer_n[r]);
+      stack_.push_back(m[r]);
+    }
+    mesh_.link(4 * m[0] + yz[1], 4 * m[1] + yz[0]);
+    last_ = m[0];
     ++stats_.flips32;
-    return replace(old, 3, nt, 2);
+    return true;
   }
 
   // p, d and the edge yz of T (opposite p and x) are coplanar. If yz has exactly the

@@ -1,0 +1,51 @@
+#include "cli/build_options.hpp"
+
+namespace dtlab::cli {
+
+void KernelArgs::add_to(CLI::App& app) {
+  app.add_option("--predicates", predicates, "predicate backend")
+      ->check(CLI::IsMember({"naive", "epsilon", "adaptive", "exact"}))
+      ->capture_default_str();
+  app.add_option("--eps", eps, "tolerance of the epsilon backend")->capture_default_str();
+  app.add_option("--eps-mode", eps_mode, "epsilon band: absolute or relative to the input magnitudes")
+      ->check(CLI::IsMember({"absolute", "relative"}))
+      ->capture_default_str();
+  app.add_option("--perturb", perturb, "symbolic perturbation of insphere: none or sos")
+      ->check(CLI::IsMember({"none", "sos"}))
+      ->capture_default_str();
+  app.add_option("--boundary", boundary, "infinite, or bigtet[:FACTOR] (the thesis's enclosing tet)")
+      ->capture_default_str();
+  app.add_option("--order", order, "insertion order: input or brio (randomized, Hilbert-sorted rounds)")
+      ->check(CLI::IsMember({"input", "brio"}))
+      ->capture_default_str();
+  app.add_option("--seed", seed, "seed of the insertion order and of the walk")->capture_default_str();
+}
+
+PredicateSpec KernelArgs::predicate_spec() const {
+  return PredicateSpec{predicates, eps, eps_mode == "relative", perturb == "sos"};
+}
+
+BuildOptions KernelArgs::build_options() const {
+  BuildOptions o;
+  o.order = order == "input" ? InsertionOrder::input : InsertionOrder::brio;
+  o.seed = seed;
+  if (boundary == "infinite") {
+    o.boundary = Boundary::infinite;
+  } else if (boundary.rfind("bigtet", 0) == 0) {
+    o.boundary = Boundary::bigtet;
+    if (boundary.size() > 6) {
+      if (boundary[6] != ':') throw CLI::ValidationError("--boundary", "expected bigtet[:FACTOR]");
+      try {
+        o.bigtet_factor = std::stod(boundary.substr(7));
+      } catch (const std::exception&) {
+        throw CLI::ValidationError("--boundary", "bad FACTOR in '" + boundary + "'");
+      }
+      if (!(o.bigtet_factor > 0)) throw CLI::ValidationError("--boundary", "FACTOR must be positive");
+    }
+  } else {
+    throw CLI::ValidationError("--boundary", "expected infinite or bigtet[:FACTOR], got '" + boundary + "'");
+  }
+  return o;
+}
+
+}  // namespace dtlab::cli

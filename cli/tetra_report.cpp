@@ -1,0 +1,47 @@
+#include "cli/tetra_report.hpp"
+
+namespace dtlab::cli {
+
+nlohmann::json tetra_summary(const BuildResult& r, const KernelArgs& k) {
+  nlohmann::json j;
+  j["points"] = r.mesh.points.size();
+  j["inserted"] = r.stats.inserted;
+  j["duplicates"] = r.duplicates;
+  j["skipped"] = r.skipped.size();
+  j["tets"] = r.mesh.tets.size();
+  j["predicates"] = k.predicates;
+  j["perturb"] = k.perturb;
+  j["boundary"] = k.boundary;
+  j["order"] = k.order;
+  j["seconds"] = r.stats.seconds;
+  j["flips"] = {{"1-4", r.stats.flips14}, {"2-3", r.stats.flips23}, {"3-2", r.stats.flips32}, {"4-4", r.stats.flips44}};
+  j["walk_steps"] = r.stats.walk_steps;
+  j["orient3d_calls"] = r.stats.orient3d_calls;
+  j["insphere_calls"] = r.stats.insphere_calls;
+  if (r.failure)
+    j["failure"] = {{"kind", failure_name(r.failure->kind)}, {"point", r.failure->point}, {"detail", r.failure->detail}};
+  else
+    j["failure"] = nullptr;
+  return j;
+}
+
+void print_tetra_summary(std::FILE* out, const BuildResult& r, const std::string& input) {
+  std::fprintf(out, "%s: %zu points, %llu inserted, %zu duplicates, %zu skipped -> %zu tets in %.3f s\n",
+               input.c_str(), r.mesh.points.size(), (unsigned long long)r.stats.inserted,
+               r.duplicates.size(), r.skipped.size(), r.mesh.tets.size(), r.stats.seconds);
+  std::fprintf(out, "flips 1-4 %llu, 2-3 %llu, 3-2 %llu, 4-4 %llu; walk steps %llu; orient3d %llu, insphere %llu\n",
+               (unsigned long long)r.stats.flips14, (unsigned long long)r.stats.flips23,
+               (unsigned long long)r.stats.flips32, (unsigned long long)r.stats.flips44,
+               (unsigned long long)r.stats.walk_steps, (unsigned long long)r.stats.orient3d_calls,
+               (unsigned long long)r.stats.insphere_calls);
+  if (!r.duplicates.empty()) {
+    std::fprintf(out, "duplicates (input indices):");
+    for (std::size_t i = 0; i < r.duplicates.size() && i < 20; ++i) std::fprintf(out, " %u", r.duplicates[i]);
+    std::fprintf(out, r.duplicates.size() > 20 ? " ...\n" : "\n");
+  }
+  if (r.failure)
+    std::fprintf(out, "FAILURE %s while inserting point %lld: %s\n", failure_name(r.failure->kind),
+                 (long long)r.failure->point, r.failure->detail.c_str());
+}
+
+}  // namespace dtlab::cli
