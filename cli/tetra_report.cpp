@@ -18,6 +18,7 @@ nlohmann::json tetra_summary(const BuildResult& r, const KernelArgs& k) {
   j["walk_steps"] = r.stats.walk_steps;
   j["orient3d_calls"] = r.stats.orient3d_calls;
   j["insphere_calls"] = r.stats.insphere_calls;
+  for (const auto& [stage, count] : r.stats.stages) j["adaptive_stages"][stage] = count;
   if (r.failure)
     j["failure"] = {{"kind", failure_name(r.failure->kind)}, {"point", r.failure->point}, {"detail", r.failure->detail}};
   else
@@ -34,6 +35,11 @@ void print_tetra_summary(std::FILE* out, const BuildResult& r, const std::string
                (unsigned long long)r.stats.flips32, (unsigned long long)r.stats.flips44,
                (unsigned long long)r.stats.walk_steps, (unsigned long long)r.stats.orient3d_calls,
                (unsigned long long)r.stats.insphere_calls);
+  if (!r.stats.stages.empty()) {
+    std::fprintf(out, "adaptive stages:");
+    for (const auto& [stage, count] : r.stats.stages) std::fprintf(out, " %s %llu", stage.c_str(), (unsigned long long)count);
+    std::fprintf(out, "\n");
+  }
   if (!r.duplicates.empty()) {
     std::fprintf(out, "duplicates (input indices):");
     for (std::size_t i = 0; i < r.duplicates.size() && i < 20; ++i) std::fprintf(out, " %u", r.duplicates[i]);

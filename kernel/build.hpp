@@ -6,6 +6,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernel/tetrahedralization.hpp"
@@ -54,6 +55,8 @@ struct BuildStats {
   std::uint64_t walk_steps = 0;
   std::uint64_t orient3d_calls = 0, insphere_calls = 0;
   double seconds = 0;  // wall time of the insertion loop
+  // Which stage of the adaptive predicates decided how many calls ("insphere:A", ...).
+  std::vector<std::pair<std::string, std::uint64_t>> stages;
 };
 
 struct BuildResult {

@@ -1,0 +1,236 @@
+// `dtlab fuzz`: degeneracy fuzz campaigns (fuzz/campaign.hpp), corpus replay, and
+// the list of point-set families.
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli/command.hpp"
+#include "fuzz/campaign.hpp"
+#include "fuzz/corpus.hpp"
+#include "fuzz/families.hpp"
+#include "fuzz/summary.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+
+struct FuzzArgs {
+  std::string families = "all";
+  std::size_t cases = 100;
+  long long only_case = -1;
+  std::uint64_t seed = 1;
+  std::size_t min_points = 8, max_points = 64;
+  std::string predicates = "adaptive";
+  std::string perturb = "sos";
+  double eps = 1e-12;
+  bool relative_eps = false;
+  std::string boundary = "infinite";
+  std::string oracle = "none";
+  unsigned jobs = 1;
+  std::string out;
+  std::string shard;
+  std::string replay;
+  bool no_shrink = false;
+  std::size_t shrink_budget = 500;
+  bool list = false;
+  bool summarize_only = false;
+  bool json = false;
+  bool predicates_given = false;
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+[[noreturn]] void usage_error(const std::string& what) {
+  throw CLI::ValidationError("dtlab fuzz", what);
+}
+
+std::vector<PredicateSpec> backends_of(const FuzzArgs& a) {
+  std::vector<PredicateSpec> specs;
+  for (const auto& name : split(a.predicates)) {
+    if (name != "naive" && name != "epsilon" && name != "adaptive" && name != "exact")
+      usage_error("unknown predicates '" + name + "' (naive, epsilon, adaptive, exact)");
+    for (const auto& p : split(a.perturb)) {
+      if (p != "none" && p != "sos") usage_error("unknown perturbation '" + p + "' (none, sos)");
+      PredicateSpec spec;
+      spec.backend = name;
+      spec.perturb = p == "sos";
+      spec.eps = a.eps;
+      spec.relative_eps = a.relative_eps;
+      specs.push_back(spec);
+    }
+  }
+  if (specs.empty()) usage_error("no backend selected");
+  return specs;
+}
+
+std::vector<fuzz::OracleHook> oracles_of(const std::string& names) {
+  std::vector<fuzz::OracleHook> hooks;
+  for (const auto& name : split(names)) {
+    if (name == "none") continue;
+    if (name == "cgal" || name == "tetgen")
+      usage_error("--oracle " + name + ": the oracle comparison is not wired into fuzz yet");
+    usage_error("unknown oracle '" + name + "' (none, cgal, tetgen)");
+  }
+  return hooks;
+}
+
+// A one-line progress bar on stderr, only when stderr is a terminal.
+void progress_bar(std::size_t done, std::size_t total, std::size_t failing) {
+  constexpr int width = 30;
+  const int filled = total ? static_cast<int>(width * done / total) : width;
+  std::fprintf(stderr, "\r  fuzz [%s%s] %zu/%zu cases, %zu failing", std::string(filled, '#').c_str(),
+               std::string(width - filled, '.').c_str(), done, total, failing);
+  if (done == total) std::fprintf(stderr, "\n");
+  std::fflush(stderr);
+}
+
+int run_replay(const FuzzArgs& a) {
+  fuzz::ReplayOptions options;
+  if (a.predicates_given) options.backends = backends_of(a);
+  if (a.boundary != "infinite") {
+    BuildOptions b;
+    if (!fuzz::parse_boundary(a.boundary, b)) usage_error("bad --boundary '" + a.boundary + "'");
+    options.boundary = b;
+  }
+  const auto results = fuzz::replay_corpus(a.replay, options);
+  std::size_t failing = 0;
+  nlohmann::json lines = nlohmann::json::array();
+  for (const auto& r : results) {
+    failing += !r.run.ok();
+    if (a.json) {
+      lines.push_back({{"file", r.file}, {"backend", r.backend}, {"boundary", r.boundary},
+                       {"outcome", r.run.outcome}, {"recorded", r.recorded_outcome},
+                       {"ok", r.run.ok()}, {"detail", r.run.detail}});
+    } else {
+      std::printf("%-8s %-14s %-24s %s%s\n", r.run.ok() ? "ok" : "FAIL", r.backend.c_str(),
+                  r.run.outcome.c_str(), r.file.c_str(),
+                  r.recorded_outcome.empty() ? "" : (" (recorded: " + r.recorded_outcome + ")").c_str());
+    }
+  }
+  if (a.json) {
+    std::cout << nlohmann::json{{"replayed", results.size()}, {"failing", failing}, {"results", lines}}.dump(2)
+              << "\n";
+  } else {
+    std::printf("%zu replayed, %zu failing\n", results.size(), failing);
+  }
+  return failing ? kDefect : kOk;
+}
+
+void print_summary(const std::vector<fuzz::CaseRecord>& records, bool json, std::size_t ran,
+                   std::size_t resumed) {
+  const fuzz::Summary s = fuzz::summarize(records);
+  if (json) {
+    auto j = fuzz::summary_json(s);
+    j["ran"] = ran;
+    j["resumed"] = resumed;
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << fuzz::summary_table(s);
+    std::size_t failing = 0;
+    for (const auto& r : records) failing += !r.run.ok();
+    std::printf("%zu results (%zu cases run now, %zu resumed), %zu failing\n", records.size(), ran,
+                resumed, failing);
+  }
+}
+
+int run_fuzz(const FuzzArgs& a) {
+  if (a.list) {
+    for (const auto& f : fuzz::families()) std::printf("%-16s %s\n", f.name.c_str(), f.description.c_str());
+    return kOk;
+  }
+  if (!a.replay.empty()) return run_replay(a);
+  if (a.out.empty()) usage_error("--out DIR is required (or --replay, --list)");
+  if (a.summarize_only) {
+    const auto records = fuzz::read_records(a.out);
+    print_summary(records, a.json, 0, records.size());
+    for (const auto& r : records)
+      if (!r.run.ok()) return kDefect;
+    return kOk;
+  }
+
+  fuzz::CampaignOptions o;
+  if (a.families == "all") {
+    for (const auto& f : fuzz::families()) o.families.push_back(f.name);
+  } else {
+    o.families = split(a.families);
+    for (const auto& name : o.families)
+      if (!fuzz::find_family(name)) usage_error("unknown family '" + name + "' (see dtlab fuzz --list)");
+  }
+  o.cases = a.cases;
+  if (a.only_case >= 0) {
+    o.only_case = static_cast<std::size_t>(a.only_case);
+    o.cases = std::max(o.cases, *o.only_case + 1);
+  }
+  if (a.max_points < 1) usage_error("--points must be at least 1");
+  o.max_points = a.max_points;
+  o.min_points = std::min(a.min_points, a.max_points);
+  o.seed = a.seed;
+  o.backends = backends_of(a);
+  if (!fuzz::parse_boundary(a.boundary, o.build)) usage_error("bad --boundary '" + a.boundary + "'");
+  o.oracles = oracles_of(a.oracle);
+  o.jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+  o.out_dir = a.out;
+  if (!a.shard.empty()) {
+    unsigned k = 0, n = 0;
+    char tail = 0;
+    if (std::sscanf(a.shard.c_str(), "%u/%u%c", &k, &n, &tail) != 2 || n == 0 || k >= n)
+      usage_error("bad --shard '" + a.shard + "' (K/N with 0 <= K < N)");
+    o.shard = k;
+    o.shards = n;
+  }
+  o.shrink = !a.no_shrink;
+  o.shrink_budget = a.shrink_budget;
+  if (isatty(fileno(stderr))) o.progress = progress_bar;
+
+  const fuzz::CampaignResult result = fuzz::run_campaign(o);
+  print_summary(result.records, a.json, result.ran, result.resumed);
+  return result.failing() ? kDefect : kOk;
+}
+
+}  // namespace
+
+void add_fuzz_command(CLI::App& app, int& rc) {
+  auto args = std::make_shared<FuzzArgs>();
+  CLI::App* sub = app.add_subcommand("fuzz", "degeneracy fuzz campaigns: generate, build, check, shrink");
+  sub->add_option("--family", args->families, "all, or a comma-separated list (see --list)");
+  sub->add_option("--cases", args->cases, "cases per family")->capture_default_str();
+  sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)");
+  sub->add_option("--seed", args->seed, "campaign seed")->capture_default_str();
+  sub->add_option("--points", args->max_points, "largest number of points per case")->capture_default_str();
+  sub->add_option("--min-points", args->min_points, "smallest number of points per case")->capture_default_str();
+  auto* pred = sub->add_option("--predicates", args->predicates, "comma list of naive, epsilon, adaptive, exact")
+                   ->capture_default_str();
+  sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();
+  sub->add_option("--eps", args->eps, "epsilon backend: the band")->capture_default_str();
+  sub->add_flag("--relative-eps", args->relative_eps, "epsilon backend: relative band");
+  sub->add_option("--boundary", args->boundary, "infinite or bigtet[:FACTOR]")->capture_default_str();
+  sub->add_option("--oracle", args->oracle, "none, or a comma list of cgal, tetgen")->capture_default_str();
+  sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->capture_default_str();
+  sub->add_option("--out", args->out, "campaign folder: results*.jsonl and corpus/");
+  sub->add_option("--shard", args->shard, "K/N: run only the cases with ordinal % N == K");
+  sub->add_option("--replay", args->replay, "re-run a corpus: a .node file, a corpus or campaign folder");
+  sub->add_flag("--no-shrink", args->no_shrink, "do not shrink failing cases");
+  sub->add_option("--shrink-budget", args->shrink_budget, "builds per shrunk case")->capture_default_str();
+  sub->add_flag("--list", args->list, "list the point-set families and what each targets");
+  sub->add_flag("--summarize", args->summarize_only, "print the summary of --out DIR without running");
+  sub->add_flag("--json", args->json, "print a JSON summary on stdout");
+  sub->callback([args, pred, &rc] {
+    args->predicates_given = pred->count() > 0;
+    rc = run_fuzz(*args);
+  });
+}
+
+}  // namespace dtlab::cli
