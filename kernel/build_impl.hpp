@@ -26,25 +26,6 @@ bool collinear(const B& pred, const Point3& a, const Point3& b, const Point3& c)
          proj([](const Point3& p) { return Point3{p.z, p.x, 0}; }) == 0;
 }
 
-// A point strictly inside the positive tet (a,b,c,d), or false.
-template <PredicateBackend B>
-bool inner_point(const B& pred, const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-                 Point3& o) {
-  const Point3 candidates[2] = {
-      {a.x / 4 + b.x / 4 + c.x / 4 + d.x / 4, a.y / 4 + b.y / 4 + c.y / 4 + d.y / 4,
-       a.z / 4 + b.z / 4 + c.z / 4 + d.z / 4},
-      {(a.x + b.x + c.x + d.x) / 4, (a.y + b.y + c.y + d.y) / 4, (a.z + b.z + c.z + d.z) / 4}};
-  for (const Point3& q : candidates) {
-    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) continue;
-    if (pred.orient3d(q, b, c, d) > 0 && pred.orient3d(a, q, c, d) > 0 &&
-        pred.orient3d(a, b, q, d) > 0 && pred.orient3d(a, b, c, q) > 0) {
-      o = q;
-      return true;
-    }
-  }
-  return false;
-}
-
 inline void compact(const TetMesh& m, std::uint32_t n, Tetrahedralization& out) {
   out.tets.clear();
   for (std::uint32_t t = 0; t < m.size(); ++t) {
@@ -98,19 +79,11 @@ BuildResult build_with(std::span<const Point3> input, const B& pred, const Build
       return lower_dimensional("all points are collinear");
     first[2] = order[k++];
     const Point3 c = input[first[2]];
-    Point3 o{};
-    bool found = false;
-    for (; k < order.size() && !found; ++k) {
-      const Point3& d = input[order[k]];
-      const int s = pred.orient3d(a, b, c, d);
-      if (s == 0) continue;
-      first[3] = order[k];
-      if (s < 0) std::swap(first[0], first[1]);
-      found = detail::inner_point(pred, input[first[0]], input[first[1]], input[first[2]], d, o);
-      if (!found && s < 0) std::swap(first[0], first[1]);
-    }
-    if (!found) return lower_dimensional("all points are coplanar");
-    pts.push_back(o);
+    if (!next([&](const Point3& q) { return pred.orient3d(a, b, c, q) != 0; }))
+      return lower_dimensional("all points are coplanar");
+    first[3] = order[k];
+    if (pred.orient3d(a, b, c, input[first[3]]) < 0) std::swap(first[0], first[1]);
+    pts.push_back(a);  // the infinite vertex's slot: its coordinates are never read
     inf = n;
   } else {
     // The thesis's big enclosing tetrahedron: a regular tet around the bounding box.

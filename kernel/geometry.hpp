@@ -2,36 +2,36 @@
 // Every geometric decision of the inserter, expressed through the predicate backend.
 //
 // The infinite vertex. Tets outside the convex hull share one "infinite" vertex
-// (index inf_), as in CGAL. For orientation questions the infinite vertex gets the
-// coordinates of a point O strictly inside the first tetrahedron (TetGen's trick):
-// seen from O, the hull boundary is a sphere, and an infinite tet (x,y,z,inf) is
-// the cone from O over the hull facet xyz, beyond it. Because O lies inside, a
-// valid hull facet xyz has O on its inner side:
+// (index inf_), as in CGAL. Orientation questions about them are answered as seen
+// from a point O strictly inside the first tetrahedron (a,b,c,d) (TetGen puts a
+// dummy point there): seen from O the hull boundary is a sphere, and an infinite
+// tet (x,y,z,inf) is the cone from O over its hull facet xyz, beyond it. A valid
+// hull facet has O on its inner side:
 //
 //        inf side (outside)        orient3d(x,y,z,q) > 0 for q outside,
 //     x -------------- z           orient3d(x,y,z,O) < 0,
 //            O                     so an infinite tet is "positive" iff
 //                                  orient3d(x,y,z,O) < 0: orientation() negates it.
 //
-// A facet through O can never be a hull facet, yet orient3d(x,y,z,O) may vanish for
-// a candidate facet by coincidence (lattice inputs). O is therefore perturbed
-// symbolically: O' = O + e*(1, e', e'^2), e >> e' > 0 infinitesimal. Shewchuk's
-// orient3d(x,y,z,q) = -n.(q - x) with n = (y-x) x (z-x), so the tie is broken by
-// -sign(n_x), then -sign(n_y), then -sign(n_z); each n_k is a 2D orientation of
-// the projected points, computed exactly by the backend through orient3d on
-// points with one coordinate zeroed (exact copies of the input doubles). Only
-// collinear x,y,z give 0: a real degeneracy, handled by the flips.
+// O is symbolic: O = a + e1 (b-a) + e2 (c-a) + e3 (d-a) with 1 >> e1 >> e2 >> e3 > 0,
+// whose barycentric coordinates are all positive, so O is strictly inside the first
+// tet for every input (a double point may not exist there: four points one ulp apart
+// span a tet with no double inside). orient3d(x,y,z,.) is affine, so
+// orient3d(x,y,z,O) has the sign of the first non-zero of orient3d(x,y,z,a),
+// orient3d(x,y,z,b), orient3d(x,y,z,c), orient3d(x,y,z,d): exact with any robust
+// backend, and zero only when x,y,z are collinear (a,b,c,d are not coplanar): a real
+// degeneracy, handled by the flips.
 //
-// Conflict (the Delaunay test) never uses O's position except to orient a plane:
-// a finite tet conflicts with p iff p is inside its circumsphere (insphere > 0; the
-// Perturbed<> wrapper makes this never 0); an infinite tet (x,y,z,inf) conflicts
-// iff p is strictly outside the hull facet xyz, or on its plane and inside its
-// circumcircle. The circle test is insphere(x,y,z,O,p): the sphere through x,y,z
-// and any point off their plane cuts the plane in the circumcircle. Cocircular
+// Conflict (the Delaunay test) never uses O: a finite tet conflicts with p iff p is
+// inside its circumsphere (insphere > 0; the Perturbed<> wrapper makes this never
+// 0); an infinite tet (x,y,z,inf) conflicts iff p is strictly outside the hull facet
+// xyz, or on its plane and inside its circumcircle. The circle test is
+// insphere(x,y,z,w,p) for any point w off the plane (the first of a,b,c,d that is):
+// the sphere through x,y,z,w cuts the plane in the circumcircle of xyz. Cocircular
 // ties follow Devillers & Teillaud's perturbation (the rule CGAL uses for its
 // coplanar_side_of_bounded_circle): the lexicographically largest of x,y,z,p
-// decides; if it is p, p is outside; otherwise replace it by p and ask whether
-// the triangle keeps its orientation in the plane (inside) or flips (outside).
+// decides; if it is p, p is outside; otherwise replace it by p and ask whether the
+// triangle keeps its orientation in the plane (inside) or flips (outside).
 #include <cstdint>
 #include <vector>
 
@@ -47,6 +47,11 @@ class Geometry {
  public:
   Geometry(const std::vector<Point3>& points, const B& pred, std::uint32_t inf)
       : p_(points), pred_(pred), inf_(inf) {}
+
+  // The first tet, positively oriented: it defines the symbolic inner point O.
+  void set_first_tet(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    first_[0] = a, first_[1] = b, first_[2] = c, first_[3] = d;
+  }
 
   std::uint32_t infinite() const { return inf_; }
   const Point3& point(std::uint32_t v) const { return p_[v]; }
@@ -70,14 +75,11 @@ class Geometry {
     return orient3d(a, b, c, d);
   }
 
-  // orient3d(x, y, z, O') with the symbolically perturbed O'.
+  // orient3d(x, y, z, O) for the symbolic inner point O.
   int orient_from_inside(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
-    const int s = orient3d(x, y, z, inf_);
-    if (s != 0) return s;
-    const Point3 &a = p_[x], &b = p_[y], &c = p_[z];
-    if (int nx = orient2d(a.y, a.z, b.y, b.z, c.y, c.z)) return -nx;
-    if (int ny = orient2d(a.z, a.x, b.z, b.x, c.z, c.x)) return -ny;
-    return -orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
+    for (std::uint32_t w : first_)
+      if (const int s = orient3d(x, y, z, w)) return s;
+    return 0;
   }
 
   // Does p conflict with the tet (a,b,c,d) (which does not contain p)?
@@ -100,17 +102,15 @@ class Geometry {
   }
 
  private:
-  int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
-    // orient3d((a,0),(b,0),(c,0),(0,0,1)) = -orient2d(a,b,c): see the header comment.
-    ++orient_calls;
-    return -pred_.orient3d({ax, ay, 0}, {bx, by, 0}, {cx, cy, 0}, {0, 0, 1});
-  }
-
   // p on the plane of the hull facet (x,y,z), whose O side is negative.
   bool in_hull_circle(std::uint32_t x, std::uint32_t y, std::uint32_t z, std::uint32_t p) {
     ++insphere_calls;
-    // orient3d(x,y,z,O) < 0, so "p inside the sphere through x,y,z,O" is insphere < 0.
-    const int in = -pred_.insphere(p_[x], p_[y], p_[z], p_[inf_], p_[p]);
+    int in = 0;
+    for (std::uint32_t w : first_)
+      if (const int side = orient3d(x, y, z, w)) {
+        in = side * pred_.insphere(p_[x], p_[y], p_[z], p_[w], p_[p]);
+        break;
+      }
     if (in != 0) return in > 0;
     if constexpr (!PerturbingBackend<B>) {
       return false;
@@ -127,7 +127,7 @@ class Geometry {
         std::uint32_t t[3] = {x, y, z};
         t[best] = p;
         // Same orientation seen from O as (x,y,z), which is negative: inside.
-        const int o = orient3d(t[0], t[1], t[2], inf_);
+        const int o = orient_from_inside(t[0], t[1], t[2]);
         if (o != 0) return o < 0;
         q[best] = TetMesh_none;
       }
@@ -140,6 +140,7 @@ class Geometry {
   const std::vector<Point3>& p_;
   B pred_;
   std::uint32_t inf_;
+  std::uint32_t first_[4] = {0, 0, 0, 0};
 };
 
 }  // namespace dtlab

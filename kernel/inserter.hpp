@@ -58,6 +58,7 @@ class Inserter {
   void start(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     const std::uint32_t t0 = mesh_.create(a, b, c, d);
     last_ = t0;
+    geo_.set_first_tet(a, b, c, d);
     if (geo_.infinite() == kNoVertex) return;
     std::uint32_t tets[5] = {t0};
     for (int f = 0; f < 4; ++f) {
