@@ -1,0 +1,204 @@
+#include "fuzz/campaign.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+
+#include "fuzz/case_seed.hpp"
+#include "fuzz/corpus.hpp"
+#include "fuzz/families.hpp"
+#include "fuzz/record_json.hpp"
+#include "fuzz/shrink.hpp"
+
+namespace dtlab::fuzz {
+
+namespace fs = std::filesystem;
+
+std::size_t CampaignResult::failing() const {
+  std::size_t n = 0;
+  for (const auto& r : records) n += !r.run.ok();
+  return n;
+}
+
+std::string boundary_label(const BuildOptions& options) {
+  if (options.boundary == Boundary::infinite) return "infinite";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "bigtet:%g", options.bigtet_factor);
+  return buf;
+}
+
+std::string case_id(const std::string& family, std::uint64_t seed, std::size_t index) {
+  return family + "-s" + std::to_string(seed) + "-" + std::to_string(index);
+}
+
+std::size_t case_points(std::uint64_t case_seed, std::size_t min_points, std::size_t max_points) {
+  if (max_points <= min_points) return max_points;
+  return min_points + mix64(case_seed ^ 0x706f696e7473ULL) % (max_points - min_points + 1);
+}
+
+std::vector<CaseRecord> read_records(const std::string& out_dir) {
+  std::vector<CaseRecord> records;
+  if (!fs::is_directory(out_dir)) return records;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(out_dir)) {
+    const std::string name = e.path().filename().string();
+    if (e.is_regular_file() && name.rfind("results", 0) == 0 && e.path().extension() == ".jsonl")
+      files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    std::ifstream in(f);
+    std::string line;
+    while (std::getline(in, line)) {
+      try {
+        records.push_back(record_from_json(nlohmann::json::parse(line)));
+      } catch (const nlohmann::json::exception&) {
+        // a truncated last line of an interrupted run: that case runs again
+      }
+    }
+  }
+  return records;
+}
+
+namespace {
+
+struct WorkItem {
+  const Family* family;
+  std::size_t index;
+};
+
+std::string resume_key(const std::string& id, const std::string& backend, const std::string& boundary) {
+  return id + "|" + backend + "|" + boundary;
+}
+
+std::string original_command(const CampaignOptions& o, const CaseRecord& r) {
+  return "dtlab fuzz --family " + r.family + " --seed " + std::to_string(o.seed) + " --case " +
+         std::to_string(r.index) + " --min-points " + std::to_string(o.min_points) + " --points " +
+         std::to_string(o.max_points) + " --predicates " + r.predicates + " --perturb " +
+         (r.perturb ? "sos" : "none") + " --boundary " + r.boundary + " --out " + o.out_dir +
+         "/repro-" + r.id;
+}
+
+}  // namespace
+
+CampaignResult run_campaign(const CampaignOptions& o) {
+  if (o.shards == 0 || o.shard >= o.shards) throw std::invalid_argument("bad shard");
+  fs::create_directories(o.out_dir);
+  CampaignResult result;
+  result.records = read_records(o.out_dir);
+  std::set<std::string> done;
+  for (const auto& r : result.records) done.insert(resume_key(r.id, r.backend, r.boundary));
+
+  const std::string boundary = boundary_label(o.build);
+  std::vector<WorkItem> work;
+  std::size_t ordinal = 0;
+  for (const auto& name : o.families) {
+    const Family* f = find_family(name);
+    if (!f) throw std::invalid_argument("unknown family '" + name + "'");
+    for (std::size_t i = 0; i < o.cases; ++i, ++ordinal) {
+      if (ordinal % o.shards != o.shard) continue;
+      if (o.only_case && *o.only_case != i) continue;
+      const std::string id = case_id(f->name, o.seed, i);
+      bool all_done = true;
+      for (const auto& spec : o.backends)
+        all_done = all_done && done.count(resume_key(id, backend_label(spec), boundary));
+      if (all_done) {
+        ++result.resumed;
+        continue;
+      }
+      work.push_back({f, i});
+    }
+  }
+
+  std::string results_name = "results.jsonl";
+  if (o.shards > 1)
+    results_name = "results.shard-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) + ".jsonl";
+  std::ofstream out(fs::path(o.out_dir) / results_name, std::ios::app);
+  if (!out) throw std::runtime_error("cannot write " + (fs::path(o.out_dir) / results_name).string());
+
+  std::mutex lock;
+  std::atomic<std::size_t> next{0};
+  std::size_t finished = 0, failing = 0;
+
+  std::exception_ptr error;
+  const auto run_one = [&](std::size_t w) {
+    const WorkItem item = work[w];
+    CaseRecord base;
+    base.family = item.family->name;
+    base.index = item.index;
+    base.id = case_id(base.family, o.seed, item.index);
+    base.campaign_seed = o.seed;
+    base.case_seed = case_seed(o.seed, base.family, item.index);
+    const std::size_t n = case_points(base.case_seed, o.min_points, o.max_points);
+    const std::vector<Point3> points = item.family->generate(n, base.case_seed);
+    base.points = points.size();
+    base.boundary = boundary;
+    BuildOptions build = o.build;
+    build.seed = base.case_seed;
+
+    std::vector<CaseRecord> local;
+    for (const auto& spec : o.backends) {
+      CaseRecord r = base;
+      r.backend = backend_label(spec);
+      r.predicates = spec.backend;
+      r.perturb = spec.perturb;
+      if (done.count(resume_key(r.id, r.backend, boundary))) continue;
+      r.run = run_case(points, spec, build, o.oracles);
+      if (!r.run.ok() && o.shrink) {
+        const std::string target = r.run.outcome;
+        const auto fails = [&](const std::vector<Point3>& candidate) {
+          return run_case(candidate, spec, build, o.oracles).outcome == target;
+        };
+        const ShrinkResult s = shrink_points(points, fails, o.shrink_budget);
+        r.shrunk_points = s.points.size();
+        CorpusEntryInfo info{original_command(o, r), s.tests, s.minimal};
+        std::lock_guard<std::mutex> g(lock);
+        r.corpus_file = write_corpus_entry(o.out_dir, r, s.points, info);
+      }
+      local.push_back(std::move(r));
+    }
+
+    std::lock_guard<std::mutex> g(lock);
+    for (auto& r : local) {
+      out << record_to_json(r).dump() << "\n";
+      failing += !r.run.ok();
+      result.records.push_back(std::move(r));
+    }
+    out.flush();
+    ++finished;
+    ++result.ran;
+    if (o.progress) o.progress(finished, work.size(), failing);
+  };
+  // A worker stops the campaign at the first exception (a folder that cannot be
+  // written); the exception is rethrown on the calling thread.
+  const auto worker = [&] {
+    for (;;) {
+      const std::size_t w = next.fetch_add(1);
+      if (w >= work.size()) return;
+      try {
+        run_one(w);
+      } catch (...) {
+        std::lock_guard<std::mutex> g(lock);
+        if (!error) error = std::current_exception();
+        next = work.size();
+        return;
+      }
+    }
+  };
+
+  const unsigned jobs = std::max(1u, std::min<unsigned>(o.jobs, static_cast<unsigned>(work.size())));
+  std::vector<std::thread> threads;
+  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
+  return result;
+}
+
+}  // namespace dtlab::fuzz

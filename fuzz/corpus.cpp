@@ -1,0 +1,133 @@
+#include "fuzz/corpus.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "kernel/input_error.hpp"
+#include "kernel/point_io.hpp"
+
+namespace dtlab::fuzz {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string file_stem(const CaseRecord& r) {
+  std::string name = r.id + "-" + r.backend;
+  if (r.boundary != "infinite") name += "-" + r.boundary;
+  std::replace(name.begin(), name.end(), ':', '_');
+  return name;
+}
+
+}  // namespace
+
+bool parse_boundary(const std::string& text, BuildOptions& options) {
+  if (text == "infinite") {
+    options.boundary = Boundary::infinite;
+    return true;
+  }
+  if (text.rfind("bigtet", 0) != 0) return false;
+  options.boundary = Boundary::bigtet;
+  if (text == "bigtet") return true;
+  if (text[6] != ':') return false;
+  try {
+    std::size_t used = 0;
+    const double f = std::stod(text.substr(7), &used);
+    if (used != text.size() - 7 || !(f > 0)) return false;
+    options.bigtet_factor = f;
+  } catch (const std::exception&) {
+    return false;
+  }
+  return true;
+}
+
+std::string write_corpus_entry(const std::string& out_dir, const CaseRecord& record,
+                               const std::vector<Point3>& points, const CorpusEntryInfo& info) {
+  const fs::path dir = fs::path(out_dir) / "corpus";
+  fs::create_directories(dir);
+  const std::string stem = file_stem(record);
+  write_node((dir / (stem + ".node")).string(), points);
+  const std::string relative = "corpus/" + stem + ".node";
+  nlohmann::json j = {
+      {"id", record.id},
+      {"family", record.family},
+      {"case", record.index},
+      {"campaign_seed", record.campaign_seed},
+      {"case_seed", record.case_seed},
+      {"points_original", record.points},
+      {"points", points.size()},
+      {"predicates", record.predicates},
+      {"perturb", record.perturb ? "sos" : "none"},
+      {"boundary", record.boundary},
+      {"outcome", record.run.outcome},
+      {"detail", record.run.detail},
+      {"shrink_tests", info.shrink_tests},
+      {"minimal", info.minimal},
+      {"reproduce", "dtlab fuzz --replay " + (fs::path(out_dir) / relative).string()},
+      {"reproduce_original", info.original_command},
+  };
+  std::ofstream((dir / (stem + ".json")).string()) << j.dump(2) << "\n";
+  return relative;
+}
+
+std::vector<ReplayResult> replay_corpus(const std::string& path, const ReplayOptions& options) {
+  std::vector<fs::path> files;
+  const fs::path p(path);
+  if (fs::is_regular_file(p)) {
+    files.push_back(p);
+  } else if (fs::is_directory(p)) {
+    const fs::path dir = fs::is_directory(p / "corpus") ? p / "corpus" : p;
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.is_regular_file() && e.path().extension() == ".node") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+  } else {
+    throw InputError(path, 0, "no such file or folder");
+  }
+
+  std::vector<ReplayResult> results;
+  for (const auto& file : files) {
+    const std::vector<Point3> points = read_points(file.string()).points;
+    PredicateSpec recorded_spec;
+    BuildOptions build;
+    std::string recorded_outcome, recorded_boundary = "infinite";
+    fs::path sidecar = file;
+    sidecar.replace_extension(".json");
+    if (fs::is_regular_file(sidecar)) {
+      try {
+        std::ifstream in(sidecar);
+        const auto j = nlohmann::json::parse(in);
+        recorded_spec.backend = j.value("predicates", recorded_spec.backend);
+        recorded_spec.perturb = j.value("perturb", std::string("sos")) == "sos";
+        recorded_boundary = j.value("boundary", recorded_boundary);
+        recorded_outcome = j.value("outcome", std::string{});
+        build.seed = j.value("case_seed", build.seed);
+      } catch (const nlohmann::json::exception& e) {
+        throw InputError(sidecar.string(), 0, e.what());
+      }
+    }
+    if (!parse_boundary(recorded_boundary, build))
+      throw InputError(sidecar.string(), 0, "bad boundary '" + recorded_boundary + "'");
+    if (options.boundary) {
+      const std::uint64_t seed = build.seed;
+      build = *options.boundary;
+      build.seed = seed;
+    }
+    const std::vector<PredicateSpec> specs =
+        options.backends.empty() ? std::vector<PredicateSpec>{recorded_spec} : options.backends;
+    for (const auto& spec : specs) {
+      ReplayResult r;
+      r.file = file.string();
+      r.recorded_outcome = recorded_outcome;
+      r.backend = backend_label(spec);
+      r.boundary = boundary_label(build);
+      r.run = run_case(points, spec, build);
+      results.push_back(std::move(r));
+    }
+  }
+  return results;
+}
+
+}  // namespace dtlab::fuzz

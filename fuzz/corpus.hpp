@@ -1,0 +1,43 @@
+#pragma once
+// The corpus of shrunk failing inputs: <dir>/corpus/<name>.node with a sidecar
+// <name>.json holding the backend, boundary, case seed, outcome and the commands
+// that reproduce it. Replaying a corpus re-runs every entry.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fuzz/campaign.hpp"
+
+namespace dtlab::fuzz {
+
+struct CorpusEntryInfo {
+  std::string original_command;  // regenerates the unshrunk case
+  std::size_t shrink_tests = 0;
+  bool minimal = false;
+};
+
+// Writes <out_dir>/corpus/<name>.node and .json; returns "corpus/<name>.node".
+std::string write_corpus_entry(const std::string& out_dir, const CaseRecord& record,
+                               const std::vector<Point3>& points, const CorpusEntryInfo& info);
+
+struct ReplayResult {
+  std::string file;
+  std::string recorded_outcome;  // from the sidecar, "" without one
+  std::string backend;
+  std::string boundary;
+  CaseRun run;
+};
+
+struct ReplayOptions {
+  std::vector<PredicateSpec> backends;      // empty: each entry's recorded backend
+  std::optional<BuildOptions> boundary;     // nullopt: each entry's recorded boundary
+};
+
+// `path`: a .node file, a corpus folder, or a campaign folder (its corpus/ is used).
+// Files are replayed in name order. Throws InputError for unreadable input.
+std::vector<ReplayResult> replay_corpus(const std::string& path, const ReplayOptions& options);
+
+// "infinite", "bigtet" or "bigtet:FACTOR" into `options`; false when malformed.
+bool parse_boundary(const std::string& text, BuildOptions& options);
+
+}  // namespace dtlab::fuzz

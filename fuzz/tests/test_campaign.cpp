@@ -1,0 +1,190 @@
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <set>
+#include <unistd.h>
+
+#include "fuzz/campaign.hpp"
+#include "fuzz/corpus.hpp"
+#include "fuzz/families.hpp"
+#include "fuzz/summary.hpp"
+
+using namespace dtlab;
+using namespace dtlab::fuzz;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh folder under the temp dir, removed at scope exit.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    static int counter = 0;
+    path = fs::temp_directory_path() /
+           ("dtlab_fuzz_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
+    fs::remove_all(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+PredicateSpec spec(const std::string& backend, bool perturb) {
+  PredicateSpec s;
+  s.backend = backend;
+  s.perturb = perturb;
+  return s;
+}
+
+std::vector<std::string> all_families() {
+  std::vector<std::string> names;
+  for (const auto& f : families()) names.push_back(f.name);
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("is_lower_dimensional decides flatness exactly", "[fuzz][campaign]") {
+  CHECK(is_lower_dimensional(std::vector<Point3>{}));
+  CHECK(is_lower_dimensional(std::vector<Point3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+  CHECK(is_lower_dimensional(find_family("coplanar_all")->generate(50, 3)));
+  CHECK_FALSE(is_lower_dimensional(find_family("coplanar_slabs")->generate(50, 3)));
+  CHECK_FALSE(is_lower_dimensional(find_family("cospherical")->generate(50, 3)));
+  // Collinear, with repeats, then one point off the line: still flat.
+  std::vector<Point3> line = {{0, 0, 0}, {0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}, {0, 1, 0}};
+  CHECK(is_lower_dimensional(line));
+  line.push_back({0, 0, 1});
+  CHECK_FALSE(is_lower_dimensional(line));
+  // Off the plane by one ulp.
+  std::vector<Point3> flat = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  CHECK(is_lower_dimensional(flat));
+  flat[3].z = 0x1p-1074;
+  CHECK_FALSE(is_lower_dimensional(flat));
+}
+
+TEST_CASE("boundary labels parse and print", "[fuzz][campaign]") {
+  BuildOptions b;
+  CHECK(parse_boundary("infinite", b));
+  CHECK(boundary_label(b) == "infinite");
+  CHECK(parse_boundary("bigtet:2.5", b));
+  CHECK(boundary_label(b) == "bigtet:2.5");
+  CHECK(parse_boundary("bigtet", b));
+  CHECK_FALSE(parse_boundary("bigtet:", b));
+  CHECK_FALSE(parse_boundary("bigtet:x", b));
+  CHECK_FALSE(parse_boundary("ghost", b));
+}
+
+TEST_CASE("a tiny campaign with robust backends finds no defect on any family",
+          "[fuzz][campaign]") {
+  TempDir dir;
+  CampaignOptions o;
+  o.families = all_families();
+  o.cases = 3;
+  o.min_points = 5;
+  o.max_points = 24;
+  o.seed = 11;
+  o.backends = {spec("adaptive", true), spec("exact", true), spec("exact", false)};
+  o.jobs = 2;
+  o.out_dir = dir.path.string();
+  const CampaignResult r = run_campaign(o);
+  CHECK(r.ran == o.families.size() * o.cases);
+  REQUIRE(r.records.size() == r.ran * o.backends.size());
+  for (const auto& rec : r.records) {
+    INFO(rec.id << " " << rec.backend << ": " << rec.run.outcome << " " << rec.run.detail);
+    CHECK(rec.run.ok());
+  }
+  CHECK(r.failing() == 0);
+  CHECK_FALSE(fs::exists(dir.path / "corpus"));
+}
+
+TEST_CASE("campaigns are deterministic, resumable and shardable", "[fuzz][campaign]") {
+  TempDir a, b;
+  CampaignOptions o;
+  o.families = {"uniform", "lattice", "cospherical"};
+  o.cases = 4;
+  o.max_points = 20;
+  o.backends = {spec("exact", true)};
+  o.out_dir = a.path.string();
+  o.jobs = 2;
+  const CampaignResult first = run_campaign(o);
+  REQUIRE(first.ran == 12);
+
+  // Resumed: nothing left to do.
+  const CampaignResult again = run_campaign(o);
+  CHECK(again.ran == 0);
+  CHECK(again.resumed == 12);
+  CHECK(again.records.size() == 12);
+
+  // Two shards into another folder give the same cases with the same outcomes.
+  o.out_dir = b.path.string();
+  o.shards = 2;
+  o.jobs = 1;
+  o.shard = 0;
+  const CampaignResult s0 = run_campaign(o);
+  o.shard = 1;
+  const CampaignResult s1 = run_campaign(o);
+  CHECK(s0.ran + s1.ran == 12);
+  CHECK(s0.ran == 6);
+  const auto key = [](const CaseRecord& r) {
+    return r.id + "|" + std::to_string(r.case_seed) + "|" + std::to_string(r.points) + "|" +
+           r.run.outcome + "|" + std::to_string(r.run.tets);
+  };
+  std::set<std::string> ka, kb;
+  for (const auto& r : read_records(a.path.string())) ka.insert(key(r));
+  for (const auto& r : read_records(b.path.string())) kb.insert(key(r));
+  CHECK(ka.size() == 12);
+  CHECK(ka == kb);
+}
+
+TEST_CASE("naive predicates fail on near-degenerate inputs, and failures shrink to a replayable corpus",
+          "[fuzz][campaign]") {
+  TempDir dir;
+  CampaignOptions o;
+  o.families = {"near_degenerate", "kettner_grid", "extreme_scale", "subnormal"};
+  o.cases = 6;
+  o.min_points = 16;
+  o.max_points = 48;
+  o.seed = 3;
+  o.backends = {spec("naive", false)};
+  o.jobs = 2;
+  o.shrink_budget = 300;
+  o.out_dir = dir.path.string();
+  const CampaignResult r = run_campaign(o);
+  REQUIRE(r.failing() > 0);
+  std::size_t shrunk = 0;
+  for (const auto& rec : r.records) {
+    if (rec.run.ok()) continue;
+    REQUIRE(rec.shrunk_points > 0);
+    CHECK(rec.shrunk_points <= rec.points);
+    shrunk += rec.shrunk_points < rec.points;
+    CHECK(fs::exists(dir.path / rec.corpus_file));
+  }
+  CHECK(shrunk > 0);
+  // Replaying the corpus reproduces each recorded outcome.
+  const auto replayed = replay_corpus(dir.path.string(), {});
+  REQUIRE(replayed.size() == r.failing());
+  for (const auto& p : replayed) {
+    INFO(p.file);
+    CHECK(p.run.outcome == p.recorded_outcome);
+  }
+  // The summary lists every family that ran.
+  const std::string table = summary_table(summarize(r.records));
+  for (const auto& f : o.families) CHECK(table.find(f) != std::string::npos);
+  // Each shrunk failure of naive is handled by the robust backends.
+  ReplayOptions robust;
+  robust.backends = {spec("adaptive", true), spec("exact", true)};
+  for (const auto& p : replay_corpus(dir.path.string(), robust)) {
+    INFO(p.file << " " << p.backend << ": " << p.run.outcome << " " << p.run.detail);
+    CHECK(p.run.ok());
+  }
+}
+
+TEST_CASE("the committed corpus replays cleanly with robust backends", "[fuzz][campaign]") {
+  const fs::path corpus = fs::path(DTLAB_SOURCE_DIR) / "fuzz" / "corpus";
+  REQUIRE(fs::is_directory(corpus));
+  ReplayOptions robust;
+  robust.backends = {spec("adaptive", true), spec("exact", true), spec("exact", false)};
+  const auto results = replay_corpus(corpus.string(), robust);
+  CHECK(!results.empty());
+  for (const auto& p : results) {
+    INFO(p.file << " " << p.backend << ": " << p.run.outcome << " " << p.run.detail);
+    CHECK(p.run.ok());
+  }
+}
