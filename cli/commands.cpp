@@ -6,12 +6,12 @@ void register_commands(CLI::App& app, int& rc) {
   add_tetra_command(app, rc);
   add_pending_command(app, rc, "check", "exact invariant check of a .node/.ele pair", "#5 [4/8]");
   add_pending_command(app, rc, "oracle", "compare against CGAL and TetGen", "#5 [4/8]");
-  add_pending_command(app, rc, "fuzz", "degeneracy fuzz campaigns", "#6 [5/8]");
+  add_fuzz_command(app, rc);
   add_pending_command(app, rc, "experiment", "reproducible experiments with reports", "#7 [6/8]");
   add_pending_command(app, rc, "sample", "sample points on and inside a triangle mesh", "#8 [7/8]");
   add_pending_command(app, rc, "voronoi", "Voronoi cells clipped to a box", "#9 [8/8]");
   add_pending_command(app, rc, "fracture", "Voronoi fracture of a closed mesh", "#9 [8/8]");
-  add_pending_command(app, rc, "bench", "benchmarks against CGAL and TetGen", "#4 [3/8]");
+  add_bench_command(app, rc);
   add_pending_command(app, rc, "demo", "the whole pipeline on the built-in input", "#2 [1/8]");
 }
 

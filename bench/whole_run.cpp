@@ -1,0 +1,126 @@
+#include "bench/whole_run.hpp"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+#include "oracle/cgal_oracle.hpp"
+#include "oracle/tetgen_oracle.hpp"
+
+namespace dtlab {
+
+namespace {
+
+struct ChildReport {
+  int ok;
+  double seconds;
+  double peak_mb_self;
+  double peak_mb_children;
+  std::uint64_t tets;
+  double bytes_per_tet;
+  char note[200];
+};
+
+ChildReport run_in_child(const std::string& tool, std::span<const Point3> points,
+                         const PredicateSpec& spec, const BuildOptions& options) {
+  ChildReport rep{};
+  if (tool == "dtlab") {
+    const auto t0 = std::chrono::steady_clock::now();
+    BuildResult r = build_delaunay(points, spec, options);
+    rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    rep.ok = !r.failure;
+    rep.tets = r.mesh.tets.size();
+    rep.bytes_per_tet = r.mesh.tets.empty() ? 0 : 32.0 * double(r.peak_tets) / double(r.mesh.tets.size());
+    if (r.failure) std::snprintf(rep.note, sizeof rep.note, "%s", failure_name(r.failure->kind));
+  } else if (tool == "cgal") {
+    OracleRun r = cgal_delaunay(points);
+    rep.ok = r.mesh.has_value();
+    rep.seconds = r.seconds;
+    rep.tets = r.mesh ? r.mesh->tets.size() : 0;
+  } else if (tool == "tetgen") {
+    OracleRun r = tetgen_delaunay(points);
+    rep.ok = r.mesh.has_value();
+    rep.seconds = r.seconds;
+    rep.tets = r.mesh ? r.mesh->tets.size() : 0;
+    std::snprintf(rep.note, sizeof rep.note, "%s", r.note.c_str());
+  } else {
+    std::snprintf(rep.note, sizeof rep.note, "unknown tool");
+  }
+  rusage self{}, kids{};
+  getrusage(RUSAGE_SELF, &self);
+  getrusage(RUSAGE_CHILDREN, &kids);
+  rep.peak_mb_self = double(self.ru_maxrss) / 1024.0;
+  rep.peak_mb_children = double(kids.ru_maxrss) / 1024.0;
+  return rep;
+}
+
+}  // namespace
+
+RunMeasure measure_run(const std::string& tool, std::span<const Point3> points,
+                       const PredicateSpec& spec, const BuildOptions& options) {
+  RunMeasure m;
+  m.tool = tool;
+  int fd[2];
+  if (pipe(fd) != 0) {
+    m.note = "pipe failed";
+    return m;
+  }
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fd[0]);
+    ChildReport rep = run_in_child(tool, points, spec, options);
+    const ssize_t w = write(fd[1], &rep, sizeof rep);
+    _exit(w == sizeof rep ? 0 : 1);
+  }
+  close(fd[1]);
+  ChildReport rep{};
+  const ssize_t got = read(fd[0], &rep, sizeof rep);
+  close(fd[0]);
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  if (got != sizeof rep) {
+    m.note = "child died (signal " + std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : 0) + ")";
+    return m;
+  }
+  m.ok = rep.ok;
+  m.seconds = rep.seconds;
+  m.tets = rep.tets;
+  m.bytes_per_tet = rep.bytes_per_tet;
+  m.note = rep.note;
+  // TetGen's memory is its own process's, not the parent's that waited for it.
+  m.peak_mb = tool == "tetgen" ? rep.peak_mb_children : double(usage.ru_maxrss) / 1024.0;
+  return m;
+}
+
+namespace {
+std::vector<double> ok_values(const std::vector<RunMeasure>& runs, double RunMeasure::*field) {
+  std::vector<double> v;
+  for (const auto& r : runs)
+    if (r.ok) v.push_back(r.*field);
+  std::sort(v.begin(), v.end());
+  return v;
+}
+double median(const std::vector<double>& v) {
+  if (v.empty()) return 0;
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+}  // namespace
+
+double BenchRow::median_seconds() const { return median(ok_values(runs, &RunMeasure::seconds)); }
+double BenchRow::min_seconds() const {
+  auto v = ok_values(runs, &RunMeasure::seconds);
+  return v.empty() ? 0 : v.front();
+}
+double BenchRow::max_seconds() const {
+  auto v = ok_values(runs, &RunMeasure::seconds);
+  return v.empty() ? 0 : v.back();
+}
+double BenchRow::median_peak_mb() const { return median(ok_values(runs, &RunMeasure::peak_mb)); }
+
+}  // namespace dtlab

@@ -1,0 +1,88 @@
+// dtlab bench: whole runs of dtlab, CGAL and TetGen on the same points.
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/whole_run.hpp"
+#include "cli/build_options.hpp"
+#include "cli/command.hpp"
+#include "cli/point_source.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+
+struct BenchArgs {
+  std::vector<double> sizes = {1e4, 1e5, 1e6};
+  std::vector<std::string> dists = {"uniform"};
+  std::vector<std::string> tools = {"dtlab", "cgal", "tetgen"};
+  int runs = 3;
+  std::uint64_t seed = 1;
+  bool json = false;
+  std::string out;
+  KernelArgs kernel;
+};
+
+int run_bench(const BenchArgs& a) {
+  const PredicateSpec spec = a.kernel.predicate_spec();
+  const BuildOptions options = a.kernel.build_options();
+  nlohmann::json all = nlohmann::json::array();
+  if (!a.json) {
+    std::printf("| points | distribution | tool | median s | min s | max s | Mpoints/s | peak MB | tets | bytes/tet |\n");
+    std::printf("| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+  }
+  for (const std::string& dist : a.dists) {
+    for (double size : a.sizes) {
+      const auto n = static_cast<std::size_t>(size);
+      std::vector<Point3> points = generate_points(dist, n, a.seed);
+      for (const std::string& tool : a.tools) {
+        BenchRow row{dist, n, tool, {}};
+        for (int r = 0; r < a.runs; ++r) row.runs.push_back(measure_run(tool, points, spec, options));
+        const bool any = row.median_seconds() > 0;
+        const RunMeasure& last = row.runs.back();
+        nlohmann::json j = {{"distribution", dist}, {"n", n}, {"tool", tool},
+                            {"median_s", row.median_seconds()}, {"min_s", row.min_seconds()},
+                            {"max_s", row.max_seconds()}, {"peak_mb", row.median_peak_mb()},
+                            {"tets", last.tets}, {"bytes_per_tet", last.bytes_per_tet},
+                            {"runs", a.runs}, {"note", last.note}};
+        all.push_back(j);
+        if (a.json) continue;
+        if (!any) {
+          std::printf("| %zu | %s | %s | no answer (%s) | | | | | | |\n", n, dist.c_str(), tool.c_str(), last.note.c_str());
+        } else {
+          std::printf("| %zu | %s | %s | %.3f | %.3f | %.3f | %.2f | %.0f | %llu | %s |\n", n, dist.c_str(),
+                      tool.c_str(), row.median_seconds(), row.min_seconds(), row.max_seconds(),
+                      double(n) / row.median_seconds() / 1e6, row.median_peak_mb(),
+                      (unsigned long long)last.tets,
+                      tool == "dtlab" ? std::to_string(int(last.bytes_per_tet + 0.5)).c_str() : "");
+        }
+        std::fflush(stdout);
+      }
+    }
+  }
+  if (a.json) std::printf("%s\n", all.dump(2).c_str());
+  if (!a.out.empty()) std::ofstream(a.out) << all.dump(2) << "\n";
+  return kOk;
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, int& rc) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* sub = app.add_subcommand("bench", "whole runs of dtlab, CGAL and TetGen on the same points (time, memory)");
+  sub->add_option("--sizes", args->sizes, "point counts")->delimiter(',')->capture_default_str();
+  sub->add_option("--dist", args->dists, "point distributions: uniform, clustered, lattice, ... (dtlab fuzz --list), mesh")
+      ->delimiter(',')->capture_default_str();
+  sub->add_option("--tools", args->tools, "dtlab, cgal, tetgen")->delimiter(',')->check(CLI::IsMember({"dtlab", "cgal", "tetgen"}))->capture_default_str();
+  sub->add_option("--runs", args->runs, "runs per tool and size (median reported)")->check(CLI::PositiveNumber)->capture_default_str();
+  sub->add_option("--points-seed", args->seed, "seed of the generated points")->capture_default_str();
+  sub->add_option("--out", args->out, "also write the rows as JSON to this file");
+  sub->add_flag("--json", args->json, "print the rows as JSON instead of a table");
+  args->kernel.add_to(*sub);
+  sub->callback([args, &rc] { rc = run_bench(*args); });
+}
+
+}  // namespace dtlab::cli
