@@ -84,9 +84,7 @@ class Inserter {
         duplicate_of_ = v[i];
         return Outcome::duplicate;
       }
-    const std::uint32_t a = v[0], b = v[1], c = v[2], d = v[3];
-    const std::array<std::uint32_t, 4> split[4] = {{p, b, c, d}, {a, p, c, d}, {a, b, p, d}, {a, b, c, p}};
-    if (!replace(&t, 1, split, 4)) return Outcome::failed;
+    flip14(t, p);
     ++stats_.flips14;
     if (!restore_delaunay(p)) return Outcome::failed;
     ++stats_.inserted;
@@ -99,7 +97,10 @@ class Inserter {
   FailureKind failure() const { return failure_; }
   const std::string& failure_detail() const { return detail_; }
   std::uint32_t duplicate_of() const { return duplicate_of_; }
-  void reserve(std::size_t points) { mesh_.reserve(7 * points + 64); }
+  void reserve(std::size_t points) {
+    mesh_.reserve(7 * points + 64);
+    stack_.reserve(1024);
+  }
 
  private:
   std::uint32_t next_random() {
@@ -184,7 +185,7 @@ class Inserter {
       const std::uint32_t* tv = mesh_.verts(t);
 
       int neg = 0, zero = 0, which = -1;
-      for (int j = 0; j < 4; ++j) {
+      for (int j = 0; j < 4 && neg + zero < 2; ++j) {
         if (j == i) continue;
         const auto w = swap_in(tv, j, d);
         const int s = orientation(w.data());
@@ -213,6 +214,25 @@ class Inserter {
       }
     }
     return true;
+  }
+
+  // Flip 1-4, written out: N_k is T with vertex k replaced by p. Its facet k is T's
+  // old facet k; its facet l (l != k) is N_l's facet k.
+  void flip14(std::uint32_t t, std::uint32_t p) {
+    std::uint32_t tv[4], outer[4], n[4];
+    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(t, k), outer[k] = mesh_.adj(4 * t + k);
+    mesh_.destroy(t);
+    for (int k = 0; k < 4; ++k) {
+      std::uint32_t w[4] = {tv[0], tv[1], tv[2], tv[3]};
+      w[k] = p;
+      n[k] = mesh_.create(w[0], w[1], w[2], w[3]);
+    }
+    for (int k = 0; k < 4; ++k) {
+      mesh_.link(4 * n[k] + k, outer[k]);
+      for (int l = k + 1; l < 4; ++l) mesh_.link(4 * n[k] + l, 4 * n[l] + k);
+      stack_.push_back(n[k]);
+    }
+    last_ = n[0];
   }
 
   // Flip 2-3, written out: N_k (k != i) is T with its vertex at position k replaced
