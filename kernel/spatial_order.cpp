@@ -9,10 +9,9 @@ namespace dtlab {
 
 // Skilling's transform ("Programming the Hilbert curve", 2004): undo the excess
 // work of the axes-to-transpose recursion, Gray-encode, then interleave the bits.
-std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
-  constexpr int kBits = 21;
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits) {
   std::uint32_t X[3] = {x, y, z};
-  const std::uint32_t top = 1u << (kBits - 1);
+  const std::uint32_t top = 1u << (bits - 1);
   for (std::uint32_t q = top; q > 1; q >>= 1) {
     const std::uint32_t low = q - 1;
     for (int i = 0; i < 3; ++i) {
@@ -32,7 +31,7 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
     if (X[2] & q) t ^= q - 1;
   for (auto& c : X) c ^= t;
   std::uint64_t key = 0;
-  for (int b = kBits - 1; b >= 0; --b)
+  for (int b = bits - 1; b >= 0; --b)
     for (int i = 0; i < 3; ++i) key = (key << 1) | ((X[i] >> b) & 1u);
   return key;
 }
@@ -45,20 +44,23 @@ void hilbert_sort(std::span<const Point3> points, std::span<std::uint32_t> indic
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
-  // Scale per axis into [0, 2^21); extreme ranges only need to be ordered, not exact.
-  auto axis = [](double v, double l, double h) -> std::uint32_t {
+  // Scale per axis into [0, 2^16): 2^48 cells resolve any input we can hold in memory
+  // well enough for locality. Extreme ranges only need to be ordered, not exact.
+  constexpr int kBits = 16;
+  constexpr double kMax = (1 << kBits) - 1;
+  auto axis = [kMax](double v, double l, double h) -> std::uint32_t {
     const double range = h - l;
     if (!(range > 0) || !std::isfinite(range)) {
       const double r2 = h / 2 - l / 2;
       if (!(r2 > 0)) return 0;
-      return static_cast<std::uint32_t>(std::min(2097151.0, (v / 2 - l / 2) / r2 * 2097151.0));
+      return static_cast<std::uint32_t>(std::min(kMax, (v / 2 - l / 2) / r2 * kMax));
     }
-    return static_cast<std::uint32_t>(std::min(2097151.0, (v - l) / range * 2097151.0));
+    return static_cast<std::uint32_t>(std::min(kMax, (v - l) / range * kMax));
   };
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(indices.size());
   for (std::size_t k = 0; k < indices.size(); ++k) {
     const Point3& p = points[indices[k]];
-    keyed[k] = {hilbert_index(axis(p.x, lo.x, hi.x), axis(p.y, lo.y, hi.y), axis(p.z, lo.z, hi.z)),
+    keyed[k] = {hilbert_index(axis(p.x, lo.x, hi.x), axis(p.y, lo.y, hi.y), axis(p.z, lo.z, hi.z), kBits),
                 indices[k]};
   }
   std::sort(keyed.begin(), keyed.end());

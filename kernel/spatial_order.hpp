@@ -11,8 +11,8 @@
 
 namespace dtlab {
 
-// 63-bit Hilbert index of a point with 21-bit integer coordinates.
-std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z);
+// Hilbert index (3*bits bits) of a point with `bits`-bit integer coordinates, bits <= 21.
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits);
 
 // Indices of points sorted along a Hilbert curve over their bounding box.
 void hilbert_sort(std::span<const Point3> points, std::span<std::uint32_t> indices);

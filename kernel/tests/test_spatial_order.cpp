@@ -9,12 +9,24 @@
 using namespace dtlab;
 
 TEST_CASE("hilbert index is a bijection on a small grid with unit steps") {
+  for (int bits : {3, 5}) {
+    std::set<std::uint64_t> keys;
+    std::uint64_t last = 0;
+    for (std::uint32_t x = 0; x < (1u << bits); ++x)
+      for (std::uint32_t y = 0; y < (1u << bits); ++y)
+        for (std::uint32_t z = 0; z < (1u << bits); ++z) {
+          last = hilbert_index(x, y, z, bits);
+          keys.insert(last);
+          CHECK(last < (std::uint64_t(1) << (3 * bits)));
+        }
+    CHECK(keys.size() == (std::size_t(1) << (3 * bits)));
+  }
   // On an 8^3 grid scaled to the top bits, consecutive keys are face neighbours.
   std::vector<std::pair<std::uint64_t, std::array<int, 3>>> cells;
   for (int x = 0; x < 8; ++x)
     for (int y = 0; y < 8; ++y)
       for (int z = 0; z < 8; ++z)
-        cells.push_back({hilbert_index(std::uint32_t(x) << 18, std::uint32_t(y) << 18, std::uint32_t(z) << 18), {x, y, z}});
+        cells.push_back({hilbert_index(std::uint32_t(x) << 18, std::uint32_t(y) << 18, std::uint32_t(z) << 18, 21), {x, y, z}});
   std::sort(cells.begin(), cells.end());
   std::set<std::uint64_t> keys;
   for (auto& c : cells) keys.insert(c.first);
