@@ -11,6 +11,10 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "oracle/cgal_oracle.hpp"
+#include "oracle/check.hpp"
+#include "oracle/compare.hpp"
+#include "oracle/tetgen_oracle.hpp"
 #include "fuzz/campaign.hpp"
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
@@ -80,9 +84,24 @@ std::vector<fuzz::OracleHook> oracles_of(const std::string& names) {
   std::vector<fuzz::OracleHook> hooks;
   for (const auto& name : split(names)) {
     if (name == "none") continue;
-    if (name == "cgal" || name == "tetgen")
-      usage_error("--oracle " + name + ": the oracle comparison is not wired into fuzz yet");
-    usage_error("unknown oracle '" + name + "' (none, cgal, tetgen)");
+    if (name != "cgal" && name != "tetgen") usage_error("unknown oracle '" + name + "' (none, cgal, tetgen)");
+    // The oracle's answer counts only when it is itself valid: its crash, timeout or
+    // defect is "no answer", never ours. Ours is compared canonically (Delaunay
+    // complex; tet sets in general position).
+    hooks.push_back({name, [name](std::span<const Point3> points, const BuildResult& ours) -> std::string {
+      if (ours.failure) return "";
+      OracleRun run = name == "cgal" ? cgal_delaunay(points) : tetgen_delaunay(points);
+      if (!run.mesh) return "";
+      CheckOptions theirs_opt;
+      theirs_opt.duplicates = run.duplicates;
+      const CheckReport theirs = check_tetrahedralization(*run.mesh, theirs_opt);
+      if (!theirs.ok()) return "";
+      CheckOptions ours_opt;
+      ours_opt.duplicates = ours.duplicates;
+      const CheckReport mine = check_tetrahedralization(ours.mesh, ours_opt);
+      if (!mine.ok()) return "";
+      return compare_canonical(ours.mesh, mine, *run.mesh, theirs).agree() ? "" : "differs-from-" + name;
+    }});
   }
   return hooks;
 }

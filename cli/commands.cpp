@@ -4,8 +4,8 @@ namespace dtlab::cli {
 
 void register_commands(CLI::App& app, int& rc) {
   add_tetra_command(app, rc);
-  add_pending_command(app, rc, "check", "exact invariant check of a .node/.ele pair", "#5 [4/8]");
-  add_pending_command(app, rc, "oracle", "compare against CGAL and TetGen", "#5 [4/8]");
+  add_check_command(app, rc);
+  add_oracle_command(app, rc);
   add_fuzz_command(app, rc);
   add_pending_command(app, rc, "experiment", "reproducible experiments with reports", "#7 [6/8]");
   add_pending_command(app, rc, "sample", "sample points on and inside a triangle mesh", "#8 [7/8]");

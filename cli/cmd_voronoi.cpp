@@ -1,0 +1,92 @@
+// dtlab voronoi INPUT: Voronoi cells of a point file, clipped to a box.
+#include <cstdio>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/command.hpp"
+#include "kernel/point_io.hpp"
+#include "voronoi/cell_check.hpp"
+#include "voronoi/voronoi_io.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+struct VoronoiArgs {
+  std::string input, out, predicates = "adaptive";
+  std::vector<double> box;
+  double margin = 0.1;
+  bool obj = true, vtu = false, json = false, check = false;
+};
+
+int run_voronoi(const VoronoiArgs& a) {
+  PointFile in = read_points(a.input);
+  if (in.points.empty()) {
+    std::fprintf(stderr, "dtlab voronoi: %s: no points\n", a.input.c_str());
+    return kBadInput;
+  }
+  VoronoiOptions o;
+  o.margin = a.margin;
+  o.predicates.backend = a.predicates;
+  if (!a.box.empty()) {
+    if (a.box.size() != 6 || !(a.box[0] < a.box[3] && a.box[1] < a.box[4] && a.box[2] < a.box[5])) {
+      std::fprintf(stderr, "dtlab voronoi: --box needs xmin ymin zmin xmax ymax zmax with min < max\n");
+      return kBadInput;
+    }
+    o.box = vor::Box{{a.box[0], a.box[1], a.box[2]}, {a.box[3], a.box[4], a.box[5]}};
+  }
+  const VoronoiDiagram vd = compute_voronoi(in.points, o);
+  nlohmann::json m = cells_manifest(vd);
+  m["input"] = a.input;
+  std::size_t defects = 0;
+  if (a.check) {
+    const double tol = 1e-9 * vd.box.diagonal();
+    nlohmann::json bad = nlohmann::json::array();
+    for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+      if (vd.cells[i].duplicate_of >= 0) continue;
+      const std::string why = check_cell(vd.cells[i], tol);
+      if (!why.empty()) bad.push_back({{"cell", i}, {"defect", why}}), ++defects;
+    }
+    const double rel = std::abs(m["cell_volume_sum"].get<double>() - vd.box.volume()) / vd.box.volume();
+    if (rel > 1e-12) ++defects;
+    m["check"] = {{"defects", bad}, {"relative_volume_error", rel}};
+  }
+  if (!a.out.empty()) {
+    if (a.obj) write_cells_obj(a.out + ".obj", vd);
+    if (a.vtu) write_cells_vtu(a.out + ".vtu", vd);
+    std::FILE* f = std::fopen((a.out + ".json").c_str(), "w");
+    if (!f) throw std::runtime_error("cannot write " + a.out + ".json");
+    std::fprintf(f, "%s\n", m.dump(1).c_str());
+    std::fclose(f);
+  }
+  if (a.json) {
+    std::printf("%s\n", m.dump(2).c_str());
+  } else {
+    std::printf("%s: %zu cells, box volume %.17g, cell volume sum %.17g\n", a.input.c_str(), vd.cells.size(),
+                vd.box.volume(), m["cell_volume_sum"].get<double>());
+    if (a.check) std::printf("check: %zu defect(s)\n", defects);
+    if (!a.out.empty())
+      std::printf("wrote %s.json%s%s\n", a.out.c_str(), a.obj ? ", .obj" : "", a.vtu ? ", .vtu" : "");
+  }
+  return defects ? kDefect : kOk;
+}
+}  // namespace
+
+void add_voronoi_command(CLI::App& app, int& rc) {
+  auto args = std::make_shared<VoronoiArgs>();
+  CLI::App* sub = app.add_subcommand("voronoi", "Voronoi cells of a point file, clipped to a box");
+  sub->add_option("INPUT", args->input, "points: TetGen .node or .xyz")->required();
+  sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)");
+  sub->add_option("--box", args->box, "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
+      ->expected(6);
+  sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->capture_default_str();
+  sub->add_option("--predicates", args->predicates, "Delaunay predicates: naive|epsilon|adaptive|exact")
+      ->capture_default_str();
+  sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
+  sub->add_flag("!--no-obj", args->obj, "do not write PREFIX.obj");
+  sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
+  sub->add_flag("--json", args->json, "print the manifest on stdout");
+  sub->callback([args, &rc] { rc = run_voronoi(*args); });
+}
+
+}  // namespace dtlab::cli

@@ -1,0 +1,96 @@
+#include "oracle/check.hpp"
+
+#include <gmpxx.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "oracle/check_impl.hpp"
+#include "oracle/filtered_exact.hpp"
+
+namespace dtlab {
+
+const char* defect_name(DefectKind k) {
+  switch (k) {
+    case DefectKind::broken_adjacency: return "broken-adjacency";
+    case DefectKind::inverted: return "inverted";
+    case DefectKind::flat: return "flat";
+    case DefectKind::non_delaunay: return "non-delaunay";
+    case DefectKind::hull_not_convex: return "hull-not-convex";
+    case DefectKind::overlap: return "overlap";
+    case DefectKind::gap: return "gap";
+    case DefectKind::missing_point: return "missing-point";
+    case DefectKind::duplicate_vertex: return "duplicate-vertex";
+    case DefectKind::euler: return "euler";
+  }
+  return "?";
+}
+
+namespace check_detail {
+
+std::vector<std::uint32_t> tet_vertices(const Tet& k) { return {k[0], k[1], k[2], k[3]}; }
+
+void check_points(const Tetrahedralization& t, const std::vector<char>& used,
+                  std::span<const std::uint32_t> reported, Collector& out, CheckStats& stats) {
+  const auto& P = t.points;
+  std::vector<char> is_reported(P.size(), 0);
+  for (auto r : reported)
+    if (r < P.size()) is_reported[r] = 1;
+  std::vector<std::uint32_t> order(P.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return lex_less(P[a], P[b]) || (P[a] == P[b] && a < b);
+  });
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i + 1;
+    while (j < order.size() && P[order[j]] == P[order[i]]) ++j;
+    std::vector<std::uint32_t> vertices;
+    for (std::size_t k = i; k < j; ++k)
+      if (used[order[k]]) vertices.push_back(order[k]);
+    if (vertices.size() >= 2)
+      out.add(DefectKind::duplicate_vertex, {}, vertices, 0, "vertices with identical coordinates");
+    if (vertices.empty()) {
+      for (std::size_t k = i; k < j; ++k)
+        out.add(DefectKind::missing_point, {}, {order[k]}, 0,
+                is_reported[order[k]] ? "reported as a duplicate, but no vertex has its coordinates"
+                                      : "input point is not a vertex");
+    } else {
+      stats.duplicates += (j - i) - vertices.size();
+    }
+    i = j;
+  }
+}
+
+std::optional<std::array<std::uint32_t, 4>> spanning_points(std::span<const Point3> pts) {
+  const std::size_t n = pts.size();
+  if (n < 4) return std::nullopt;
+  std::size_t b = 1;
+  while (b < n && pts[b] == pts[0]) ++b;
+  if (b == n) return std::nullopt;
+  const mpq_class ux = mpq_class(pts[b].x) - pts[0].x, uy = mpq_class(pts[b].y) - pts[0].y,
+                  uz = mpq_class(pts[b].z) - pts[0].z;
+  std::size_t c = 0;
+  for (std::size_t i = 1; i < n && c == 0; ++i) {
+    const mpq_class vx = mpq_class(pts[i].x) - pts[0].x, vy = mpq_class(pts[i].y) - pts[0].y,
+                    vz = mpq_class(pts[i].z) - pts[0].z;
+    if (uy * vz != uz * vy || uz * vx != ux * vz || ux * vy != uy * vx) c = i;
+  }
+  if (c == 0) return std::nullopt;
+  const FilteredExact pred;
+  for (std::size_t d = 1; d < n; ++d)
+    if (pred.orient3d(pts[0], pts[b], pts[c], pts[d]) != 0)
+      return std::array<std::uint32_t, 4>{0, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(c),
+                                          static_cast<std::uint32_t>(d)};
+  return std::nullopt;
+}
+
+}  // namespace check_detail
+
+CheckReport check_tetrahedralization(const Tetrahedralization& t, const CheckOptions& options) {
+  for (const Point3& p : t.points)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw std::invalid_argument("check: input has a non-finite coordinate");
+  return check_tetrahedralization_with(t, options, FilteredExact{});
+}
+
+}  // namespace dtlab

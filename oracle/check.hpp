@@ -1,0 +1,84 @@
+#pragma once
+// The exact invariant checker: proves (or refutes, with a witness) that a compact
+// tetrahedralization is the Delaunay tetrahedralization of its input points.
+// See oracle/README.md for the argument behind each check.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kernel/tetrahedralization.hpp"
+
+namespace dtlab {
+
+enum class DefectKind {
+  broken_adjacency,  // bad tet, facet in > 2 tets, boundary not a closed 2-manifold
+  inverted,          // orient3d < 0
+  flat,              // orient3d == 0
+  non_delaunay,      // an interior facet's opposite vertex strictly inside the circumsphere
+  hull_not_convex,   // a reflex boundary edge, or a point outside a boundary facet's plane
+  overlap,           // tets on the same side of a shared facet, or the hull covered twice
+  gap,               // a hole: more than one boundary component, or no tets for a 3D input
+  missing_point,     // an input point (not an exact duplicate of a vertex) that is no vertex
+  duplicate_vertex,  // two vertices with identical coordinates
+  euler,             // Euler characteristics inconsistent with a ball
+};
+inline constexpr int kDefectKinds = 10;
+const char* defect_name(DefectKind k);
+
+struct Defect {
+  DefectKind kind;
+  std::vector<std::uint32_t> tets;      // tet ids (index into Tetrahedralization::tets)
+  std::vector<std::uint32_t> vertices;  // point ids (input indices)
+  int sign = 0;                         // exact sign of the deciding predicate, if any
+  std::string detail;                   // which predicate / what was expected
+};
+
+struct CheckOptions {
+  // Input indices the producer reported as duplicates of an earlier point. They
+  // need not be vertices; each is verified to have the coordinates of a vertex.
+  std::span<const std::uint32_t> duplicates = {};
+  bool delaunay = true;              // run the insphere test on every interior facet
+  std::size_t witnesses_per_kind = 16;  // defects listed per kind (all are counted)
+};
+
+struct CheckStats {
+  std::uint64_t points = 0, vertices = 0, tets = 0;
+  std::uint64_t interior_facets = 0, boundary_facets = 0, edges = 0;
+  std::uint64_t boundary_vertices = 0, boundary_edges = 0, boundary_components = 0;
+  std::int64_t euler = 0;           // V - E + F - T (1 for a ball)
+  std::int64_t boundary_euler = 0;  // V - E + F of the boundary (2 for a sphere)
+  std::uint64_t duplicates = 0;     // input points equal to a vertex but not one
+  std::uint64_t cospherical_facets = 0;  // interior facets with insphere == 0
+  bool degree_checked = false;      // the hull was proven covered exactly once
+  bool volume_checked = false;
+  bool volume_equal = false;        // exact sum of tet volumes == exact hull volume
+  double volume_tets = 0, volume_hull = 0;  // the exact values, rounded
+  double seconds = 0;
+};
+
+struct CheckReport {
+  std::vector<Defect> defects;                     // witnesses, at most witnesses_per_kind each
+  std::array<std::uint64_t, kDefectKinds> counts{};  // all defects, per kind
+  CheckStats stats;
+  // Interior facets whose five points are cospherical (exact insphere == 0), as the
+  // pair of tets sharing them: the input of the canonical comparison.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> cospherical_pairs;
+  bool ok() const {
+    for (auto c : counts)
+      if (c) return false;
+    return true;
+  }
+  std::uint64_t defect_count() const {
+    std::uint64_t n = 0;
+    for (auto c : counts) n += c;
+    return n;
+  }
+};
+
+// Exact: every sign comes from FilteredExact (oracle/filtered_exact.hpp).
+CheckReport check_tetrahedralization(const Tetrahedralization& t, const CheckOptions& options = {});
+
+}  // namespace dtlab

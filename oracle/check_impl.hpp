@@ -1,0 +1,264 @@
+#pragma once
+// The checker, templated on the predicate backend (the library instantiates it
+// with FilteredExact; tests may instantiate it with others). Stages, in order:
+//   1. indices: four distinct vertices per tet, all in range;
+//   2. orientation of every tet (inverted / flat);
+//   3. facet table: no facet in three tets, the two tets of a facet on opposite sides;
+//   4. insphere on every interior facet (non-delaunay), cospherical facets recorded;
+//   5. boundary: closed 2-manifold, one component, every edge convex, Euler numbers;
+//   6. global: one tet's vertices on the inner side of every boundary facet, and the
+//      boundary wraps once around a point of that tet (oracle/hull_degree.hpp);
+//   7. points: each input point a vertex or an exact duplicate of one;
+//   8. exact volumes: sum over tets == volume enclosed by the boundary.
+// Stage 6 and 8 rely on stages 2-5 being clean and are skipped otherwise.
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "oracle/boundary.hpp"
+#include "oracle/check.hpp"
+#include "oracle/exact_volume.hpp"
+#include "oracle/facet_table.hpp"
+#include "oracle/hull_degree.hpp"
+#include "predicates/backend.hpp"
+
+namespace dtlab {
+
+namespace check_detail {
+
+class Collector {
+ public:
+  Collector(CheckReport& r, std::size_t per_kind) : r_(r), per_kind_(per_kind) {}
+  void add(DefectKind k, std::vector<std::uint32_t> tets, std::vector<std::uint32_t> vertices,
+           int sign, std::string detail) {
+    const auto i = static_cast<std::size_t>(k);
+    if (r_.counts[i]++ < per_kind_)
+      r_.defects.push_back({k, std::move(tets), std::move(vertices), sign, std::move(detail)});
+  }
+  std::uint64_t count(DefectKind k) const { return r_.counts[static_cast<std::size_t>(k)]; }
+
+ private:
+  CheckReport& r_;
+  std::size_t per_kind_;
+};
+
+std::vector<std::uint32_t> tet_vertices(const Tet& k);
+// Stage 7 (no predicates): missing points and duplicate vertices.
+void check_points(const Tetrahedralization& t, const std::vector<char>& used,
+                  std::span<const std::uint32_t> reported, Collector& out, CheckStats& stats);
+// A tetrahedralization with no tets is right only for an input that spans no 3D
+// volume; otherwise returns four affinely independent input points.
+std::optional<std::array<std::uint32_t, 4>> spanning_points(std::span<const Point3> pts);
+
+}  // namespace check_detail
+
+template <PredicateBackend B>
+CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const CheckOptions& opt,
+                                          const B& pred) {
+  using namespace check_detail;
+  const auto start = std::chrono::steady_clock::now();
+  CheckReport report;
+  CheckStats& st = report.stats;
+  Collector out(report, opt.witnesses_per_kind);
+  const auto& P = t.points;
+  const auto& T = t.tets;
+  const std::size_t n = P.size();
+  st.points = n;
+  st.tets = T.size();
+  auto finish = [&] {
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+  };
+
+  // 1. indices
+  std::vector<char> used(n, 0);
+  if (T.size() >= (1u << 30)) throw std::length_error("check: more than 2^30 tets");
+  bool indices_ok = true;
+  for (std::size_t i = 0; i < T.size(); ++i) {
+    const Tet& k = T[i];
+    bool ok = true;
+    for (int a = 0; a < 4; ++a) {
+      if (k[a] >= n) ok = false;
+      for (int b = a + 1; b < 4; ++b)
+        if (k[a] == k[b]) ok = false;
+    }
+    if (!ok) {
+      indices_ok = false;
+      out.add(DefectKind::broken_adjacency, {static_cast<std::uint32_t>(i)}, tet_vertices(k), 0,
+              "tet has a repeated or out-of-range vertex");
+      continue;
+    }
+    for (auto v : k) used[v] = 1;
+  }
+  if (!indices_ok) return finish();
+  st.vertices = static_cast<std::uint64_t>(std::count(used.begin(), used.end(), 1));
+
+  if (T.empty()) {
+    // Right only for an input that spans no volume (fewer than 4 points, or flat).
+    if (auto s = spanning_points(P))
+      out.add(DefectKind::gap, {}, {(*s)[0], (*s)[1], (*s)[2], (*s)[3]}, 1,
+              "no tets, but these input points span a tetrahedron");
+    return finish();
+  }
+
+  // 2. orientation
+  std::vector<char> positive(T.size(), 0);
+  for (std::size_t i = 0; i < T.size(); ++i) {
+    const Tet& k = T[i];
+    const int s = pred.orient3d(P[k[0]], P[k[1]], P[k[2]], P[k[3]]);
+    positive[i] = s > 0;
+    if (s < 0)
+      out.add(DefectKind::inverted, {static_cast<std::uint32_t>(i)}, tet_vertices(k), s, "orient3d < 0");
+    else if (s == 0)
+      out.add(DefectKind::flat, {static_cast<std::uint32_t>(i)}, tet_vertices(k), 0, "orient3d == 0");
+  }
+
+  // 3. facet table
+  const FacetTable table = build_facet_table(T, n);
+  st.interior_facets = table.interior;
+  st.boundary_facets = table.boundary;
+  for (const auto& refs : table.overshared) {
+    std::vector<std::uint32_t> tets;
+    for (auto r : refs) tets.push_back(r / 4);
+    const auto f = facet_vertices(T[refs[0] / 4], static_cast<int>(refs[0] % 4));
+    out.add(DefectKind::broken_adjacency, std::move(tets), {f[0], f[1], f[2]}, 0,
+            "facet shared by " + std::to_string(refs.size()) + " tets");
+  }
+  for (const auto& [r1, r2] : table.same_side) {
+    const auto f = facet_vertices(T[r1 / 4], static_cast<int>(r1 % 4));
+    out.add(DefectKind::overlap, {r1 / 4, r2 / 4}, {f[0], f[1], f[2], T[r1 / 4][r1 % 4], T[r2 / 4][r2 % 4]},
+            0, "both tets lie on the same side of their shared facet");
+  }
+
+  // 4. Delaunay
+  if (opt.delaunay) {
+    for (std::size_t r = 0; r < table.adj.size(); ++r) {
+      const std::uint32_t r2 = table.adj[r];
+      if (r2 >= FacetTable::kOvershared || r2 < r) continue;
+      const std::uint32_t t1 = static_cast<std::uint32_t>(r / 4), t2 = r2 / 4;
+      if (!positive[t1] || !positive[t2]) continue;
+      const Tet& k = T[t1];
+      const std::uint32_t e = T[t2][r2 % 4];
+      const int s = pred.insphere(P[k[0]], P[k[1]], P[k[2]], P[k[3]], P[e]);
+      if (s > 0)
+        out.add(DefectKind::non_delaunay, {t1, t2}, {k[0], k[1], k[2], k[3], e}, s,
+                "insphere(tet " + std::to_string(t1) + ", opposite vertex " + std::to_string(e) + ") > 0");
+      else if (s == 0)
+        report.cospherical_pairs.emplace_back(t1, t2);
+    }
+    st.cospherical_facets = report.cospherical_pairs.size();
+  }
+
+  // 5. boundary surface
+  const BoundarySurface bs = build_boundary(T, table, n);
+  st.boundary_vertices = bs.vertices;
+  st.boundary_edges = bs.edges;
+  st.boundary_components = bs.components;
+  for (const auto& e : bs.bad_edges)
+    out.add(DefectKind::broken_adjacency, {}, {e[0], e[1]}, 0,
+            "boundary edge not shared by exactly two boundary facets in opposite directions");
+  for (auto v : bs.bad_vertices)
+    out.add(DefectKind::broken_adjacency, {}, {v}, 0, "boundary is not a 2-manifold at this vertex");
+  const bool local_ok = out.count(DefectKind::inverted) == 0 && out.count(DefectKind::flat) == 0 &&
+                        out.count(DefectKind::broken_adjacency) == 0 && out.count(DefectKind::overlap) == 0;
+  if (bs.components > 1) {
+    // The component of facet 0 is the outer one when it holds the most facets.
+    std::vector<std::uint64_t> size(bs.components, 0);
+    for (auto c : bs.component) ++size[c];
+    const auto outer = static_cast<std::uint32_t>(std::max_element(size.begin(), size.end()) - size.begin());
+    std::vector<char> reported(bs.components, 0);
+    for (std::size_t f = 0; f < bs.facets.size(); ++f) {
+      const auto c = bs.component[f];
+      if (c == outer || reported[c]) continue;
+      reported[c] = 1;
+      out.add(DefectKind::gap, {bs.tet_of[f]}, {bs.facets[f][0], bs.facets[f][1], bs.facets[f][2]}, 0,
+              "boundary component " + std::to_string(c) + " of " + std::to_string(bs.components) +
+                  " (" + std::to_string(size[c]) + " facets): a cavity or a separate piece");
+    }
+  }
+  // Edge convexity: the apex of the facet across each edge is on the inner side
+  // of (or on) the facet's plane.
+  for (std::size_t f = 0; f < bs.facets.size(); ++f) {
+    const auto& F = bs.facets[f];
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t g = bs.across[f][e];
+      if (g == BoundarySurface::kNone || g < f) continue;
+      const auto& G = bs.facets[g];
+      std::uint32_t apex = G[0];
+      for (auto v : G)
+        if (v != F[e] && v != F[(e + 1) % 3]) apex = v;
+      const int s = pred.orient3d(P[F[0]], P[F[1]], P[F[2]], P[apex]);
+      if (s < 0)
+        out.add(DefectKind::hull_not_convex, {bs.tet_of[f], bs.tet_of[g]}, {F[0], F[1], F[2], apex}, s,
+                "reflex boundary edge (" + std::to_string(F[e]) + "," + std::to_string(F[(e + 1) % 3]) +
+                    "): orient3d(facet, apex of neighbour facet) < 0");
+    }
+  }
+  // Euler characteristics.
+  st.edges = count_edges(T, n);
+  const auto F = static_cast<std::int64_t>(st.interior_facets + st.boundary_facets);
+  st.euler = static_cast<std::int64_t>(st.vertices) - static_cast<std::int64_t>(st.edges) + F -
+             static_cast<std::int64_t>(T.size());
+  st.boundary_euler = static_cast<std::int64_t>(bs.vertices) - static_cast<std::int64_t>(bs.edges) +
+                      static_cast<std::int64_t>(bs.facets.size());
+  if (local_ok && bs.components == 1) {
+    if (st.boundary_euler != 2)
+      out.add(DefectKind::euler, {}, {}, 0,
+              "boundary V-E+F = " + std::to_string(st.boundary_euler) + ", expected 2 (a sphere)");
+    if (st.euler != 1)
+      out.add(DefectKind::euler, {}, {}, 0, "V-E+F-T = " + std::to_string(st.euler) + ", expected 1 (a ball)");
+  }
+
+  // 6. global convexity and single covering
+  if (local_ok && report.ok()) {
+    const std::uint32_t f0 = 0, t0 = bs.tet_of[f0];
+    const Tet& k0 = T[t0];
+    bool inside = true;
+    for (std::size_t f = 0; f < bs.facets.size(); ++f) {
+      const auto& G = bs.facets[f];
+      for (auto v : k0) {
+        const int s = pred.orient3d(P[G[0]], P[G[1]], P[G[2]], P[v]);
+        if (s < 0) {
+          inside = false;
+          out.add(DefectKind::hull_not_convex, {bs.tet_of[f], t0}, {G[0], G[1], G[2], v}, s,
+                  "vertex " + std::to_string(v) + " lies outside the plane of a boundary facet");
+        }
+      }
+    }
+    if (inside) {
+      const HullDegree deg = hull_degree(P, bs.facets, k0, f0);
+      st.degree_checked = deg.decided;
+      if (deg.decided && deg.crossed.size() != 1) {
+        std::vector<std::uint32_t> tets, verts;
+        for (auto f : deg.crossed) {
+          tets.push_back(bs.tet_of[f]);
+          verts.insert(verts.end(), bs.facets[f].begin(), bs.facets[f].end());
+        }
+        out.add(DefectKind::overlap, std::move(tets), std::move(verts), 0,
+                "a ray from inside tet " + std::to_string(t0) + " crosses " + std::to_string(deg.crossed.size()) +
+                    " boundary facets: the tets cover the hull " + std::to_string(deg.crossed.size()) + " times");
+      }
+    }
+  }
+
+  // 7. points
+  check_points(t, used, opt.duplicates, out, st);
+
+  // 8. volumes
+  if (local_ok) {
+    const VolumeSums v = exact_volume_sums(P, T, bs.facets);
+    st.volume_checked = true;
+    st.volume_equal = v.equal;
+    st.volume_tets = v.tets;
+    st.volume_hull = v.hull;
+    if (!v.equal)
+      out.add(v.tets > v.hull ? DefectKind::overlap : DefectKind::gap, {}, {}, 0,
+              "exact sum of tet volumes differs from the exact volume inside the boundary");
+  }
+  return finish();
+}
+
+}  // namespace dtlab

@@ -1,0 +1,47 @@
+#pragma once
+// Facet adjacency rebuilt from the tets alone (the checker trusts no adjacency
+// given by a producer). Facets are matched by their sorted vertex triple, bucketed
+// by the smallest vertex: a hash map whose hash is that vertex, with the few
+// facets of one bucket sorted.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "kernel/tetrahedralization.hpp"
+
+namespace dtlab {
+
+// Facet f of a tet (the one opposite vertex f), ordered so that its normal by the
+// right-hand rule points out of the tet when the tet has orient3d > 0: seen from
+// outside, the three vertices turn counter-clockwise.
+inline std::array<std::uint32_t, 3> facet_vertices(const Tet& k, int f) {
+  switch (f) {
+    case 0: return {k[1], k[3], k[2]};
+    case 1: return {k[0], k[2], k[3]};
+    case 2: return {k[0], k[3], k[1]};
+    default: return {k[0], k[1], k[2]};
+  }
+}
+
+struct FacetTable {
+  static constexpr std::uint32_t kBoundary = 0xFFFFFFFFu;
+  static constexpr std::uint32_t kOvershared = 0xFFFFFFFEu;
+  // adj[4t+f] = 4t'+f' (the same facet seen from tet t'), kBoundary, or
+  // kOvershared when the facet belongs to three tets or more.
+  std::vector<std::uint32_t> adj;
+  std::vector<std::vector<std::uint32_t>> overshared;  // the 4t+f refs of each such facet
+  // Pairs (4t+f, 4t'+f') sharing a facet with the same orientation: both tets lie
+  // on the same side of it.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> same_side;
+  std::uint64_t interior = 0, boundary = 0;
+};
+
+// Tets must have four distinct vertices below point_count, and tets.size() < 2^30.
+FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count);
+
+// Number of distinct edges of the tets.
+std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count);
+
+}  // namespace dtlab

@@ -1,0 +1,74 @@
+#include "oracle/filtered_exact.hpp"
+
+#include <cmath>
+
+#include "predicates/exact.hpp"
+
+namespace dtlab {
+namespace {
+
+constexpr double kEps = 0x1p-53;
+constexpr double kO3dBound = (7.0 + 56.0 * kEps) * kEps;
+constexpr double kInsBound = (16.0 + 224.0 * kEps) * kEps;
+// Outside [kTiny, kHuge] intermediate products may underflow or overflow.
+constexpr double kTiny = 0x1p-900;
+constexpr double kHuge = 0x1p+900;
+
+bool trusted(double det, double permanent, double bound) {
+  if (!(permanent >= kTiny && permanent <= kHuge)) return false;  // also catches NaN
+  return std::fabs(det) > bound * permanent;
+}
+
+}  // namespace
+
+int FilteredExact::orient3d(const Point3& a, const Point3& b, const Point3& c,
+                            const Point3& d) const {
+  const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
+  const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
+  const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
+                           (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
+                           (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
+  if (trusted(det, permanent, kO3dBound)) return det > 0 ? 1 : -1;
+  return exact_orient3d(a, b, c, d);
+}
+
+int FilteredExact::insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                            const Point3& e) const {
+  const double aex = a.x - e.x, bex = b.x - e.x, cex = c.x - e.x, dex = d.x - e.x;
+  const double aey = a.y - e.y, bey = b.y - e.y, cey = c.y - e.y, dey = d.y - e.y;
+  const double aez = a.z - e.z, bez = b.z - e.z, cez = c.z - e.z, dez = d.z - e.z;
+  const double aexbey = aex * bey, bexaey = bex * aey;
+  const double bexcey = bex * cey, cexbey = cex * bey;
+  const double cexdey = cex * dey, dexcey = dex * cey;
+  const double dexaey = dex * aey, aexdey = aex * dey;
+  const double aexcey = aex * cey, cexaey = cex * aey;
+  const double bexdey = bex * dey, dexbey = dex * bey;
+  const double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey;
+  const double da = dexaey - aexdey, ac = aexcey - cexaey, bd = bexdey - dexbey;
+  const double abc = aez * bc - bez * ac + cez * ab;
+  const double bcd = bez * cd - cez * bd + dez * bc;
+  const double cda = cez * da + dez * ac + aez * cd;
+  const double dab = dez * ab + aez * bd + bez * da;
+  const double alift = aex * aex + aey * aey + aez * aez;
+  const double blift = bex * bex + bey * bey + bez * bez;
+  const double clift = cex * cex + cey * cey + cez * cez;
+  const double dlift = dex * dex + dey * dey + dez * dez;
+  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  using std::fabs;
+  const double ab_ = fabs(aexbey) + fabs(bexaey), bc_ = fabs(bexcey) + fabs(cexbey);
+  const double cd_ = fabs(cexdey) + fabs(dexcey), da_ = fabs(dexaey) + fabs(aexdey);
+  const double ac_ = fabs(aexcey) + fabs(cexaey), bd_ = fabs(bexdey) + fabs(dexbey);
+  const double permanent = (cd_ * fabs(bez) + bd_ * fabs(cez) + bc_ * fabs(dez)) * alift +
+                           (da_ * fabs(cez) + ac_ * fabs(dez) + cd_ * fabs(aez)) * blift +
+                           (ab_ * fabs(dez) + bd_ * fabs(aez) + da_ * fabs(bez)) * clift +
+                           (bc_ * fabs(aez) + ac_ * fabs(bez) + ab_ * fabs(cez)) * dlift;
+  if (trusted(det, permanent, kInsBound)) return det > 0 ? 1 : -1;
+  return exact_insphere(a, b, c, d, e);
+}
+
+}  // namespace dtlab

@@ -1,0 +1,85 @@
+#include "oracle/report_json.hpp"
+
+#include <cstdio>
+
+namespace dtlab {
+namespace {
+
+std::string list(const std::vector<std::uint32_t>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i) s += ' ';
+    s += std::to_string(v[i]);
+  }
+  return s + "]";
+}
+
+}  // namespace
+
+std::string format_defect(const Defect& d) {
+  std::string s = std::string(defect_name(d.kind)) + ": " + d.detail;
+  if (!d.tets.empty()) s += "; tets " + list(d.tets);
+  if (!d.vertices.empty()) s += "; vertices " + list(d.vertices);
+  if (d.sign != 0) s += "; sign " + std::to_string(d.sign);
+  return s;
+}
+
+std::string format_stats(const CheckStats& s) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%llu points, %llu vertices, %llu duplicates, %llu tets, %llu boundary facets, "
+                "%llu cospherical facets, Euler %lld, volume %.17g; checked in %.3f s",
+                (unsigned long long)s.points, (unsigned long long)s.vertices, (unsigned long long)s.duplicates,
+                (unsigned long long)s.tets, (unsigned long long)s.boundary_facets,
+                (unsigned long long)s.cospherical_facets, (long long)s.euler, s.volume_tets, s.seconds);
+  return buf;
+}
+
+nlohmann::json to_json(const Defect& d) {
+  return {{"kind", defect_name(d.kind)}, {"detail", d.detail}, {"tets", d.tets},
+          {"vertices", d.vertices}, {"sign", d.sign}};
+}
+
+nlohmann::json to_json(const CheckReport& r) {
+  const CheckStats& s = r.stats;
+  nlohmann::json counts = nlohmann::json::object();
+  for (int k = 0; k < kDefectKinds; ++k)
+    if (r.counts[k]) counts[defect_name(static_cast<DefectKind>(k))] = r.counts[k];
+  nlohmann::json defects = nlohmann::json::array();
+  for (const Defect& d : r.defects) defects.push_back(to_json(d));
+  return {{"valid", r.ok()},
+          {"defect_counts", counts},
+          {"defects", defects},
+          {"points", s.points},
+          {"vertices", s.vertices},
+          {"duplicates", s.duplicates},
+          {"tets", s.tets},
+          {"edges", s.edges},
+          {"interior_facets", s.interior_facets},
+          {"boundary_facets", s.boundary_facets},
+          {"boundary_vertices", s.boundary_vertices},
+          {"boundary_components", s.boundary_components},
+          {"euler", s.euler},
+          {"boundary_euler", s.boundary_euler},
+          {"cospherical_facets", s.cospherical_facets},
+          {"covering_checked", s.degree_checked},
+          {"volume_checked", s.volume_checked},
+          {"volume_equal", s.volume_equal},
+          {"volume_tets", s.volume_tets},
+          {"volume_hull", s.volume_hull},
+          {"seconds", s.seconds}};
+}
+
+nlohmann::json to_json(const Comparison& c) {
+  return {{"agree", c.agree()},
+          {"general_position", c.general_position},
+          {"tets_equal", c.tets_equal},
+          {"complexes_equal", c.complexes_equal},
+          {"cells", {c.cells_a, c.cells_b}},
+          {"only_first_count", c.only_a_count},
+          {"only_second_count", c.only_b_count},
+          {"only_first", c.only_a},
+          {"only_second", c.only_b}};
+}
+
+}  // namespace dtlab

@@ -1,0 +1,18 @@
+#pragma once
+// Text and JSON renderings of checker reports and comparisons, shared by
+// `dtlab check` and `dtlab oracle`.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "oracle/check.hpp"
+#include "oracle/compare.hpp"
+
+namespace dtlab {
+
+std::string format_defect(const Defect& d);   // one line
+std::string format_stats(const CheckStats& s);  // one line
+nlohmann::json to_json(const Defect& d);
+nlohmann::json to_json(const CheckReport& r);
+nlohmann::json to_json(const Comparison& c);
+
+}  // namespace dtlab
