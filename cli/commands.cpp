@@ -8,9 +8,9 @@ void register_commands(CLI::App& app, int& rc) {
   add_oracle_command(app, rc);
   add_fuzz_command(app, rc);
   add_pending_command(app, rc, "experiment", "reproducible experiments with reports", "#7 [6/8]");
-  add_pending_command(app, rc, "sample", "sample points on and inside a triangle mesh", "#8 [7/8]");
-  add_pending_command(app, rc, "voronoi", "Voronoi cells clipped to a box", "#9 [8/8]");
-  add_pending_command(app, rc, "fracture", "Voronoi fracture of a closed mesh", "#9 [8/8]");
+  add_sample_command(app, rc);
+  add_voronoi_command(app, rc);
+  add_fracture_command(app, rc);
   add_bench_command(app, rc);
   add_pending_command(app, rc, "demo", "the whole pipeline on the built-in input", "#2 [1/8]");
 }

@@ -7,6 +7,9 @@ void add_tetra_command(CLI::App& app, int& rc);
 void add_fuzz_command(CLI::App& app, int& rc);
 void add_check_command(CLI::App& app, int& rc);
 void add_oracle_command(CLI::App& app, int& rc);
+void add_sample_command(CLI::App& app, int& rc);
+void add_voronoi_command(CLI::App& app, int& rc);
+void add_fracture_command(CLI::App& app, int& rc);
 void add_bench_command(CLI::App& app, int& rc);
 
 // Registers every subcommand; defined in commands.cpp.

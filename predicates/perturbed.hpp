@@ -2,12 +2,14 @@
 // Symbolic perturbation of insphere (Devillers and Teillaud, "Perturbations for
 // Delaunay and weighted Delaunay 3D triangulations", CGTA 2011).
 //
-// The rule. Each point p_i is lifted to (p_i, |p_i|^2 + eps^(rank_i)), where rank_i
-// grows with the lexicographic (x, y, z) order of the points and eps -> 0+.
-// The perturbed 5x5 lifted determinant is a polynomial in eps whose constant term
-// is the raw insphere value; when that vanishes, the sign is the sign of the first
-// non-zero coefficient, taken from the most perturbed point (the lexicographically
-// largest) down. The coefficient of the lift of point v is, up to a sign fixed by
+// The rule. Each point p is lifted to (p, |p|^2 + eps^(n - r(p))), where r(p) is
+// p's position in the lexicographic (x, y, z) order of the points (0 = smallest) and
+// eps -> 0+: the lexicographically larger a point, the larger its perturbation.
+// The lift column appears once in the 5x5 lifted determinant, so the perturbed
+// determinant is linear in the offsets: raw insphere value + sum over points of
+// offset * coefficient. When the raw value vanishes, the sign is the sign of the
+// first non-zero coefficient, taken from the most perturbed point (the
+// lexicographically largest) down. The coefficient of the lift of point v is, up to a sign fixed by
 // v's column, the orientation of the four other points; writing it with the query
 // point e in v's place gives the rule below (for e itself the coefficient is
 // -orient3d(a,b,c,d): a perturbed e moves outward, since its lift grows).

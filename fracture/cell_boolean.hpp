@@ -1,0 +1,50 @@
+#pragma once
+// The boolean engine of the fracture: a closed triangle mesh intersected with one
+// convex cell at a time by CGAL's corefinement (Polygon Mesh Processing), exact
+// predicates. CGAL stays inside cell_boolean.cpp (one translation unit).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sampling/triangle_mesh.hpp"
+#include "voronoi/voronoi.hpp"
+
+namespace dtlab {
+
+// A closed piece: triangles oriented outward; cut[t] = 1 for triangles on the cell's
+// boundary (interior faces of the fractured object), with the neighbour site (or wall)
+// whose bisector they lie on in cut_tag[t].
+struct PieceMesh {
+  TriangleMesh mesh;
+  std::vector<char> cut;
+  std::vector<std::int32_t> cut_tag;
+  bool boolean_skipped = false;  // the cell lies inside the mesh: no corefinement ran
+};
+
+// Why an input mesh cannot be fractured; empty when it can.
+struct MeshDefect {
+  std::string reason;
+};
+
+class MeshClipper {
+ public:
+  // Throws std::invalid_argument with a reason if `mesh` is not a closed, manifold,
+  // self-intersection-free triangle mesh (duplicate vertices are merged first; an
+  // inward orientation is flipped).
+  explicit MeshClipper(const TriangleMesh& mesh);
+  ~MeshClipper();
+  MeshClipper(const MeshClipper&) = delete;
+  MeshClipper& operator=(const MeshClipper&) = delete;
+
+  // The repaired input (merged vertices, outward orientation).
+  const TriangleMesh& mesh() const;
+  double volume() const;
+  // Mesh ∩ cell; thread-safe (each call copies what it modifies).
+  PieceMesh intersect(const VoronoiCell& cell) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace dtlab

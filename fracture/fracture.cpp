@@ -1,0 +1,221 @@
+#include "fracture/fracture.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <map>
+#include <stdexcept>
+#include <thread>
+
+#include "voronoi/voronoi.hpp"
+
+namespace dtlab {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+template <class F>
+void parallel_for(std::size_t n, unsigned threads, F&& f) {
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto work = [&] {
+    for (std::size_t i; (i = next++) < n;) {
+      try {
+        f(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+struct Level {
+  std::vector<Piece> pieces;
+  std::size_t booleans = 0, skipped = 0;
+};
+
+// One level of fracture of `clipper`'s mesh; piece i belongs to site i (empty pieces,
+// of cells that miss the mesh, are dropped and neighbour ids renumbered).
+Level fracture_once(const MeshClipper& clipper, const FractureOptions& o, std::uint64_t seed,
+                    std::size_t count, FractureResult& timing) {
+  auto t0 = Clock::now();
+  MeshSampler sampler(clipper.mesh());
+  SampleRequest req;
+  req.method = o.sampler;
+  req.count = count;
+  req.seed = seed;
+  req.blue_noise = o.blue_noise;
+  std::vector<Point3> sites = sampler.sample(req).points;
+  if (sites.empty()) throw std::runtime_error("the sampler found no site inside the mesh");
+  timing.seconds_sampling += since(t0);
+
+  t0 = Clock::now();
+  VoronoiOptions vo;
+  vo.margin = 0.05;
+  // The cells only need to cover the mesh: its box, grown a little.
+  Box3 mb = bounding_box(clipper.mesh());
+  const Point3 g = 0.05 * mb.extent() + Point3{1e-9, 1e-9, 1e-9};
+  vo.box = vor::Box{mb.lo - g, mb.hi + g};
+  vo.shrink = 0.5 * o.margin;
+  VoronoiDiagram vd = compute_voronoi(sites, vo);
+  timing.seconds_voronoi += since(t0);
+
+  t0 = Clock::now();
+  Level level;
+  std::vector<Piece> all(sites.size());
+  parallel_for(sites.size(), o.threads, [&](std::size_t i) {
+    all[i].geometry = clipper.intersect(vd.cells[i]);
+    all[i].site = sites[i];
+  });
+  timing.seconds_boolean += since(t0);
+  std::vector<std::int64_t> renum(sites.size(), -1);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (all[i].geometry.mesh.triangles.empty()) continue;
+    renum[i] = static_cast<std::int64_t>(level.pieces.size());
+    if (all[i].geometry.boolean_skipped) ++level.skipped;
+    else ++level.booleans;
+    level.pieces.push_back(std::move(all[i]));
+  }
+  for (auto& p : level.pieces) {
+    for (auto& tag : p.geometry.cut_tag)
+      if (tag >= 0) tag = static_cast<std::int32_t>(renum[tag]);
+    measure_piece(p);
+  }
+  return level;
+}
+}  // namespace
+
+void measure_piece(Piece& p) {
+  const TriangleMesh& m = p.geometry.mesh;
+  double vol = 0, area = 0;
+  Point3 c{0, 0, 0};
+  const Point3 o = m.vertices.empty() ? Point3{0, 0, 0} : m.vertices[0];
+  std::vector<std::uint32_t> nb;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const Point3 a = m.corner(t, 0) - o, b = m.corner(t, 1) - o, d = m.corner(t, 2) - o;
+    const double w = dot(a, cross(b, d));
+    vol += w;
+    c += w * (a + b + d);
+    if (p.geometry.cut[t]) {
+      area += m.triangle_area(t);
+      if (p.geometry.cut_tag[t] >= 0) nb.push_back(static_cast<std::uint32_t>(p.geometry.cut_tag[t]));
+    }
+  }
+  p.volume = vol / 6;
+  p.centroid = vol != 0 ? o + (1.0 / (4 * vol)) * c : o;
+  p.interior_area = area;
+  std::sort(nb.begin(), nb.end());
+  nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+  p.neighbors = std::move(nb);
+}
+
+FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o) {
+  if (o.pieces == 0) throw std::invalid_argument("--pieces must be at least 1");
+  FractureResult r;
+  MeshClipper clipper(mesh);
+  r.input = clipper.mesh();
+  r.mesh_volume = clipper.volume();
+  Level top = fracture_once(clipper, o, o.seed, o.pieces, r);
+  r.booleans += top.booleans;
+  r.skipped += top.skipped;
+
+  // Recursion: each chosen piece (a closed mesh itself) is fractured again. Sub-pieces
+  // keep their parent's cut faces; their neighbours are their siblings plus the
+  // parent's neighbours they share a cut face with (tags of the parent's cut faces).
+  std::vector<char> chosen(top.pieces.size(), 0);
+  for (auto i : o.recurse) {
+    if (i >= top.pieces.size())
+      throw std::invalid_argument("--recurse: no piece " + std::to_string(i) + " (there are " +
+                                  std::to_string(top.pieces.size()) + ")");
+    chosen[i] = 1;
+  }
+  std::vector<std::vector<std::uint32_t>> ids(top.pieces.size());  // top piece -> final ids
+  for (std::size_t i = 0; i < top.pieces.size(); ++i) {
+    if (!chosen[i]) {
+      ids[i].push_back(static_cast<std::uint32_t>(r.pieces.size()));
+      r.pieces.push_back(std::move(top.pieces[i]));
+      continue;
+    }
+    const Piece& parent = top.pieces[i];
+    MeshClipper sub_clipper(parent.geometry.mesh);
+    Level sub = fracture_once(sub_clipper, o, o.seed * 1000003 + i, o.recurse_pieces, r);
+    r.booleans += sub.booleans;
+    r.skipped += sub.skipped;
+    // Parent cut planes, to recognise the parent's cut faces on the sub-pieces.
+    const std::uint32_t first = static_cast<std::uint32_t>(r.pieces.size());
+    for (auto& sp : sub.pieces) {
+      for (auto& tag : sp.geometry.cut_tag)
+        if (tag >= 0) tag += static_cast<std::int32_t>(first);
+      const TriangleMesh& m = sp.geometry.mesh;
+      for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+        if (sp.geometry.cut[t]) continue;
+        // A sub-piece triangle on the parent's cut face lies in the plane of one of
+        // the parent's cut triangles.
+        const TriangleMesh& pm = parent.geometry.mesh;
+        for (std::size_t u = 0; u < pm.triangles.size(); ++u) {
+          if (!parent.geometry.cut[u]) continue;
+          Point3 n = pm.area_normal(u);
+          const double len = norm(n);
+          if (len == 0) continue;
+          n = (1.0 / len) * n;
+          bool on = true;
+          for (int k = 0; k < 3 && on; ++k)
+            on = std::abs(dot(n, m.corner(t, k) - pm.corner(u, 0))) <= 1e-9 * std::sqrt(len);
+          if (on) {
+            sp.geometry.cut[t] = 1;
+            sp.geometry.cut_tag[t] = parent.geometry.cut_tag[u] >= 0 ? -1000 - parent.geometry.cut_tag[u] : parent.geometry.cut_tag[u];
+            break;
+          }
+        }
+      }
+      sp.parent = static_cast<int>(i);
+      ids[i].push_back(static_cast<std::uint32_t>(r.pieces.size()));
+      r.pieces.push_back(std::move(sp));
+    }
+  }
+  // Resolve tags: >= 0 final ids (siblings / unchanged top level), <= -1000 a top-level
+  // piece id to be mapped through ids (all its final pieces that touch, conservatively).
+  for (auto& p : r.pieces) {
+    if (p.parent < 0) {
+      for (auto& tag : p.geometry.cut_tag)
+        if (tag >= 0) tag = ids[tag].size() == 1 ? static_cast<std::int32_t>(ids[tag][0]) : -1000 - tag;
+    }
+  }
+  for (auto& p : r.pieces) {
+    measure_piece(p);
+    std::vector<std::uint32_t> nb;
+    for (std::size_t t = 0; t < p.geometry.cut_tag.size(); ++t) {
+      const auto tag = p.geometry.cut_tag[t];
+      if (!p.geometry.cut[t]) continue;
+      if (tag <= -1000) {
+        for (auto j : ids[-1000 - tag]) nb.push_back(j);
+        p.geometry.cut_tag[t] = -1;
+      }
+    }
+    nb.insert(nb.end(), p.neighbors.begin(), p.neighbors.end());
+    p.neighbors = std::move(nb);
+  }
+  // Symmetrise conservatively-found links and drop self links.
+  std::vector<std::vector<std::uint32_t>> sym(r.pieces.size());
+  for (std::uint32_t i = 0; i < r.pieces.size(); ++i)
+    for (auto j : r.pieces[i].neighbors)
+      if (j != i && j < r.pieces.size()) sym[i].push_back(j), sym[j].push_back(i);
+  for (std::uint32_t i = 0; i < r.pieces.size(); ++i) {
+    std::sort(sym[i].begin(), sym[i].end());
+    sym[i].erase(std::unique(sym[i].begin(), sym[i].end()), sym[i].end());
+    r.pieces[i].neighbors = std::move(sym[i]);
+  }
+  return r;
+}
+
+}  // namespace dtlab

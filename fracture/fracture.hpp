@@ -1,0 +1,48 @@
+#pragma once
+// Voronoi fracture: sites sampled inside a closed mesh, their Voronoi cells (clipped
+// to the mesh's box), each cell intersected with the mesh into one closed piece.
+#include <cstdint>
+#include <vector>
+
+#include "fracture/cell_boolean.hpp"
+#include "sampling/mesh_sampler.hpp"
+
+namespace dtlab {
+
+struct FractureOptions {
+  std::size_t pieces = 20;
+  SampleMethod sampler = SampleMethod::winding;
+  bool blue_noise = false;
+  std::uint64_t seed = 1;
+  double margin = 0;                 // gap between neighbouring pieces (absolute length)
+  unsigned threads = 0;              // 0: all hardware threads
+  std::vector<std::size_t> recurse;  // top-level pieces to fracture again
+  std::size_t recurse_pieces = 4;    // pieces each of those is split into
+};
+
+struct Piece {
+  PieceMesh geometry;
+  double volume = 0;
+  Point3 centroid{0, 0, 0};
+  double interior_area = 0;              // area of the cut faces
+  std::vector<std::uint32_t> neighbors;  // pieces sharing a cut face with this one
+  Point3 site{0, 0, 0};
+  int parent = -1;                       // top-level piece it was split from (recursion)
+};
+
+struct FractureResult {
+  TriangleMesh input;        // merged, outward-oriented input
+  double mesh_volume = 0;
+  std::vector<Piece> pieces;
+  std::size_t booleans = 0, skipped = 0;
+  double seconds_sampling = 0, seconds_voronoi = 0, seconds_boolean = 0;
+};
+
+// Throws std::invalid_argument when the mesh is not closed, manifold and free of
+// self-intersections (see MeshClipper).
+FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& options);
+
+// Signed volume, centroid and interior (cut) area of a piece.
+void measure_piece(Piece& p);
+
+}  // namespace dtlab

@@ -1,0 +1,84 @@
+#include "fracture/piece_io.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace dtlab {
+
+namespace {
+nlohmann::json point_json(const Point3& p) { return {p.x, p.y, p.z}; }
+Point3 volume_centroid(const FractureResult& r) {
+  Point3 c{0, 0, 0};
+  double v = 0;
+  for (const auto& p : r.pieces) c += p.volume * p.centroid, v += p.volume;
+  return v > 0 ? (1.0 / v) * c : c;
+}
+}  // namespace
+
+void write_pieces_obj(const std::string& path, const FractureResult& r, double explode) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot write " + path);
+  std::fprintf(f, "# dtlab fracture: %zu pieces\nmtllib pieces.mtl\n", r.pieces.size());
+  const Point3 centre = volume_centroid(r);
+  std::size_t base = 1;
+  for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+    const Piece& p = r.pieces[i];
+    const Point3 shift = explode * (p.centroid - centre);
+    std::fprintf(f, "o piece_%zu\n", i);
+    for (const auto& v : p.geometry.mesh.vertices) {
+      const Point3 q = v + shift;
+      std::fprintf(f, "v %.17g %.17g %.17g\n", q.x, q.y, q.z);
+    }
+    for (int cut = 0; cut < 2; ++cut) {
+      std::fprintf(f, "g piece_%zu_%s\nusemtl %s\n", i, cut ? "cut" : "outer", cut ? "cut" : "outer");
+      for (std::size_t t = 0; t < p.geometry.mesh.triangles.size(); ++t) {
+        if (p.geometry.cut[t] != cut) continue;
+        const auto& tr = p.geometry.mesh.triangles[t];
+        std::fprintf(f, "f %zu %zu %zu\n", base + tr[0], base + tr[1], base + tr[2]);
+      }
+    }
+    base += p.geometry.mesh.vertices.size();
+  }
+  std::fclose(f);
+}
+
+void write_pieces_mtl(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot write " + path);
+  std::fprintf(f, "newmtl outer\nKd 0.70 0.72 0.78\n\nnewmtl cut\nKd 0.85 0.35 0.20\n");
+  std::fclose(f);
+}
+
+nlohmann::json fracture_manifest(const FractureResult& r) {
+  nlohmann::json pieces = nlohmann::json::array();
+  double sum = 0;
+  for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+    const Piece& p = r.pieces[i];
+    std::size_t cut = 0;
+    for (char c : p.geometry.cut) cut += c;
+    nlohmann::json j;
+    j["id"] = i;
+    j["volume"] = p.volume;
+    j["centroid"] = point_json(p.centroid);
+    j["site"] = point_json(p.site);
+    j["interior_area"] = p.interior_area;
+    j["neighbors"] = p.neighbors;
+    j["triangles"] = p.geometry.mesh.triangles.size();
+    j["cut_triangles"] = cut;
+    j["boolean_skipped"] = p.geometry.boolean_skipped;
+    if (p.parent >= 0) j["parent"] = p.parent;
+    sum += p.volume;
+    pieces.push_back(std::move(j));
+  }
+  nlohmann::json m;
+  m["mesh_volume"] = r.mesh_volume;
+  m["piece_volume_sum"] = sum;
+  m["relative_volume_error"] = r.mesh_volume != 0 ? std::abs(sum - r.mesh_volume) / r.mesh_volume : 0.0;
+  m["booleans"] = r.booleans;
+  m["skipped_booleans"] = r.skipped;
+  m["seconds"] = {{"sampling", r.seconds_sampling}, {"voronoi", r.seconds_voronoi}, {"boolean", r.seconds_boolean}};
+  m["pieces"] = std::move(pieces);
+  return m;
+}
+
+}  // namespace dtlab

@@ -1,0 +1,136 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <limits>
+
+#include "families.hpp"
+#include "predicates/adaptive.hpp"
+#include "predicates/exact.hpp"
+
+using namespace dtlab;
+using namespace dtlab::test;
+
+namespace {
+
+void check_random(int n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const AdaptivePredicates ad;
+  const ExactPredicates ex;
+  int bad_o = 0, bad_i = 0;
+  for (int i = 0; i < n; ++i) {
+    const Point3 a = random_point(rng), b = random_point(rng), c = random_point(rng),
+                 d = random_point(rng), e = random_point(rng);
+    bad_o += ad.orient3d(a, b, c, d) != ex.orient3d(a, b, c, d);
+    bad_i += ad.insphere(a, b, c, d, e) != ex.insphere(a, b, c, d, e);
+  }
+  CHECK(bad_o == 0);
+  CHECK(bad_i == 0);
+}
+
+}  // namespace
+
+TEST_CASE("adaptive matches exact on random input", "[adaptive]") { check_random(100000, 1); }
+
+TEST_CASE("adaptive matches exact on 10^6 random inputs", "[adaptive][slow]") {
+  check_random(1000000, 2);
+}
+
+TEST_CASE("adaptive matches exact on every hard family", "[adaptive]") {
+  const AdaptivePredicates ad;
+  const ExactPredicates ex;
+  int bad = 0, zeros = 0;
+  for (const Quad& q : hard_orient_inputs(3, 3000)) {
+    const int s = ex.orient3d(q[0], q[1], q[2], q[3]);
+    zeros += s == 0;
+    bad += ad.orient3d(q[0], q[1], q[2], q[3]) != s;
+  }
+  CHECK(bad == 0);
+  CHECK(zeros > 0);  // the families do contain exact degeneracies
+  bad = zeros = 0;
+  for (const Quint& q : hard_insphere_inputs(4, 3000)) {
+    const int s = ex.insphere(q[0], q[1], q[2], q[3], q[4]);
+    zeros += s == 0;
+    bad += ad.insphere(q[0], q[1], q[2], q[3], q[4]) != s;
+  }
+  CHECK(bad == 0);
+  CHECK(zeros > 0);
+}
+
+TEST_CASE("adaptive reaches every stage on the hard families", "[adaptive]") {
+  AdaptiveStats st;
+  const AdaptivePredicates ad{&st};
+  for (const Quad& q : hard_orient_inputs(5, 1000)) ad.orient3d(q[0], q[1], q[2], q[3]);
+  for (const Quint& q : hard_insphere_inputs(6, 1000)) ad.insphere(q[0], q[1], q[2], q[3], q[4]);
+  for (int s = 0; s < static_cast<int>(AdaptiveStage::kCount); ++s) {
+    INFO("stage " << kAdaptiveStageNames[s] << ": orient3d " << st.orient3d[s] << ", insphere "
+                  << st.insphere[s]);
+    CHECK(st.orient3d[s] + st.insphere[s] > 0);
+  }
+}
+
+TEST_CASE("adaptive: extreme magnitudes and subnormals", "[adaptive]") {
+  const AdaptivePredicates ad;
+  const ExactPredicates ex;
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const double big = std::numeric_limits<double>::max() / 4;
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> expo(-1074, 1020);
+  int bad = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Coordinates with wildly mixed exponents, including subnormals and +-big/4.
+    auto coord = [&]() {
+      const int k = expo(rng);
+      const double m = std::uniform_real_distribution<double>(-1, 1)(rng);
+      const int pick = static_cast<int>(rng() % 16);
+      return pick == 0 ? 0.0 : pick == 1 ? tiny : pick == 2 ? -big : std::ldexp(m, k);
+    };
+    auto pt = [&]() { return Point3{coord(), coord(), coord()}; };
+    const Point3 a = pt(), b = pt(), c = pt(), d = pt(), e = pt();
+    bad += ad.orient3d(a, b, c, d) != ex.orient3d(a, b, c, d);
+    bad += ad.insphere(a, b, c, d, e) != ex.insphere(a, b, c, d, e);
+  }
+  CHECK(bad == 0);
+}
+
+TEST_CASE("adaptive: permutation identities", "[adaptive]") {
+  const AdaptivePredicates ad;
+  std::mt19937_64 rng(8);
+  const auto quads = hard_orient_inputs(9, 300);
+  int bad = 0;
+  for (const Quad& q0 : quads) {
+    std::array<int, 4> idx = {0, 1, 2, 3};
+    const int s0 = ad.orient3d(q0[0], q0[1], q0[2], q0[3]);
+    while (std::next_permutation(idx.begin(), idx.end())) {
+      int inv = 0;  // parity by inversion count
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) inv += idx[i] > idx[j];
+      const int s = ad.orient3d(q0[idx[0]], q0[idx[1]], q0[idx[2]], q0[idx[3]]);
+      bad += s != (inv % 2 ? -s0 : s0);
+    }
+  }
+  CHECK(bad == 0);
+  // insphere is the sign of an alternating 5x5 determinant: any permutation of all
+  // five points multiplies it by the permutation's sign.
+  const auto quints = hard_insphere_inputs(10, 150);
+  for (const Quint& q0 : quints) {
+    std::array<int, 5> idx = {0, 1, 2, 3, 4};
+    const int s0 = ad.insphere(q0[0], q0[1], q0[2], q0[3], q0[4]);
+    for (int t = 0; t < 12; ++t) {
+      std::shuffle(idx.begin(), idx.end(), rng);
+      int inv = 0;
+      for (int i = 0; i < 5; ++i)
+        for (int j = i + 1; j < 5; ++j) inv += idx[i] > idx[j];
+      const int s = ad.insphere(q0[idx[0]], q0[idx[1]], q0[idx[2]], q0[idx[3]], q0[idx[4]]);
+      bad += s != (inv % 2 ? -s0 : s0);
+    }
+  }
+  CHECK(bad == 0);
+}
+
+TEST_CASE("adaptive and exact: non-finite input answers 0", "[adaptive]") {
+  const Point3 o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0}, n{std::numeric_limits<double>::quiet_NaN(), 0, 0},
+      inf{0, 0, std::numeric_limits<double>::infinity()};
+  CHECK(AdaptivePredicates{}.orient3d(o, x, y, n) == 0);
+  CHECK(ExactPredicates{}.orient3d(o, x, y, inf) == 0);
+  CHECK(AdaptivePredicates{}.insphere(o, x, y, inf, n) == 0);
+}

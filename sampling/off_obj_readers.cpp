@@ -1,0 +1,78 @@
+// The two line-oriented polygon formats: OFF and Wavefront OBJ.
+#include <algorithm>
+#include <cctype>
+
+#include "kernel/line_reader.hpp"
+#include "sampling/mesh_builder.hpp"
+#include "sampling/mesh_io.hpp"
+
+namespace dtlab {
+
+TriangleMesh read_off(const std::string& path) {
+  LineReader r(path);
+  std::vector<std::string_view> tok;
+  if (!r.next(tok)) r.fail("empty file: missing OFF header");
+  // The header keyword may be followed by the counts on the same line. Prefixes ST, C
+  // and N announce texture, colour and normal values after each vertex's x y z: skipped.
+  {
+    std::string_view h = tok[0];
+    if (h.starts_with("ST")) h.remove_prefix(2);
+    if (h.starts_with("C")) h.remove_prefix(1);
+    if (h.starts_with("N")) h.remove_prefix(1);
+    if (h != "OFF") r.fail("expected 'OFF' header (or ST/C/N variants), got '" + std::string(tok[0]) + "'");
+  }
+  tok.erase(tok.begin());
+  if (tok.empty() && !r.next(tok)) r.fail("missing vertex and face counts");
+  if (tok.size() < 2 || tok.size() > 3) r.fail("expected '<#vertices> <#faces> [#edges]'");
+  const long nv = r.to_long(tok[0]), nf = r.to_long(tok[1]);
+  if (nv < 0 || nf < 0) r.fail("negative count");
+  TriangleMesh mesh;
+  // Counts come from the file: reserve no more than a sane amount up front.
+  mesh.vertices.reserve(static_cast<std::size_t>(std::min(nv, 1L << 20)));
+  for (long i = 0; i < nv; ++i) {
+    if (!r.next(tok)) r.fail("file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
+    if (tok.size() < 3) r.fail("vertex needs 3 coordinates, got " + std::to_string(tok.size()));
+    mesh.vertices.push_back({r.to_double(tok[0]), r.to_double(tok[1]), r.to_double(tok[2])});
+  }
+  mesh.triangles.reserve(static_cast<std::size_t>(std::min(nf, 1L << 20)));
+  std::vector<long> poly;
+  for (long i = 0; i < nf; ++i) {
+    if (!r.next(tok)) r.fail("file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces");
+    const long k = r.to_long(tok[0]);
+    if (k < 3) r.fail("face with " + std::to_string(k) + " corner(s), need 3");
+    if (static_cast<long>(tok.size()) < k + 1)
+      r.fail("face announces " + std::to_string(k) + " corners, lists " + std::to_string(tok.size() - 1));
+    poly.clear();
+    for (long j = 1; j <= k; ++j) poly.push_back(r.to_long(tok[j]));  // extra tokens: colour
+    detail::add_polygon(mesh, poly, path, r.line());
+  }
+  return mesh;
+}
+
+TriangleMesh read_obj(const std::string& path) {
+  LineReader r(path);
+  std::vector<std::string_view> tok;
+  TriangleMesh mesh;
+  std::vector<long> poly;
+  while (r.next(tok)) {
+    if (tok[0] == "v") {
+      if (tok.size() < 4) r.fail("vertex needs 3 coordinates");
+      mesh.vertices.push_back({r.to_double(tok[1]), r.to_double(tok[2]), r.to_double(tok[3])});
+    } else if (tok[0] == "f") {
+      poly.clear();
+      for (std::size_t j = 1; j < tok.size(); ++j) {
+        // "i", "i/t", "i//n" or "i/t/n": only the position index matters.
+        std::string_view s = tok[j].substr(0, tok[j].find('/'));
+        const long i = r.to_long(s);
+        if (i == 0) r.fail("OBJ indices start at 1, got 0");
+        // Negative indices count back from the last vertex read so far.
+        poly.push_back(i > 0 ? i - 1 : static_cast<long>(mesh.vertices.size()) + i);
+      }
+      detail::add_polygon(mesh, poly, path, r.line());
+    }
+    // vt, vn, g, o, s, usemtl, mtllib, l, ...: not geometry we sample.
+  }
+  return mesh;
+}
+
+}  // namespace dtlab

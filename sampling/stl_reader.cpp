@@ -1,0 +1,127 @@
+// STL, ASCII and binary. STL stores each triangle with its own three corners, so
+// corners with bit-identical coordinates are welded into shared vertices.
+#include <cstring>
+#include <unordered_map>
+
+#include "sampling/byte_source.hpp"
+#include "sampling/mesh_io.hpp"
+
+namespace dtlab {
+
+namespace {
+
+struct PointHash {
+  std::size_t operator()(const Point3& p) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (double c : {p.x, p.y, p.z}) {
+      if (c == 0) c = 0;  // +0 and -0 weld together
+      std::uint64_t b;
+      std::memcpy(&b, &c, sizeof b);
+      h = (h ^ b) * 1099511628211ull;
+      h ^= h >> 29;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+class Welder {
+ public:
+  explicit Welder(TriangleMesh& mesh) : mesh_(mesh) {}
+  std::uint32_t id(const Point3& p) {
+    auto [it, fresh] = ids_.try_emplace(p, static_cast<std::uint32_t>(mesh_.vertices.size()));
+    if (fresh) mesh_.vertices.push_back(p);
+    return it->second;
+  }
+
+ private:
+  TriangleMesh& mesh_;
+  std::unordered_map<Point3, std::uint32_t, PointHash> ids_;
+};
+
+TriangleMesh read_stl_binary(detail::ByteSource& src) {
+  src.skip(80);
+  std::uint32_t n = 0;
+  src.read_raw(&n, 4, false, "triangle count");
+  if (src.size() != 84 + 50ull * n)
+    throw InputError(src.path(), 0,
+                     "binary STL announces " + std::to_string(n) + " triangles, so " +
+                         std::to_string(84 + 50ull * n) + " bytes, but the file has " +
+                         std::to_string(src.size()));
+  TriangleMesh mesh;
+  mesh.triangles.reserve(n);
+  Welder weld(mesh);
+  for (std::uint32_t t = 0; t < n; ++t) {
+    float f[12];
+    for (float& x : f) src.read_raw(&x, 4, false, "triangle");
+    src.skip(2);  // attribute byte count
+    std::array<std::uint32_t, 3> tri{};
+    for (int k = 0; k < 3; ++k) {
+      const Point3 p{f[3 + 3 * k], f[4 + 3 * k], f[5 + 3 * k]};
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw InputError(src.path(), 0, "non-finite coordinate in triangle " + std::to_string(t));
+      tri[k] = weld.id(p);
+    }
+    mesh.triangles.push_back(tri);
+  }
+  return mesh;
+}
+
+TriangleMesh read_stl_ascii(detail::ByteSource& src) {
+  TriangleMesh mesh;
+  Welder weld(mesh);
+  std::string_view tok;
+  auto expect = [&](std::string_view word) {
+    if (!src.next_token(tok)) throw InputError(src.path(), src.line() + 1, "file ends, expected '" + std::string(word) + "'");
+    if (tok != word)
+      throw InputError(src.path(), src.token_line(),
+                       "expected '" + std::string(word) + "', got '" + std::string(tok) + "'");
+  };
+  auto number = [&] {
+    if (!src.next_token(tok)) throw InputError(src.path(), src.line() + 1, "file ends inside a facet");
+    return src.parse_double(tok, src.token_line());
+  };
+  expect("solid");
+  // The solid's name runs to the end of the first line.
+  std::string_view rest;
+  src.next_line(rest);
+  for (;;) {
+    if (!src.next_token(tok)) throw InputError(src.path(), src.line() + 1, "file ends without 'endsolid'");
+    if (tok == "endsolid") break;
+    if (tok != "facet")
+      throw InputError(src.path(), src.token_line(), "expected 'facet' or 'endsolid', got '" + std::string(tok) + "'");
+    expect("normal");
+    for (int k = 0; k < 3; ++k) number();
+    expect("outer");
+    expect("loop");
+    std::array<std::uint32_t, 3> tri{};
+    for (int k = 0; k < 3; ++k) {
+      expect("vertex");
+      const double x = number(), y = number(), z = number();
+      tri[k] = weld.id({x, y, z});
+    }
+    expect("endloop");
+    expect("endfacet");
+    mesh.triangles.push_back(tri);
+  }
+  return mesh;
+}
+
+}  // namespace
+
+TriangleMesh read_stl(const std::string& path) {
+  detail::ByteSource src(path);
+  // Binary files may also begin with "solid"; their exact size gives them away.
+  bool binary = src.data().compare(0, 5, "solid") != 0;
+  if (!binary && src.size() >= 84) {
+    std::uint32_t n;
+    std::memcpy(&n, src.data().data() + 80, 4);
+    binary = src.size() == 84 + 50ull * n;
+  }
+  if (binary) {
+    if (src.size() < 84) throw InputError(path, 0, "binary STL shorter than its 84-byte header");
+    return read_stl_binary(src);
+  }
+  return read_stl_ascii(src);
+}
+
+}  // namespace dtlab

@@ -1,0 +1,53 @@
+#pragma once
+// Structural checks of one cell: closed and consistently oriented (every directed
+// edge once, its reverse once), Euler characteristic 2, no degenerate edge or face,
+// convex (every vertex behind every face plane) and planar faces, within `tol`
+// (absolute length).
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "voronoi/voronoi.hpp"
+
+namespace dtlab {
+
+inline std::string check_cell(const VoronoiCell& c, double tol) {
+  using namespace vor;
+  const std::size_t nf = c.face_count();
+  if (nf < 4) return "fewer than 4 faces";
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
+    if (e - b < 3) return "face with fewer than 3 vertices";
+    for (auto k = b; k < e; ++k) edges.push_back({c.face_vertices[k], c.face_vertices[k + 1 < e ? k + 1 : b]});
+  }
+  std::sort(edges.begin(), edges.end());
+  if (std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return "directed edge used twice";
+  for (auto [a, b] : edges) {
+    if (a == b) return "edge from a vertex to itself";
+    if (!std::binary_search(edges.begin(), edges.end(), std::pair{b, a})) return "edge without its reverse";
+    if (vnorm(vsub(c.vertices[a], c.vertices[b])) <= tol) return "zero-length edge";
+  }
+  std::vector<char> used(c.vertices.size(), 0);
+  for (auto v : c.face_vertices) used[v] = 1;
+  if (std::count(used.begin(), used.end(), 1) != static_cast<long>(c.vertices.size())) return "unused vertex";
+  const long euler = long(c.vertices.size()) - long(edges.size() / 2) + long(nf);
+  if (euler != 2) return "Euler characteristic " + std::to_string(euler);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
+    Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
+    for (auto k = b + 1; k + 1 < e; ++k)
+      n = vadd(n, vcross(vsub(c.vertices[c.face_vertices[k]], o), vsub(c.vertices[c.face_vertices[k + 1]], o)));
+    const double area2 = vnorm(n);
+    if (area2 <= tol * tol) return "zero-area face";
+    n = vscale(1.0 / area2, n);
+    for (auto k = b; k < e; ++k)
+      if (std::abs(vdot(n, vsub(c.vertices[c.face_vertices[k]], o))) > tol) return "non-planar face";
+    for (const auto& p : c.vertices)
+      if (vdot(n, vsub(p, o)) > tol) return "not convex";
+  }
+  return {};
+}
+
+}  // namespace dtlab

@@ -1,0 +1,226 @@
+#include "voronoi/convex_cell.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace dtlab::vor {
+
+void ConvexCell::reset(const Box& b) {
+  v_.clear();
+  for (int k = 0; k < 8; ++k)
+    v_.push_back({(k & 1) ? b.hi.x : b.lo.x, (k & 2) ? b.hi.y : b.lo.y, (k & 4) ? b.hi.z : b.lo.z});
+  // Faces counter-clockwise seen from outside.
+  static const std::uint32_t quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                            {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  fv_.clear();
+  fo_.assign(1, 0);
+  face_tag_.clear();
+  for (int f = 0; f < 6; ++f) {
+    fv_.insert(fv_.end(), quads[f], quads[f] + 4);
+    fo_.push_back(static_cast<std::uint32_t>(fv_.size()));
+    face_tag_.push_back(-1 - f);
+  }
+}
+
+std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out) {
+  const std::uint64_t key = (std::uint64_t(in) << 32) | out;
+  for (std::size_t i = 0; i < cut_key_.size(); ++i)
+    if (cut_key_[i] == key) return cut_val_[i];
+  // Interpolate from the inside end: the same edge seen from its two faces gives
+  // the same point bit for bit.
+  const double t = d_[in] / (d_[in] - d_[out]);
+  const Point3 &a = v_[in], &b = v_[out];
+  nv_.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)});
+  on_.push_back(1);
+  const auto id = static_cast<std::uint32_t>(nv_.size() - 1);
+  cut_key_.push_back(key);
+  cut_val_.push_back(id);
+  return id;
+}
+
+bool ConvexCell::clip(const Point3& n, double c, std::int32_t tag, double tol) {
+  const std::size_t nv = v_.size();
+  d_.resize(nv);
+  side_.resize(nv);
+  const double band = tol * vnorm(n);
+  bool any_out = false, any_in = false;
+  for (std::size_t i = 0; i < nv; ++i) {
+    const double d = vdot(n, v_[i]) - c;
+    d_[i] = d;
+    const signed char s = d > band ? 1 : (d < -band ? -1 : 0);
+    side_[i] = s;
+    any_out |= s > 0;
+    any_in |= s <= 0;
+  }
+  if (!any_out) return false;
+  if (!any_in) {
+    v_.clear();
+    fv_.clear();
+    fo_.assign(1, 0);
+    face_tag_.clear();
+    return true;
+  }
+  nv_.clear();
+  on_.clear();
+  remap_.resize(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    if (side_[i] <= 0) {
+      remap_[i] = static_cast<std::uint32_t>(nv_.size());
+      nv_.push_back(v_[i]);
+      on_.push_back(side_[i] == 0);
+    }
+  }
+  cut_key_.clear();
+  cut_val_.clear();
+  cap_from_.clear();
+  cap_to_.clear();
+  nfv_.clear();
+  nfo_.assign(1, 0);
+  nface_tag_.clear();
+  const std::size_t nf = face_tag_.size();
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::uint32_t* fv = fv_.data() + fo_[f];
+    const std::uint32_t m = fo_[f + 1] - fo_[f];
+    bool cut = false, all_on = true;
+    for (std::uint32_t k = 0; k < m; ++k) {
+      cut |= side_[fv[k]] > 0;
+      all_on &= side_[fv[k]] == 0;
+    }
+    // A face lying in the band is replaced by the new face (its neighbours' edges
+    // on the plane chain that face's outline).
+    if (all_on) continue;
+    poly_.clear();
+    if (!cut) {
+      for (std::uint32_t k = 0; k < m; ++k) poly_.push_back(remap_[fv[k]]);
+    } else {
+      for (std::uint32_t k = 0; k < m; ++k) {
+        const std::uint32_t a = fv[k], b = fv[(k + 1) % m];
+        if (side_[a] <= 0) poly_.push_back(remap_[a]);
+        if ((side_[a] < 0 && side_[b] > 0)) poly_.push_back(cut_vertex(a, b));
+        else if (side_[a] > 0 && side_[b] < 0) poly_.push_back(cut_vertex(b, a));
+      }
+      if (poly_.size() < 3) continue;
+    }
+    const std::size_t pm = poly_.size();
+    for (std::size_t k = 0; k < pm; ++k) {
+      const std::uint32_t a = poly_[k], b = poly_[(k + 1) % pm];
+      if (on_[a] && on_[b]) {
+        cap_from_.push_back(b);
+        cap_to_.push_back(a);
+      }
+    }
+    nfv_.insert(nfv_.end(), poly_.begin(), poly_.end());
+    nfo_.push_back(static_cast<std::uint32_t>(nfv_.size()));
+    nface_tag_.push_back(face_tag_[f]);
+  }
+  build_cap(tag);
+  // Drop vertices no face uses any more (kept "on" vertices of dropped faces).
+  std::vector<std::uint32_t>& used = remap_;
+  used.assign(nv_.size(), UINT32_MAX);
+  v_.clear();
+  for (auto& i : nfv_) {
+    if (used[i] == UINT32_MAX) {
+      used[i] = static_cast<std::uint32_t>(v_.size());
+      v_.push_back(nv_[i]);
+    }
+    i = used[i];
+  }
+  std::swap(fv_, nfv_);
+  std::swap(fo_, nfo_);
+  std::swap(face_tag_, nface_tag_);
+  if (face_tag_.size() < 4) {
+    v_.clear();
+    fv_.clear();
+    fo_.assign(1, 0);
+    face_tag_.clear();
+  }
+  return true;
+}
+
+// Chains the on-plane edges into the new face; falls back to sorting the on-plane
+// vertices by angle if the chain is not one simple loop (only inside the band).
+void ConvexCell::build_cap(std::int32_t tag) {
+  const std::size_t k = cap_from_.size();
+  if (k < 3) return;
+  poly_.clear();
+  std::uint32_t cur = cap_from_[0];
+  bool ok = true;
+  for (std::size_t step = 0; step < k; ++step) {
+    poly_.push_back(cur);
+    std::size_t hits = 0, next = 0;
+    for (std::size_t i = 0; i < k; ++i)
+      if (cap_from_[i] == cur) ++hits, next = i;
+    if (hits != 1) {
+      ok = false;
+      break;
+    }
+    cur = cap_to_[next];
+    if (cur == cap_from_[0]) {
+      ok = step + 1 == k;
+      break;
+    }
+  }
+  if (!ok || cur != cap_from_[0]) {
+    poly_.assign(cap_from_.begin(), cap_from_.end());
+    std::sort(poly_.begin(), poly_.end());
+    poly_.erase(std::unique(poly_.begin(), poly_.end()), poly_.end());
+    if (poly_.size() < 3) return;
+    Point3 c{0, 0, 0};
+    for (auto i : poly_) c = vadd(c, nv_[i]);
+    c = vscale(1.0 / poly_.size(), c);
+    // The face normal from the loop edges (all of them orient the cap the same way).
+    Point3 nrm{0, 0, 0};
+    for (std::size_t i = 0; i < k; ++i)
+      nrm = vadd(nrm, vcross(vsub(nv_[cap_from_[i]], c), vsub(nv_[cap_to_[i]], c)));
+    Point3 u = vsub(nv_[poly_[0]], c);
+    Point3 w = vcross(nrm, u);
+    std::vector<std::pair<double, std::uint32_t>> ang;
+    for (auto i : poly_) {
+      const Point3 r = vsub(nv_[i], c);
+      ang.push_back({std::atan2(vdot(r, w), vdot(r, u) * vnorm(nrm)), i});
+    }
+    std::sort(ang.begin(), ang.end());
+    for (std::size_t i = 0; i < ang.size(); ++i) poly_[i] = ang[i].second;
+  }
+  nfv_.insert(nfv_.end(), poly_.begin(), poly_.end());
+  nfo_.push_back(static_cast<std::uint32_t>(nfv_.size()));
+  nface_tag_.push_back(tag);
+}
+
+double ConvexCell::volume() const {
+  if (empty()) return 0;
+  // Cones from vertex 0 over every face (signed, so any apex works; v0 keeps it local).
+  const Point3 o = v_[0];
+  double vol = 0;
+  for (std::size_t f = 0; f < face_count(); ++f) {
+    auto fv = face(f);
+    const Point3 a = vsub(v_[fv[0]], o);
+    for (std::size_t k = 1; k + 1 < fv.size(); ++k)
+      vol += det3(a, vsub(v_[fv[k]], o), vsub(v_[fv[k + 1]], o));
+  }
+  return vol / 6;
+}
+
+Point3 ConvexCell::centroid() const {
+  if (empty()) return {0, 0, 0};
+  const Point3 o = v_[0];
+  double vol = 0;
+  Point3 m{0, 0, 0};
+  for (std::size_t f = 0; f < face_count(); ++f) {
+    auto fv = face(f);
+    const Point3 a = vsub(v_[fv[0]], o);
+    for (std::size_t k = 1; k + 1 < fv.size(); ++k) {
+      const Point3 b = vsub(v_[fv[k]], o), c = vsub(v_[fv[k + 1]], o);
+      const double w = det3(a, b, c);
+      vol += w;
+      m = vadd(m, vscale(w, vadd(vadd(a, b), c)));
+    }
+  }
+  return vadd(o, vscale(1.0 / (4 * vol), m));
+}
+
+void ConvexCell::translate(const Point3& t) {
+  for (auto& p : v_) p = vadd(p, t);
+}
+
+}  // namespace dtlab::vor

@@ -1,0 +1,61 @@
+#pragma once
+// A convex polyhedron stored as polygons over a shared vertex array, built by
+// clipping a box with half-spaces: the one geometric engine of the Voronoi cells.
+//
+// A clip by the half-space n.x <= c classifies each vertex by d = n.x - c with a
+// tolerance band |d| <= tol*|n| ("on"). Only vertices strictly outside are removed
+// and only edges with one end strictly inside and one strictly outside get a new
+// vertex, so no new vertex lies within the band of an old one: a plane through an
+// existing vertex, edge or face (cospherical inputs: lattices) reuses it instead of
+// making a zero-length edge. A clip with no vertex strictly outside changes nothing.
+// The new face is chained from the polygon edges that lie on the plane (each such
+// edge a->b of a kept face contributes b->a), so the result stays closed.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "voronoi/vec.hpp"
+
+namespace dtlab::vor {
+
+class ConvexCell {
+ public:
+  // The box as a cell; face tags -1..-6 for the walls x-lo, x-hi, y-lo, y-hi, z-lo, z-hi
+  // (voro++'s numbering, negative so they never clash with a neighbour id).
+  void reset(const Box& box);
+
+  // Keeps the part with n.x <= c; the new face gets `tag`. Returns true if it cut.
+  bool clip(const Point3& n, double c, std::int32_t tag, double tol);
+
+  bool empty() const { return face_tag_.size() < 4; }
+  std::size_t vertex_count() const { return v_.size(); }
+  std::size_t face_count() const { return face_tag_.size(); }
+  const std::vector<Point3>& vertices() const { return v_; }
+  std::span<const std::uint32_t> face(std::size_t f) const {
+    return {fv_.data() + fo_[f], fo_[f + 1] - fo_[f]};
+  }
+  std::int32_t face_tag(std::size_t f) const { return face_tag_[f]; }
+  std::size_t edge_count() const { return (fv_.size()) / 2; }  // each edge in two faces
+
+  double volume() const;
+  Point3 centroid() const;  // centre of mass
+  void translate(const Point3& t);
+
+ private:
+  std::uint32_t cut_vertex(std::uint32_t in, std::uint32_t out);
+  void build_cap(std::int32_t tag);
+
+  std::vector<Point3> v_, nv_;
+  std::vector<std::uint32_t> fv_, nfv_, fo_, nfo_;
+  std::vector<std::int32_t> face_tag_, nface_tag_;
+  std::vector<double> d_;
+  std::vector<signed char> side_;
+  std::vector<std::uint32_t> remap_;
+  std::vector<char> on_;                        // new vertex lies on the clip plane
+  std::vector<std::uint64_t> cut_key_;          // edge (in,out) -> new vertex, small
+  std::vector<std::uint32_t> cut_val_;
+  std::vector<std::uint32_t> cap_from_, cap_to_;
+  std::vector<std::uint32_t> poly_;
+};
+
+}  // namespace dtlab::vor

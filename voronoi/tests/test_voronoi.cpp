@@ -1,0 +1,179 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <random>
+
+#include "voronoi/cell_check.hpp"
+#include "voronoi/circumcenter.hpp"
+#include "voronoi/voronoi.hpp"
+#include "voronoi/voronoi_io.hpp"
+
+using namespace dtlab;
+using namespace dtlab::vor;
+
+namespace {
+
+std::vector<Point3> uniform(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Point3> pts(n);
+  for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
+  return pts;
+}
+
+std::vector<Point3> lattice(int k, double h = 1) {
+  std::vector<Point3> pts;
+  for (int x = 0; x < k; ++x)
+    for (int y = 0; y < k; ++y)
+      for (int z = 0; z < k; ++z) pts.push_back({h * x, h * y, h * z});
+  return pts;
+}
+
+const PredicateSpec kExact{"exact", 0, false, true};
+
+void check_diagram(const VoronoiDiagram& vd, double volume_rel = 1e-12) {
+  const double tol = 1e-9 * vd.box.diagonal();
+  double sum = 0;
+  for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+    const VoronoiCell& c = vd.cells[i];
+    if (c.duplicate_of >= 0) continue;
+    INFO("cell " << i);
+    CHECK(check_cell(c, tol) == "");
+    CHECK(c.volume > 0);
+    sum += c.volume;
+    // Neighbour relation is symmetric.
+    for (auto j : c.neighbors()) {
+      auto nj = vd.cells[j].neighbors();
+      CHECK(std::binary_search(nj.begin(), nj.end(), static_cast<std::uint32_t>(i)));
+    }
+  }
+  CHECK(std::abs(sum - vd.box.volume()) <= volume_rel * vd.box.volume());
+}
+
+}  // namespace
+
+TEST_CASE("random points: closed convex cells tile the box") {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    VoronoiOptions o;
+    o.predicates = kExact;
+    auto vd = compute_voronoi(uniform(300, seed), o);
+    check_diagram(vd);
+  }
+}
+
+TEST_CASE("interior Voronoi vertices are circumcentres of Delaunay tets") {
+  auto pts = uniform(200, 11);
+  VoronoiOptions o;
+  o.predicates = kExact;
+  o.margin = 2;  // large box: most cells are not touched by it
+  auto vd = compute_voronoi(pts, o);
+  auto dt = build_delaunay(pts, kExact);
+  REQUIRE_FALSE(dt.failure);
+  std::vector<Point3> cc;
+  for (const auto& t : dt.mesh.tets) cc.push_back(circumcenter(pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]]));
+  std::size_t checked = 0;
+  for (const auto& c : vd.cells) {
+    if (std::any_of(c.face_neighbor.begin(), c.face_neighbor.end(), [](int t) { return t < 0; })) continue;
+    for (const auto& v : c.vertices) {
+      double best = INFINITY;
+      for (const auto& q : cc) best = std::min(best, vnorm(vsub(q, v)));
+      CHECK(best < 1e-9);
+      ++checked;
+    }
+  }
+  CHECK(checked > 100);
+}
+
+TEST_CASE("circumcenter is equidistant and reports bad conditioning of flat tets") {
+  Point3 a{1, 0, 0}, b{0, 1, 0}, c{0, 0, 1}, d{0.3, 0.2, 0.1};
+  double cond = 0;
+  Point3 o = circumcenter(a, b, c, d, &cond);
+  const double r = vnorm(vsub(a, o));
+  CHECK(vnorm(vsub(b, o)) == Approx(r).epsilon(1e-14));
+  CHECK(vnorm(vsub(c, o)) == Approx(r).epsilon(1e-14));
+  CHECK(vnorm(vsub(d, o)) == Approx(r).epsilon(1e-14));
+  double flat = 0;
+  circumcenter({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 1e-9}, &flat);
+  CHECK(flat > 1e8 * cond);
+}
+
+TEST_CASE("cospherical lattice: coincident Voronoi vertices merge into exact cubes") {
+  auto pts = lattice(5);
+  VoronoiOptions o;
+  o.predicates = kExact;
+  o.box = Box{{-0.5, -0.5, -0.5}, {4.5, 4.5, 4.5}};
+  auto vd = compute_voronoi(pts, o);
+  check_diagram(vd);
+  for (const auto& c : vd.cells) {
+    CHECK(c.vertices.size() == 8);
+    CHECK(c.face_count() == 6);
+    CHECK(c.volume == Approx(1).epsilon(1e-14));
+  }
+  // Default box: boundary cells are longer boxes, still cubes' worth of faces.
+  o.box.reset();
+  check_diagram(compute_voronoi(pts, o));
+}
+
+TEST_CASE("cospherical inputs: points on a sphere and a perturbed lattice") {
+  // Octahedron + cube vertices on the unit sphere, plus the centre.
+  std::vector<Point3> pts{{0, 0, 0}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const double s = 1 / std::sqrt(3.0);
+  for (int k = 0; k < 8; ++k) pts.push_back({(k & 1) ? s : -s, (k & 2) ? s : -s, (k & 4) ? s : -s});
+  VoronoiOptions o;
+  o.predicates = kExact;
+  check_diagram(compute_voronoi(pts, o));
+  // Body-centred cubic lattice: truncated octahedra, with 4 cospherical sites per vertex.
+  auto bcc = lattice(4, 2);
+  for (int x = 0; x < 3; ++x)
+    for (int y = 0; y < 3; ++y)
+      for (int z = 0; z < 3; ++z) bcc.push_back({2.0 * x + 1, 2.0 * y + 1, 2.0 * z + 1});
+  auto vd = compute_voronoi(bcc, o);
+  check_diagram(vd);
+  // The centre site (1+2,1+2,1+2 = index 64 + 13) is a truncated octahedron: 14 faces, 24 vertices.
+  const auto& mid = vd.cells[64 + 13];
+  CHECK(mid.face_count() == 14);
+  CHECK(mid.vertices.size() == 24);
+  CHECK(mid.volume == Approx(4).epsilon(1e-13));
+}
+
+TEST_CASE("duplicates get an empty cell; coplanar and tiny inputs still work") {
+  auto pts = uniform(50, 3);
+  pts.push_back(pts[7]);
+  VoronoiOptions o;
+  o.predicates = kExact;
+  auto vd = compute_voronoi(pts, o);
+  CHECK(vd.cells.back().duplicate_of == 7);
+  CHECK(vd.cells.back().vertices.empty());
+  check_diagram(vd);
+  // Coplanar sites: prisms through the box.
+  std::vector<Point3> flat;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < 30; ++i) flat.push_back({u(rng), u(rng), 0});
+  check_diagram(compute_voronoi(flat, o));
+  // A single site owns the whole box; two sites split it by their bisector.
+  auto one = compute_voronoi(std::vector<Point3>{{0, 0, 0}}, o);
+  CHECK(one.cells[0].volume == Approx(one.box.volume()));
+  check_diagram(compute_voronoi(std::vector<Point3>{{0, 0, 0}, {1, 1, 1}}, o));
+}
+
+TEST_CASE("manifest totals and OBJ/VTU writers") {
+  auto pts = uniform(40, 9);
+  VoronoiOptions o;
+  o.predicates = kExact;
+  auto vd = compute_voronoi(pts, o);
+  auto m = cells_manifest(vd);
+  CHECK(m["cells"].size() == 40);
+  CHECK(m["cell_volume_sum"].get<double>() == Approx(m["box_volume"].get<double>()).epsilon(1e-12));
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  write_cells_obj(dir + "/voronoi_test_cells.obj", vd);
+  write_cells_vtu(dir + "/voronoi_test_cells.vtu", vd);
+  std::FILE* f = std::fopen((dir + "/voronoi_test_cells.obj").c_str(), "r");
+  REQUIRE(f);
+  int groups = 0;
+  char line[256];
+  while (std::fgets(line, sizeof line, f))
+    if (line[0] == 'g') ++groups;
+  std::fclose(f);
+  CHECK(groups == 40);
+}

@@ -1,0 +1,72 @@
+#pragma once
+// The Voronoi diagram of a point set, every cell clipped to a box.
+//
+// Method: each cell is the box clipped by the bisector half-spaces of the site's
+// Delaunay neighbours (the vertices sharing a Delaunay edge with it), nearest first.
+// This is the dual of the DT made concrete: every Voronoi face is a bisector of a
+// Delaunay edge and every Voronoi vertex a circumcentre, but building the cell by
+// clipping handles unbounded cells (hull sites) and the box in the same step, and
+// cospherical inputs (coincident circumcentres) collapse inside one tolerance band
+// instead of needing a merge pass. Unlike voro++, which must search space for the
+// planes that might cut, the DT gives exactly the planes that matter.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "kernel/build.hpp"
+#include "voronoi/convex_cell.hpp"
+
+namespace dtlab {
+
+struct VoronoiOptions {
+  std::optional<vor::Box> box;      // default: the bounding box grown by `margin` per side
+  double margin = 0.1;              // relative to the box extent
+  double tolerance = 1e-12;         // relative to the box diagonal
+  double shrink = 0;                // move each bisector this far towards its site
+  PredicateSpec predicates{"adaptive", 1e-12, false, true};
+};
+
+struct VoronoiCell {
+  std::vector<Point3> vertices;
+  std::vector<std::uint32_t> face_offsets{0};  // face f: face_vertices[off[f] .. off[f+1])
+  std::vector<std::uint32_t> face_vertices;    // counter-clockwise seen from outside
+  std::vector<std::int32_t> face_neighbor;     // site id, or -1..-6 for the box walls
+  double volume = 0;
+  Point3 centroid{0, 0, 0};
+  std::int64_t duplicate_of = -1;              // a repeated site gets an empty cell
+
+  std::size_t face_count() const { return face_neighbor.size(); }
+  std::size_t edge_count() const { return face_vertices.size() / 2; }
+  std::vector<std::uint32_t> neighbors() const;  // sorted site ids (walls left out)
+};
+
+struct VoronoiDiagram {
+  vor::Box box;
+  std::vector<Point3> sites;
+  std::vector<VoronoiCell> cells;
+  std::size_t tets = 0;
+};
+
+// Delaunay neighbours per vertex in compressed rows: neighbours of v are
+// adj[off[v] .. off[v+1]), sorted by distance to v.
+struct Adjacency {
+  std::vector<std::uint32_t> off, adj;
+};
+Adjacency delaunay_neighbors(const Tetrahedralization& dt);
+
+vor::Box default_box(std::span<const Point3> sites, double margin);
+
+// The cell of site i: `cell` is reset to the box and clipped (in coordinates
+// relative to the site, then translated back). `shrink` > 0 moves every bisector
+// plane that distance towards the site (a gap of 2*shrink between neighbours).
+void compute_cell(vor::ConvexCell& cell, std::span<const Point3> sites, std::uint32_t i,
+                  std::span<const std::uint32_t> neighbors, const vor::Box& box, double tol,
+                  double shrink = 0);
+
+// Throws std::invalid_argument on an empty input; fewer than four
+// or coplanar sites fall back to all-pairs clipping (quadratic, fine for small inputs).
+VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptions& options = {});
+
+}  // namespace dtlab
