@@ -12,7 +12,7 @@ void register_commands(CLI::App& app, int& rc) {
   add_voronoi_command(app, rc);
   add_fracture_command(app, rc);
   add_bench_command(app, rc);
-  add_pending_command(app, rc, "demo", "the whole pipeline on the built-in input", "#2 [1/8]");
+  add_demo_command(app, rc);
 }
 
 }  // namespace dtlab::cli

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# End-to-end checks of the dtlab command as a user runs it: exit codes 0/1/2,
+# one-line file:line errors, --help and --json on every subcommand, and a small demo.
+set -u
+dtlab="$1"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+pass=0
+expect() {  # expect CODE DESCRIPTION -- command...
+  local want=$1 what=$2
+  shift 3
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    echo "FAIL: $what: exit $got, expected $want"; sed 's/^/  | /' "$tmp/err" | head -5; fails=$((fails + 1))
+  else
+    pass=$((pass + 1))
+  fi
+}
+for sub in tetra check oracle fuzz sample voronoi fracture bench experiment demo; do
+  expect 0 "$sub --help" -- "$dtlab" "$sub" --help
+done
+expect 2 "no subcommand" -- "$dtlab"
+expect 2 "unknown subcommand" -- "$dtlab" frobnicate
+
+printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 one\n4 1 1 1\n' > "$tmp/bad.node"
+expect 2 "malformed .node" -- "$dtlab" tetra "$tmp/bad.node"
+if ! grep -qx "dtlab: $tmp/bad.node:5: not a number: 'one'" "$tmp/err"; then
+  echo "FAIL: malformed .node message: $(cat "$tmp/err")"; fails=$((fails + 1))
+fi
+expect 2 "missing file" -- "$dtlab" tetra "$tmp/none.xyz"
+printf '0 0 0\n1 0 0\n0 1 0\n1 1 0\n' > "$tmp/flat.xyz"
+expect 2 "coplanar input" -- "$dtlab" tetra "$tmp/flat.xyz"
+
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n0 0 0\n0.5 0.5 0.5\n' > "$tmp/ok.xyz"
+expect 0 "tetra" -- "$dtlab" tetra "$tmp/ok.xyz" --out "$tmp/ok" --vtu --json
+grep -q '"duplicates": \[' "$tmp/out" || { echo "FAIL: tetra --json lacks duplicates"; fails=$((fails + 1)); }
+grep -q '5' "$tmp/out" || true
+expect 0 "check our output" -- "$dtlab" check "$tmp/ok"
+# Break one tet: the checker must find a defect (exit 1).
+sed -i '2s/.*/0 0 1 2 4/' "$tmp/ok.ele"
+expect 1 "check a broken mesh" -- "$dtlab" check "$tmp/ok"
+expect 2 "bad boundary option" -- "$dtlab" tetra "$tmp/ok.xyz" --boundary bigtet:x
+expect 0 "bigtet boundary" -- "$dtlab" tetra "$tmp/ok.xyz" --boundary bigtet:100 --predicates exact --perturb none --order input
+expect 0 "demo (small)" -- "$dtlab" demo --out "$tmp/demo" --points 2000 --pieces 5 --no-oracles
+[ -s "$tmp/demo/fracture/exploded.png" ] || { echo "FAIL: demo wrote no PNG"; fails=$((fails + 1)); }
+
+echo "$pass passed, $fails failed"
+[ "$fails" -eq 0 ]
