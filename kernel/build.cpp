@@ -3,11 +3,7 @@
 #include <stdexcept>
 
 #include "kernel/build_impl.hpp"
-#include "predicates/adaptive.hpp"
-#include "predicates/epsilon.hpp"
-#include "predicates/exact.hpp"
-#include "predicates/naive.hpp"
-#include "predicates/perturbed.hpp"
+#include "predicates/backend_choice.hpp"
 
 namespace dtlab {
 
@@ -22,33 +18,22 @@ const char* failure_name(FailureKind k) {
   return "unknown";
 }
 
-namespace {
-template <PredicateBackend B>
-BuildResult build_maybe_perturbed(std::span<const Point3> points, const B& base, bool perturb,
-                                  const BuildOptions& options) {
-  if (perturb) return build_with(points, Perturbed<B>{base}, options);
-  return build_with(points, base, options);
-}
-}  // namespace
-
 BuildResult build_delaunay(std::span<const Point3> points, const PredicateSpec& spec,
                            const BuildOptions& options) {
-  if (spec.backend == "naive") return build_maybe_perturbed(points, NaivePredicates{}, spec.perturb, options);
-  if (spec.backend == "exact") return build_maybe_perturbed(points, ExactPredicates{}, spec.perturb, options);
-  if (spec.backend == "epsilon")
-    return build_maybe_perturbed(points, EpsilonPredicates{spec.eps, spec.relative_eps}, spec.perturb, options);
-  if (spec.backend == "adaptive") {
-    AdaptiveStats stats;
-    BuildResult r = build_maybe_perturbed(points, AdaptivePredicates{&stats}, spec.perturb, options);
-    for (int s = 0; s < static_cast<int>(AdaptiveStage::kCount); ++s) {
-      const std::string name(kAdaptiveStageNames[s]);
-      if (stats.orient3d[s]) r.stats.stages.push_back({"orient3d:" + name, stats.orient3d[s]});
-      if (stats.insphere[s]) r.stats.stages.push_back({"insphere:" + name, stats.insphere[s]});
-    }
-    return r;
+  std::optional<BackendChoice> choice = parse_backend(spec.backend, spec.eps, spec.relative_eps);
+  if (!choice)
+    throw std::invalid_argument("unknown predicate backend '" + spec.backend +
+                                "' (expected naive, epsilon, adaptive or exact)");
+  AdaptiveStats stages;
+  if (auto* adaptive = std::get_if<AdaptivePredicates>(&*choice)) adaptive->stats = &stages;
+  BuildResult r = visit_backend(*choice, spec.perturb,
+                                [&](const auto& preds) { return build_with(points, preds, options); });
+  for (int s = 0; s < static_cast<int>(AdaptiveStage::kCount); ++s) {
+    const std::string name(kAdaptiveStageNames[s]);
+    if (stages.orient3d[s]) r.stats.stages.push_back({"orient3d:" + name, stages.orient3d[s]});
+    if (stages.insphere[s]) r.stats.stages.push_back({"insphere:" + name, stages.insphere[s]});
   }
-  throw std::invalid_argument("unknown predicate backend '" + spec.backend +
-                              "' (expected naive, epsilon, adaptive or exact)");
+  return r;
 }
 
 }  // namespace dtlab
