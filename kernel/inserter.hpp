@@ -77,7 +77,8 @@ class Inserter {
 
   Outcome insert(std::uint32_t p) {
     std::uint32_t t;
-    if (!locate(p, t)) return Outcome::failed;
+    bool on_boundary = false;
+    if (!locate(p, t, on_boundary)) return Outcome::failed;
     const std::uint32_t* v = mesh_.verts(t);
     for (int i = 0; i < 4; ++i)
       if (v[i] != geo_.infinite() && geo_.point(v[i]) == geo_.point(p)) {
@@ -86,7 +87,7 @@ class Inserter {
       }
     flip14(t, p);
     ++stats_.flips14;
-    if (!restore_delaunay(p)) return Outcome::failed;
+    if (!restore_delaunay(p, !on_boundary)) return Outcome::failed;
     ++stats_.inserted;
     return Outcome::inserted;
   }
@@ -118,8 +119,9 @@ class Inserter {
 
   // Visibility walk from the last tet touched, leaving each tet through a facet
   // that separates it from p, chosen in random order so the walk cannot cycle
-  // (with exact predicates). Stops in a tet whose closure contains p.
-  bool locate(std::uint32_t p, std::uint32_t& out) {
+  // (with exact predicates). Stops in a tet whose closure contains p; on_boundary
+  // tells whether p lies on its boundary (a facet, an edge or a vertex).
+  bool locate(std::uint32_t p, std::uint32_t& out, bool& on_boundary) {
     std::uint32_t t = last_;
     if (mesh_.dead(t))
       for (t = 0; mesh_.dead(t); ++t) {}
@@ -128,12 +130,15 @@ class Inserter {
     for (std::uint64_t step = 0; step < max_steps; ++step) {
       const std::uint32_t r = next_random();
       bool moved = false;
+      on_boundary = false;
       for (int k = 0; k < 4 && !moved; ++k) {
         const int f = (r + k) & 3;
         if (4 * t + f == entry) continue;
         std::uint32_t w[4] = {mesh_.vertex(t, 0), mesh_.vertex(t, 1), mesh_.vertex(t, 2), mesh_.vertex(t, 3)};
         w[f] = p;
-        if (orientation(w) < 0) {
+        const int s = orientation(w);
+        on_boundary |= s == 0;
+        if (s < 0) {
           const std::uint32_t nb = mesh_.adj(4 * t + f);
           if (nb == TetMesh::kNoFacet)
             return fail(FailureKind::outside_boundary, "point lies outside the enclosing tetrahedron");
@@ -168,7 +173,14 @@ class Inserter {
     return w;
   }
 
-  bool restore_delaunay(std::uint32_t p) {
+  // `clean`: p was strictly inside a tet, so every tet stays positively oriented
+  // until some orientation test returns 0. In a clean state an edge of abc with
+  // exactly three tets (T, Ta and (p,y,z,d)) pierces the triangle of its link, so
+  // the flip 3-2 is valid without a test, and no other flip can be (the five points
+  // span one 4-simplex; a valid mesh holds one side of its boundary). This is
+  // Ledoux's case 2 with the combinatorial test first; it saves most orientation
+  // tests. The first zero switches to the full case analysis for the rest of p.
+  bool restore_delaunay(std::uint32_t p, bool clean) {
     const std::uint64_t max_flips = 1000 + 8 * std::uint64_t(mesh_.live());
     std::uint64_t flips = 0;
     while (!stack_.empty()) {
@@ -183,6 +195,33 @@ class Inserter {
       if (!geo_.conflict(mesh_.verts(ta), p)) continue;
       const std::uint32_t d = mesh_.vertex(ta, across & 3);
       const std::uint32_t* tv = mesh_.verts(t);
+      if (++flips > max_flips)
+        return fail(FailureKind::flip_stuck, "more than " + std::to_string(max_flips) + " flips");
+
+      if (clean) {
+        int third = -1;
+        for (int j = 0; j < 4 && third < 0; ++j) {
+          if (j == i) continue;
+          const std::uint32_t side = mesh_.adj(4 * t + j);
+          if (side != TetMesh::kNoFacet && mesh_.vertex(side >> 2, side & 3) == d) third = j;
+        }
+        if (third >= 0) {
+          if (!flip32(t, i, third, ta, mesh_.adj(4 * t + third) >> 2, d)) return false;
+          continue;
+        }
+        bool positive = true;
+        for (int j = 0; j < 4 && positive && clean; ++j) {
+          if (j == i) continue;
+          const auto w = swap_in(tv, j, d);
+          const int s = orientation(w.data());
+          positive = s > 0;
+          clean = s != 0;
+        }
+        if (clean) {
+          if (positive && !flip23(t, i, ta, d)) return false;
+          continue;
+        }
+      }
 
       int neg = 0, zero = 0, which = -1;
       for (int j = 0; j < 4 && neg + zero < 2; ++j) {
@@ -192,8 +231,6 @@ class Inserter {
         if (s < 0) ++neg, which = j;
         if (s == 0) ++zero, which = j;
       }
-      if (++flips > max_flips)
-        return fail(FailureKind::flip_stuck, "more than " + std::to_string(max_flips) + " flips");
 
       if (neg == 0 && zero == 0) {
         if (!flip23(t, i, ta, d)) return false;
