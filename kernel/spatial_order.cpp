@@ -44,9 +44,9 @@ void hilbert_sort(std::span<const Point3> points, std::span<std::uint32_t> indic
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
-  // Scale per axis into [0, 2^16): 2^48 cells resolve any input we can hold in memory
-  // well enough for locality. Extreme ranges only need to be ordered, not exact.
-  constexpr int kBits = 16;
+  // Scale per axis into [0, 2^10): 2^30 cells, a thousand per point at 10^6 points,
+  // is all the locality the walk needs. Extreme ranges only need to be ordered.
+  constexpr int kBits = 10;
   constexpr double kMax = (1 << kBits) - 1;
   auto axis = [kMax](double v, double l, double h) -> std::uint32_t {
     const double range = h - l;
@@ -57,14 +57,16 @@ void hilbert_sort(std::span<const Point3> points, std::span<std::uint32_t> indic
     }
     return static_cast<std::uint32_t>(std::min(kMax, (v - l) / range * kMax));
   };
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(indices.size());
+  // Key in the high 30 bits, index in the low 32: one integer sort.
+  std::vector<std::uint64_t> keyed(indices.size());
   for (std::size_t k = 0; k < indices.size(); ++k) {
     const Point3& p = points[indices[k]];
-    keyed[k] = {hilbert_index(axis(p.x, lo.x, hi.x), axis(p.y, lo.y, hi.y), axis(p.z, lo.z, hi.z), kBits),
-                indices[k]};
+    const std::uint64_t key =
+        hilbert_index(axis(p.x, lo.x, hi.x), axis(p.y, lo.y, hi.y), axis(p.z, lo.z, hi.z), kBits);
+    keyed[k] = key << 32 | indices[k];
   }
   std::sort(keyed.begin(), keyed.end());
-  for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = keyed[k].second;
+  for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = static_cast<std::uint32_t>(keyed[k]);
 }
 
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed) {
