@@ -37,6 +37,7 @@
 
 #include "kernel/build.hpp"
 #include "kernel/geometry.hpp"
+#include "kernel/id_stack.hpp"
 #include "kernel/retriangulate.hpp"
 #include "kernel/tet_mesh.hpp"
 
@@ -379,7 +380,7 @@ class Inserter {
   Geometry<B> geo_;
   std::uint64_t rng_;
   std::uint32_t last_ = 0;
-  std::vector<std::uint32_t> stack_;
+  IdStack stack_;
   BuildStats stats_;
   FailureKind failure_ = FailureKind::walk_cycle;
   std::string detail_;

@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "kernel/id_stack.hpp"
+
 namespace dtlab {
 
 class TetMesh {
@@ -70,7 +72,7 @@ class TetMesh {
  private:
   std::vector<std::uint32_t> tv_;
   std::vector<std::uint32_t> adj_;
-  std::vector<std::uint32_t> free_;
+  IdStack free_;
 };
 
 }  // namespace dtlab

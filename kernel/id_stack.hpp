@@ -1,0 +1,40 @@
+#pragma once
+// A stack of 32-bit ids whose push stays inline (std::vector::push_back is often
+// not inlined because of its reallocation path): the free list of dead tets and
+// the inserter's flip stack both push and pop tens of times per point.
+#include <cstdint>
+#include <cstring>
+#include <memory>
+
+namespace dtlab {
+
+class IdStack {
+ public:
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  std::uint32_t back() const { return data_[size_ - 1]; }
+  void pop_back() { --size_; }
+  void clear() { size_ = 0; }
+  void push_back(std::uint32_t v) {
+    if (size_ == capacity_) [[unlikely]] grow(size_ + 1);
+    data_[size_++] = v;
+  }
+  void reserve(std::size_t n) {
+    if (n > capacity_) grow(n);
+  }
+  std::size_t capacity() const { return capacity_; }
+
+ private:
+  [[gnu::noinline]] void grow(std::size_t need) {
+    std::size_t cap = capacity_ ? 2 * capacity_ : 64;
+    while (cap < need) cap *= 2;
+    std::unique_ptr<std::uint32_t[]> bigger(new std::uint32_t[cap]);
+    if (size_) std::memcpy(bigger.get(), data_.get(), size_ * sizeof(std::uint32_t));
+    data_ = std::move(bigger);
+    capacity_ = cap;
+  }
+  std::unique_ptr<std::uint32_t[]> data_;
+  std::size_t size_ = 0, capacity_ = 0;
+};
+
+}  // namespace dtlab
