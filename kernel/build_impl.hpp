@@ -41,7 +41,6 @@ inline void compact(const TetMesh& m, std::uint32_t n, Tetrahedralization& out) 
 template <PredicateBackend B>
 BuildResult build_with(std::span<const Point3> input, const B& pred, const BuildOptions& opt) {
   BuildResult res;
-  res.mesh.points.assign(input.begin(), input.end());
   const auto n = static_cast<std::uint32_t>(input.size());
   std::vector<std::uint32_t> order;
   if (opt.order == InsertionOrder::brio) {
@@ -54,10 +53,13 @@ BuildResult build_with(std::span<const Point3> input, const B& pred, const Build
     res.failure = BuildFailure{FailureKind::lower_dimensional, -1, why};
     res.skipped = order;
     std::sort(res.skipped.begin(), res.skipped.end());
+    res.mesh.points.assign(input.begin(), input.end());
     return res;
   };
 
-  std::vector<Point3> pts(input.begin(), input.end());
+  std::vector<Point3> pts;
+  pts.reserve(input.size() + 4);  // room for the infinite vertex or the bigtet corners
+  pts.assign(input.begin(), input.end());
   std::uint32_t inf = Inserter<B>::kNoVertex;
   std::uint32_t first[4];
   if (opt.boundary == Boundary::infinite) {
@@ -134,7 +136,10 @@ BuildResult build_with(std::span<const Point3> input, const B& pred, const Build
   res.stats.insphere_calls = ins.geometry().insphere_calls;
   res.peak_tets = ins.mesh().size();
   std::sort(res.duplicates.begin(), res.duplicates.end());
+  ins.release_adjacency();  // the output needs only the vertices: lower the peak memory
   detail::compact(ins.mesh(), n, res.mesh);
+  pts.resize(n);
+  res.mesh.points = std::move(pts);
   return res;
 }
 

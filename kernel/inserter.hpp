@@ -94,6 +94,7 @@ class Inserter {
   }
 
   const TetMesh& mesh() const { return mesh_; }
+  void release_adjacency() { mesh_.release_adjacency(); }
   Geometry<B>& geometry() { return geo_; }
   BuildStats& stats() { return stats_; }
   FailureKind failure() const { return failure_; }

@@ -65,6 +65,9 @@ class TetMesh {
     tv_.reserve(4 * tets);
     adj_.reserve(4 * tets);
   }
+  // Frees the adjacency arrays (the mesh cannot be changed afterwards).
+  void release_adjacency() { std::vector<std::uint32_t>().swap(adj_); }
+
   std::size_t bytes() const {
     return (tv_.capacity() + adj_.capacity() + free_.capacity()) * sizeof(std::uint32_t);
   }
