@@ -2,6 +2,8 @@
 PRESET ?= release
 BUILD := build/$(PRESET)
 JOBS ?= $(shell nproc)
+# Lets ccache reuse objects between clones of the repository.
+export CCACHE_BASEDIR := $(CURDIR)
 
 .PHONY: all setup configure build demo test test-slow asan bench clean
 
