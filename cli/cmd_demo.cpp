@@ -7,6 +7,10 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
 #include "cli/command.hpp"
 #include "cli/commands.hpp"
 
@@ -23,6 +27,23 @@ struct DemoArgs {
   std::size_t points = 20000;
   std::size_t pieces = 30;
   bool no_oracles = false;
+  bool json = false;
+};
+
+// With --json the steps' own reports go to stderr and stdout carries one JSON summary.
+class StdoutToStderr {
+ public:
+  explicit StdoutToStderr(bool on) : saved_(on ? dup(1) : -1) {
+    if (saved_ >= 0) std::fflush(stdout), dup2(2, 1);
+  }
+  ~StdoutToStderr() {
+    if (saved_ >= 0) std::fflush(stdout), dup2(saved_, 1), close(saved_);
+  }
+  StdoutToStderr(const StdoutToStderr&) = delete;
+  StdoutToStderr& operator=(const StdoutToStderr&) = delete;
+
+ private:
+  int saved_;
 };
 
 // Runs `dtlab args...` in this process, through the same parser as the shell.
@@ -45,7 +66,7 @@ int run_dtlab(std::vector<std::string> args) {
   return rc;
 }
 
-int run_demo(const DemoArgs& a) {
+int run_steps(const DemoArgs& a, nlohmann::json& summary) {
   namespace fs = std::filesystem;
   fs::create_directories(a.out);
   const std::string o = a.out;
@@ -69,6 +90,9 @@ int run_demo(const DemoArgs& a) {
                    "Voronoi fracture of the torus"});
   for (const Step& s : steps) {
     const int rc = run_dtlab(s.args);
+    std::string command = "dtlab";
+    for (const auto& arg : s.args) command += " " + arg;
+    summary["steps"].push_back({{"what", s.what}, {"command", command}, {"exit", rc}});
     if (rc != kOk) {
       std::fprintf(stderr, "dtlab demo: step '%s' failed (exit %d)\n", s.what, rc);
       return rc;
@@ -84,9 +108,23 @@ int run_demo(const DemoArgs& a) {
     std::fprintf(stderr, "dtlab demo: rendering the picture failed (is python3-matplotlib installed?)\n");
     return kBadInput;
   }
+  summary["picture"] = png;
+  summary["tetrahedralization"] = o + "/torus_dt";
   std::printf("\ndtlab demo: done. Look at %s (exploded pieces), open %s/torus_dt.vtu in ParaView.\n",
               png.c_str(), o.c_str());
   return kOk;
+}
+
+int run_demo(const DemoArgs& a) {
+  nlohmann::json summary = {{"out", a.out}, {"steps", nlohmann::json::array()}};
+  int rc;
+  {
+    StdoutToStderr quiet(a.json);
+    rc = run_steps(a, summary);
+  }
+  summary["exit"] = rc;
+  if (a.json) std::printf("%s\n", summary.dump(2).c_str());
+  return rc;
 }
 
 }  // namespace
@@ -98,6 +136,7 @@ void add_demo_command(CLI::App& app, int& rc) {
   sub->add_option("--points", args->points, "points sampled inside the torus")->capture_default_str();
   sub->add_option("--pieces", args->pieces, "fracture pieces")->capture_default_str();
   sub->add_flag("--no-oracles", args->no_oracles, "skip the CGAL and TetGen comparison");
+  sub->add_flag("--json", args->json, "print a JSON summary on stdout (the steps' reports go to stderr)");
   sub->callback([args, &rc] { rc = run_demo(*args); });
 }
 

@@ -1,6 +1,7 @@
 #include "oracle/filtered_exact.hpp"
 
 #include <cmath>
+#include <initializer_list>
 
 #include "predicates/exact.hpp"
 
@@ -13,6 +14,20 @@ constexpr double kInsBound = (16.0 + 224.0 * kEps) * kEps;
 // Outside [kTiny, kHuge] intermediate products may underflow or overflow.
 constexpr double kTiny = 0x1p-900;
 constexpr double kHuge = 0x1p+900;
+
+// Shewchuk's bounds also assume that no product underflows: a product of a huge and
+// a subnormal difference can (the libFuzzer target found mixed 1e294 / 1e-317 inputs
+// with a wrong filtered sign). With every non-zero difference in [2^-140, 2^140],
+// every product of up to five of them lies in [2^-700, 2^700]: no underflow, no
+// overflow. Outside that range the exact code answers.
+constexpr double kDiffLow = 0x1p-140, kDiffHigh = 0x1p+140;
+bool in_safe_range(std::initializer_list<double> diffs) {
+  for (double v : diffs) {
+    const double m = std::fabs(v);
+    if (m != 0 && !(m >= kDiffLow && m <= kDiffHigh)) return false;
+  }
+  return true;
+}
 
 bool trusted(double det, double permanent, double bound) {
   if (!(permanent >= kTiny && permanent <= kHuge)) return false;  // also catches NaN
@@ -33,7 +48,8 @@ int FilteredExact::orient3d(const Point3& a, const Point3& b, const Point3& c,
   const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
                            (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
-  if (trusted(det, permanent, kO3dBound)) return det > 0 ? 1 : -1;
+  if (in_safe_range({adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz}) && trusted(det, permanent, kO3dBound))
+    return det > 0 ? 1 : -1;
   return exact_orient3d(a, b, c, d);
 }
 
@@ -67,7 +83,9 @@ int FilteredExact::insphere(const Point3& a, const Point3& b, const Point3& c, c
                            (da_ * fabs(cez) + ac_ * fabs(dez) + cd_ * fabs(aez)) * blift +
                            (ab_ * fabs(dez) + bd_ * fabs(aez) + da_ * fabs(bez)) * clift +
                            (bc_ * fabs(aez) + ac_ * fabs(bez) + ab_ * fabs(cez)) * dlift;
-  if (trusted(det, permanent, kInsBound)) return det > 0 ? 1 : -1;
+  if (in_safe_range({aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez}) &&
+      trusted(det, permanent, kInsBound))
+    return det > 0 ? 1 : -1;
   return exact_insphere(a, b, c, d, e);
 }
 

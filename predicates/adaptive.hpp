@@ -5,7 +5,8 @@
 //
 // Pipeline of one call (details and error-bound derivations in adaptive.cpp):
 //   semi-static: the naive determinant against a bound from the largest
-//                coordinate differences (cheapest; valid when those lie in a safe range)
+//                coordinate differences (orient3d) or the largest lift (insphere)
+//                (cheapest; valid when those lie in a safe range)
 //   A: the naive determinant against a bound from its permanent
 //   B: the exact determinant of the rounded differences (expansion arithmetic)
 //   C: B plus the first-order effect of the differences' roundoff tails
@@ -56,20 +57,37 @@ inline constexpr double kEps = 0x1p-53;  // unit roundoff of round-to-nearest
 // (m = largest |rounded difference| per axis). 42 eps, rounded up to 43 eps to cover
 // the three roundings of the bound itself, the free last addition and underflow.
 inline constexpr double kO3dSemiStatic = 43 * kEps;
-// Semi-static insphere: monomials x_i y_j z_k w_l^2 (w in x,y,z; 72 of them) see
-// 5 rounded differences, the 2x2 minor (2), the 3x3 minor (product + 2 additions),
-// the lift (square + 2 additions), lift times minor (1), the final additions (1, the
-// last is free): 15 roundings. sum|monomials| <= 24 mx my mz (mx^2 + my^2 + mz^2),
-// hence 360 eps (1 + 8 eps); 361 eps covers computing the bound and underflow.
-inline constexpr double kIspSemiStatic = 361 * kEps;
-// Safe ranges for the largest differences. Overflow: orient3d values stay below
-// 6 * 2^600, insphere below 72 * 2^500. Underflow: an underflowing product or fma errs
-// by at most 2^-1075 in absolute terms, then meets at most 1 (orient3d) or 4
-// (insphere) further factors <= 2^200 resp. 2^100 and a few additions: extra error
-// < 2^-860 resp. 2^-660, while the bound is >= 2^-648 resp. 2^-545 and has a relative
-// slack of 1/43 resp. 1/361 over the rounding error: the extra error fits in it.
+// Safe range of orient3d's largest differences. Overflow: values stay below 6 * 2^600.
+// Underflow: an underflowing product or fma errs by at most 2^-1075 in absolute terms,
+// then meets at most 1 further factor <= 2^200 and a few additions: extra error
+// < 2^-860, while the bound is >= 2^-648 and has a relative slack of 1/43 over the
+// rounding error: the extra error fits in it.
 inline constexpr double kO3dLow = 0x1p-200, kO3dHigh = 0x1p200;
-inline constexpr double kIspLow = 0x1p-100, kIspHigh = 0x1p100;
+// Semi-static insphere, from the largest lift L = max(alift, blift, clift, dlift)
+// (already computed, so the filter costs 3 max, 5 products and 2 comparisons).
+// Roundings along a monomial x_i y_j z_k w_l^2 (72 of them): 5 rounded differences,
+// the 2x2 minor (2), the 3x3 minor (product + 2 additions), the lift (square + 2
+// additions), lift times minor (1), the final additions (2, the last is free: rounding
+// is monotone and 0 is representable, so it cannot change the sign; it costs a factor
+// 1+eps): 15, so |det - D| <= gamma_15 S, gamma_15 = 15 eps / (1 - 15 eps), with S the
+// sum of |monomials| in the exact differences. S = sum_l lift_l perm|M_l|, M_l the 3x3
+// matrix of the other three points' differences; perm|M| <= prod of its row 1-norms
+// <= prod sqrt(3 lift_row), so S <= 4 * 3^1.5 * L^2.5 = 20.785 L^2.5 (exact lifts).
+// The computed L has 5 roundings from the exact lifts (2 in the rounded differences,
+// 3 in the lift): exact L <= L / (1 - eps)^5. Hence |error| <= 311.78 eps (1 + 30 eps)
+// L^2.5, and with the free last addition the test |det| > 320 eps L^2.5 is safe with
+// a slack of 8 eps L^2.5. It is evaluated squared: det^2 > (320 eps)^2 L^5, where
+// (320 eps)^2 = 102400 * 2^-106 is exact, the 4 roundings of the bound and the one of
+// det^2 cost a factor (1 - eps)^2 / sqrt(1 + eps) on 320 eps: inside the slack.
+// Range: only L >= 2^-180 is needed. Then the bound (>= 2^-989) is a normal number, a
+// det^2 that underflows fails the test, and an underflowing product (absolute error
+// <= 2^-1075, then multiplied by at most 6 (3L)^1.5) adds < 2^-560 eps L^2.5: inside
+// the slack. No upper limit: every intermediate of det is below 72 max(1, L)^2.5
+// (1 + tiny), so if any of them overflows, L^5 overflows too and the bound is
+// infinite: the test is false (also for a NaN det). A det^2 overflowing on its own
+// (|det| > 2^512, no intermediate overflowed) correctly passes.
+inline constexpr double kIspSemiStaticSquared = (320 * kEps) * (320 * kEps);
+inline constexpr double kIspLiftLow = 0x1p-180;
 
 inline int counted(AdaptiveStats* s, bool insphere, AdaptiveStage st, int sign) {
   if (s) ++(insphere ? s->insphere : s->orient3d)[static_cast<int>(st)];
@@ -119,14 +137,11 @@ inline int adaptive_insphere(const Point3& a, const Point3& b, const Point3& c, 
   const double clift = cex * cex + cey * cey + cez * cez;
   const double dlift = dex * dex + dey * dey + dez * dez;
   const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-  const double mx = max3(max3(abs(aex), abs(bex), abs(cex)), abs(dex), 0.0);
-  const double my = max3(max3(abs(aey), abs(bey), abs(cey)), abs(dey), 0.0);
-  const double mz = max3(max3(abs(aez), abs(bez), abs(cez)), abs(dez), 0.0);
-  if (std::min(std::min(mx, my), mz) >= kIspLow && std::max(std::max(mx, my), mz) <= kIspHigh) {
-    const double bound = kIspSemiStatic * ((mx * my) * mz) * ((mx * mx + my * my) + mz * mz);
-    if (std::fabs(det) > bound)
-      return counted(stats, true, AdaptiveStage::kSemiStatic, det > 0 ? 1 : -1);
-  }
+  const double lift = std::max(std::max(alift, blift), std::max(clift, dlift));
+  const double lift2 = lift * lift;
+  const double bound = kIspSemiStaticSquared * (lift2 * lift2 * lift);
+  if ((lift >= kIspLiftLow) & (det * det > bound))
+    return counted(stats, true, AdaptiveStage::kSemiStatic, det > 0 ? 1 : -1);
   return adaptive_insphere_stages(a, b, c, d, e, stats);
 }
 
