@@ -16,6 +16,7 @@ struct VoronoiArgs {
   std::string input, out, predicates = "adaptive";
   std::vector<double> box;
   double margin = 0.1;
+  unsigned threads = 0;
   bool obj = true, vtu = false, json = false, check = false;
 };
 
@@ -28,6 +29,7 @@ int run_voronoi(const VoronoiArgs& a) {
   VoronoiOptions o;
   o.margin = a.margin;
   o.predicates.backend = a.predicates;
+  o.threads = a.threads;
   if (!a.box.empty()) {
     if (a.box.size() != 6 || !(a.box[0] < a.box[3] && a.box[1] < a.box[4] && a.box[2] < a.box[5])) {
       std::fprintf(stderr, "dtlab voronoi: --box needs xmin ymin zmin xmax ymax zmax with min < max\n");
@@ -38,6 +40,8 @@ int run_voronoi(const VoronoiArgs& a) {
   const VoronoiDiagram vd = compute_voronoi(in.points, o);
   nlohmann::json m = cells_manifest(vd);
   m["input"] = a.input;
+  m["timing"] = {{"seconds_delaunay", vd.seconds_dt}, {"seconds_cells", vd.seconds_cells},
+                 {"clipped_cells", vd.clipped}, {"box_clipped_cells", vd.box_clipped}};
   std::size_t defects = 0;
   if (a.check) {
     const double tol = 1e-9 * vd.box.diagonal();
@@ -82,6 +86,7 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->capture_default_str();
   sub->add_option("--predicates", args->predicates, "Delaunay predicates: naive|epsilon|adaptive|exact")
       ->capture_default_str();
+  sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
   sub->add_flag("!--no-obj", args->obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");

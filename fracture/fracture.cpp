@@ -15,30 +15,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-template <class F>
-void parallel_for(std::size_t n, unsigned threads, F&& f) {
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  auto work = [&] {
-    for (std::size_t i; (i = next++) < n;) {
-      try {
-        f(i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(error_mutex);
-        if (!error) error = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-}
-
 struct Level {
   std::vector<Piece> pieces;
   std::size_t booleans = 0, skipped = 0;
@@ -73,10 +49,11 @@ Level fracture_once(const MeshClipper& clipper, const FractureOptions& o, std::u
   t0 = Clock::now();
   Level level;
   std::vector<Piece> all(sites.size());
-  parallel_for(sites.size(), o.threads, [&](std::size_t i) {
-    all[i].geometry = clipper.intersect(vd.cells[i]);
+  std::vector<PieceMesh> geometry = clipper.intersect_all(vd.cells, o.threads);
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    all[i].geometry = std::move(geometry[i]);
     all[i].site = sites[i];
-  });
+  }
   timing.seconds_boolean += since(t0);
   std::vector<std::int64_t> renum(sites.size(), -1);
   for (std::size_t i = 0; i < all.size(); ++i) {

@@ -1,10 +1,14 @@
-// Cells extracted per second: dtlab (DT neighbours + clipping) against voro++ on the
-// same uniform random points in a box, single-threaded. Plain timed run:
-//   dtlab_voronoi_bench [N=100000] [SEED=1]
+// Cells extracted per second: dtlab's compute_voronoi (DT, then dual cells, clipping
+// only where needed) with 1 and T threads, the all-clipping engine alone, and voro++,
+// on the same uniform random points in the unit box. Plain timed run:
+//   dtlab_voronoi_bench [N=100000] [SEED=1] [THREADS=0] [only]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <random>
+#include <string>
+#include <thread>
 
 #include <voro++/voro++.hh>
 
@@ -22,8 +26,28 @@ int main(int argc, char** argv) {
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Point3> pts(n);
   for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
+  const unsigned threads = argc > 3 ? static_cast<unsigned>(std::atoi(argv[3])) : 0;
   const vor::Box box{{0, 0, 0}, {1, 1, 1}};
 
+  auto cpu = [] { return double(std::clock()) / CLOCKS_PER_SEC; };
+  for (unsigned th : {1u, threads}) {
+    VoronoiOptions vo;
+    vo.box = box;
+    vo.predicates = PredicateSpec{"adaptive", 0, false, true};
+    vo.threads = th;
+    const double c0 = cpu();
+    auto w0 = Clock::now();
+    VoronoiDiagram vd = compute_voronoi(pts, vo);
+    const double wall = since(w0), cpu_s = cpu() - c0;
+    double vs = 0;
+    for (const auto& c : vd.cells) vs += c.volume;
+    std::printf("compute_voronoi threads %u: total %.3f s wall %.3f s CPU; DT %.3f s; cells %.3f s wall %.3f s CPU = %.0f cells/s wall %.0f cells/CPU-s"
+                " (clipped %zu, box-clipped %zu); volume sum - 1 = %.2g\n",
+                th ? th : std::thread::hardware_concurrency(), wall, cpu_s, vd.seconds_dt, vd.seconds_cells,
+                vd.cpu_seconds_cells, n / vd.seconds_cells, n / vd.cpu_seconds_cells, vd.clipped, vd.box_clipped, vs - 1);
+  }
+
+  if (argc > 4 && std::string(argv[4]) == "only") return 0;  // compute_voronoi alone (profiling)
   auto t0 = Clock::now();
   BuildResult dt = build_delaunay(pts, PredicateSpec{"adaptive", 0, false, true});
   const double t_dt = since(t0);
@@ -58,7 +82,7 @@ int main(int argc, char** argv) {
               double(adj.adj.size()) / n);
   std::printf("dtlab DT build        %8.3f s\n", t_dt);
   std::printf("dtlab neighbour lists %8.3f s\n", t_adj);
-  std::printf("dtlab cells           %8.3f s  %9.0f cells/s (cells only)  %9.0f cells/s (incl. DT)\n",
+  std::printf("clipping engine only  %8.3f s  %9.0f cells/s (cells only)  %9.0f cells/s (incl. DT)\n",
               t_cells, n / t_cells, n / (t_cells + t_adj + t_dt));
   std::printf("voro++ cells          %8.3f s  %9.0f cells/s\n", t_voro, vcells / t_voro);
   std::printf("volume sums: dtlab %.15g voro++ %.15g (box 1)\n", sum, vsum);

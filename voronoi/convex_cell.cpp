@@ -22,6 +22,16 @@ void ConvexCell::reset(const Box& b) {
   }
 }
 
+void ConvexCell::assign(std::span<const Point3> vertices, std::span<const std::uint32_t> face_offsets,
+                        std::span<const std::uint32_t> face_vertices, std::span<const std::int32_t> tags,
+                        const Point3& origin) {
+  v_.clear();
+  for (const auto& p : vertices) v_.push_back(vsub(p, origin));
+  fo_.assign(face_offsets.begin(), face_offsets.end());
+  fv_.assign(face_vertices.begin(), face_vertices.end());
+  face_tag_.assign(tags.begin(), tags.end());
+}
+
 std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out) {
   const std::uint64_t key = (std::uint64_t(in) << 32) | out;
   for (std::size_t i = 0; i < cut_key_.size(); ++i)

@@ -23,6 +23,11 @@ class ConvexCell {
   // The box as a cell; face tags -1..-6 for the walls x-lo, x-hi, y-lo, y-hi, z-lo, z-hi
   // (voro++'s numbering, negative so they never clash with a neighbour id).
   void reset(const Box& box);
+  // A given convex polytope (faces counter-clockwise from outside, offsets as in
+  // VoronoiCell), every vertex moved by -origin; to be clipped further.
+  void assign(std::span<const Point3> vertices, std::span<const std::uint32_t> face_offsets,
+              std::span<const std::uint32_t> face_vertices, std::span<const std::int32_t> tags,
+              const Point3& origin);
 
   // Keeps the part with n.x <= c; the new face gets `tag`. Returns true if it cut.
   bool clip(const Point3& n, double c, std::int32_t tag, double tol);

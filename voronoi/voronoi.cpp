@@ -1,8 +1,16 @@
 #include "voronoi/voronoi.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <ctime>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
+
+#include "voronoi/circumcenter.hpp"
+#include "voronoi/dual_cell.hpp"
+#include "voronoi/parallel_for.hpp"
 
 namespace dtlab {
 
@@ -101,6 +109,14 @@ std::vector<std::int64_t> find_duplicates(std::span<const Point3> p) {
   return dup;
 }
 
+void sort_by_distance(std::span<const Point3> p, std::uint32_t v, std::vector<std::uint32_t>& row) {
+  std::sort(row.begin(), row.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const Point3 da = vsub(p[a], p[v]), db = vsub(p[b], p[v]);
+    const double la = vdot(da, da), lb = vdot(db, db);
+    return la < lb || (la == lb && a < b);
+  });
+}
+
 void store(const ConvexCell& c, VoronoiCell& out) {
   out.vertices = c.vertices();
   out.face_offsets.assign(1, 0);
@@ -118,6 +134,49 @@ void store(const ConvexCell& c, VoronoiCell& out) {
 
 }  // namespace
 
+namespace {
+
+// Volume and centroid of a polytope, cones from `o` (near the cell: keeps the
+// magnitudes local).
+void measure(VoronoiCell& c, const Point3& o) {
+  double vol = 0;
+  Point3 m{0, 0, 0};
+  for (std::size_t f = 0; f + 1 < c.face_offsets.size(); ++f) {
+    const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
+    const Point3 a = vsub(c.vertices[c.face_vertices[b]], o);
+    for (auto k = b + 1; k + 1 < e; ++k) {
+      const Point3 p = vsub(c.vertices[c.face_vertices[k]], o), q = vsub(c.vertices[c.face_vertices[k + 1]], o);
+      const double w = det3(a, p, q);
+      vol += w;
+      m = vadd(m, vscale(w, vadd(vadd(a, p), q)));
+    }
+  }
+  c.volume = vol / 6;
+  c.centroid = vol != 0 ? vadd(o, vscale(1.0 / (4 * vol), m)) : o;
+}
+
+// Tets around each vertex, compressed rows.
+void vertex_stars(std::size_t n, std::span<const Tet> tets, std::vector<std::uint32_t>& off,
+                  std::vector<std::uint32_t>& star) {
+  off.assign(n + 1, 0);
+  for (const auto& t : tets)
+    for (auto v : t) ++off[v + 1];
+  for (std::size_t i = 0; i < n; ++i) off[i + 1] += off[i];
+  star.resize(off[n]);
+  std::vector<std::uint32_t> fill(off.begin(), off.end() - 1);
+  for (std::uint32_t t = 0; t < tets.size(); ++t)
+    for (auto v : tets[t]) star[fill[v]++] = t;
+}
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// A circumcentre whose relative error amplification exceeds this is not trusted for a
+// dual cell (error ~ condition * 1e-16 of the tet size).
+constexpr double kMaxCondition = 1e4;
+
+}  // namespace
+
 VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptions& o) {
   if (sites.empty()) throw std::invalid_argument("no sites");
   VoronoiDiagram vd;
@@ -125,41 +184,126 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   vd.box = o.box ? *o.box : default_box(sites, o.margin);
   vd.cells.resize(sites.size());
   const auto dup = find_duplicates(sites);
+  const unsigned threads = thread_count(o.threads);
+  const double band = o.tolerance * vd.box.diagonal();
 
-  Adjacency adj;
+  auto t0 = Clock::now();
   BuildResult r = build_delaunay(sites, o.predicates);
   vd.tets = r.mesh.tets.size();
   if (r.failure && r.failure->kind != FailureKind::lower_dimensional)
     throw std::runtime_error("Delaunay build failed: " + r.failure->detail);
+  vd.seconds_dt = since(t0);
+  t0 = Clock::now();
+  const std::clock_t c0 = std::clock();
+
   if (r.failure) {
     // Fewer than four distinct or coplanar sites: every other site is a candidate.
     if (sites.size() > 4096) throw std::runtime_error("coplanar input too large for all-pairs cells");
-    adj.off.assign(sites.size() + 1, 0);
+    ConvexCell cell;
+    std::vector<std::uint32_t> row;
     for (std::uint32_t v = 0; v < sites.size(); ++v) {
-      std::vector<std::pair<double, std::uint32_t>> row;
+      if (dup[v] >= 0) {
+        vd.cells[v].duplicate_of = dup[v];
+        continue;
+      }
+      row.clear();
       for (std::uint32_t w = 0; w < sites.size(); ++w)
-        if (w != v && dup[w] < 0) {
-          const Point3 d = vsub(sites[w], sites[v]);
-          row.push_back({vdot(d, d), w});
-        }
-      std::sort(row.begin(), row.end());
-      for (auto& x : row) adj.adj.push_back(x.second);
-      adj.off[v + 1] = static_cast<std::uint32_t>(adj.adj.size());
+        if (w != v && dup[w] < 0) row.push_back(w);
+      sort_by_distance(sites, v, row);
+      compute_cell(cell, sites, v, row, vd.box, o.tolerance, o.shrink);
+      store(cell, vd.cells[v]);
     }
-  } else {
-    adj = delaunay_neighbors(r.mesh);
+    vd.clipped = sites.size();
+    vd.seconds_cells = since(t0);
+  vd.cpu_seconds_cells = double(std::clock() - c0) / CLOCKS_PER_SEC;
+    return vd;
   }
 
-  ConvexCell cell;
-  for (std::uint32_t i = 0; i < sites.size(); ++i) {
-    if (dup[i] >= 0) {
-      vd.cells[i].duplicate_of = dup[i];
-      continue;
+  const auto& tets = r.mesh.tets;
+  std::vector<std::uint32_t> star_off, star;
+  vertex_stars(sites.size(), tets, star_off, star);
+  std::vector<Point3> cc(tets.size());
+  std::vector<char> bad(tets.size());
+  parallel_chunks(tets.size(), threads, 4096, [&](std::size_t b, std::size_t e, unsigned) {
+    for (std::size_t t = b; t < e; ++t) {
+      const Tet& q = tets[t];
+      double cond = 0;
+      cc[t] = circumcenter(sites[q[0]], sites[q[1]], sites[q[2]], sites[q[3]], &cond);
+      bad[t] = !(cond <= kMaxCondition);
     }
-    std::span<const std::uint32_t> nb(adj.adj.data() + adj.off[i], adj.off[i + 1] - adj.off[i]);
-    compute_cell(cell, sites, i, nb, vd.box, o.tolerance, o.shrink);
-    store(cell, vd.cells[i]);
-  }
+  });
+
+  // Cells in the order of their first tet: the tets come out of the DT in spatial
+  // (insertion) order, so neighbouring cells then share cached tets and centres.
+  std::vector<std::uint32_t> order(sites.size());
+  std::iota(order.begin(), order.end(), 0u);
+  auto first_tet = [&](std::uint32_t v) {
+    return star_off[v] < star_off[v + 1] ? star[star_off[v]] : UINT32_MAX;
+  };
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return first_tet(a) < first_tet(b); });
+
+  std::atomic<std::size_t> clipped{0}, box_clipped{0};
+  const bool dual_ok = o.shrink == 0;
+  struct Scratch {
+    explicit Scratch(std::size_t n) : builder(n) {}
+    DualCellBuilder builder;
+    ConvexCell cell;
+    std::vector<std::uint32_t> row;
+  };
+  std::vector<std::unique_ptr<Scratch>> scratch(threads);
+  parallel_chunks(sites.size(), threads, 256, [&](std::size_t b, std::size_t e, unsigned w) {
+    if (!scratch[w]) scratch[w] = std::make_unique<Scratch>(sites.size());
+    auto& [builder, cell, row] = *scratch[w];
+    std::size_t n_clip = 0, n_box = 0;
+    for (std::size_t k = b; k < e; ++k) {
+      const std::uint32_t i = order[k];
+      VoronoiCell& out = vd.cells[i];
+      if (dup[i] >= 0) {
+        out.duplicate_of = dup[i];
+        continue;
+      }
+      const std::span<const std::uint32_t> st(star.data() + star_off[i], star_off[i + 1] - star_off[i]);
+      const Point3 s = sites[i];
+      if (dual_ok && builder.build(i, st, tets, cc, bad, band, 1e4 * band, out)) {
+        // Walls the cell crosses (strictly, beyond the band).
+        int walls = 0;
+        for (const auto& p : out.vertices) {
+          walls |= (p.x < vd.box.lo.x - band) << 0 | (p.x > vd.box.hi.x + band) << 1;
+          walls |= (p.y < vd.box.lo.y - band) << 2 | (p.y > vd.box.hi.y + band) << 3;
+          walls |= (p.z < vd.box.lo.z - band) << 4 | (p.z > vd.box.hi.z + band) << 5;
+        }
+        if (!walls) {
+          measure(out, s);
+          continue;
+        }
+        ++n_box;
+        cell.assign(out.vertices, out.face_offsets, out.face_vertices, out.face_neighbor, s);
+        const Point3 lo = vsub(vd.box.lo, s), hi = vsub(vd.box.hi, s);
+        const Point3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        const double los[3] = {lo.x, lo.y, lo.z}, his[3] = {hi.x, hi.y, hi.z};
+        for (int k = 0; k < 3 && !cell.empty(); ++k) {
+          if (walls >> (2 * k) & 1) cell.clip(vscale(-1, axis[k]), -los[k], -1 - 2 * k, o.tolerance * vd.box.diagonal());
+          if (walls >> (2 * k + 1) & 1) cell.clip(axis[k], his[k], -2 - 2 * k, o.tolerance * vd.box.diagonal());
+        }
+        cell.translate(s);
+        store(cell, out);
+        continue;
+      }
+      ++n_clip;
+      if (!dual_ok) builder.gather(i, st, tets, bad);
+      auto nb = builder.neighbors();
+      row.assign(nb.begin(), nb.end());
+      sort_by_distance(sites, i, row);
+      compute_cell(cell, sites, i, row, vd.box, o.tolerance, o.shrink);
+      store(cell, out);
+    }
+    clipped += n_clip;
+    box_clipped += n_box;
+  });
+  vd.clipped = clipped;
+  vd.box_clipped = box_clipped;
+  vd.seconds_cells = since(t0);
+  vd.cpu_seconds_cells = double(std::clock() - c0) / CLOCKS_PER_SEC;
   return vd;
 }
 

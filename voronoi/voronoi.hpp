@@ -1,14 +1,14 @@
 #pragma once
 // The Voronoi diagram of a point set, every cell clipped to a box.
 //
-// Method: each cell is the box clipped by the bisector half-spaces of the site's
-// Delaunay neighbours (the vertices sharing a Delaunay edge with it), nearest first.
-// This is the dual of the DT made concrete: every Voronoi face is a bisector of a
-// Delaunay edge and every Voronoi vertex a circumcentre, but building the cell by
-// clipping handles unbounded cells (hull sites) and the box in the same step, and
-// cospherical inputs (coincident circumcentres) collapse inside one tolerance band
-// instead of needing a merge pass. Unlike voro++, which must search space for the
-// planes that might cut, the DT gives exactly the planes that matter.
+// Method: an interior site's cell is read off the DT directly (voronoi/dual_cell.hpp:
+// circumcentres computed once per tet, faces from the rings of tets around each
+// Delaunay edge, coincident centres of cospherical tets merged), then clipped by the
+// box walls it crosses. Hull sites (unbounded cells), doubtful duals (badly
+// conditioned centres, merges that do not give a polytope, tiny edges) and `shrink`
+// use the general engine instead: the box clipped by the bisector half-spaces of the
+// site's Delaunay neighbours, nearest first (voronoi/convex_cell.hpp), where
+// cospherical planes collapse inside one tolerance band. Cells run in parallel.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -26,6 +26,7 @@ struct VoronoiOptions {
   double tolerance = 1e-12;         // relative to the box diagonal
   double shrink = 0;                // move each bisector this far towards its site
   PredicateSpec predicates{"adaptive", 1e-12, false, true};
+  unsigned threads = 0;             // cells in parallel; 0: all hardware threads
 };
 
 struct VoronoiCell {
@@ -47,6 +48,10 @@ struct VoronoiDiagram {
   std::vector<Point3> sites;
   std::vector<VoronoiCell> cells;
   std::size_t tets = 0;
+  std::size_t clipped = 0;          // cells built by clipping (hull sites, doubtful duals, shrink)
+  std::size_t box_clipped = 0;      // dual cells then clipped by the box walls
+  double seconds_dt = 0, seconds_cells = 0;  // wall time
+  double cpu_seconds_cells = 0;              // process CPU time of the cell phase (all threads)
 };
 
 // Delaunay neighbours per vertex in compressed rows: neighbours of v are

@@ -157,3 +157,46 @@ TEST_CASE("open or non-manifold input is refused with a reason") {
   TriangleMesh none;
   CHECK_THROWS(fracture_mesh(none, o));
 }
+
+TEST_CASE("box-split booleans give the same pieces as whole-mesh booleans") {
+  // 70 cells: the cells are split into boxes (more than 16 per leaf) before the
+  // per-cell corefinements; each piece must match the corefinement with the whole mesh.
+  BumpyTorusParams bp;
+  bp.nu = 48;
+  bp.nv = 24;
+  const TriangleMesh torus = make_bumpy_torus(bp);
+  FractureOptions o;
+  o.pieces = 70;
+  o.seed = 4;
+  o.threads = 2;
+  auto r = fracture_mesh(torus, o);
+  check_fracture(r, 40);
+  MeshClipper clipper(torus);
+  MeshSampler sampler(clipper.mesh());
+  SampleRequest req;
+  req.count = 70;
+  req.seed = 4;
+  const auto sites = sampler.sample(req).points;
+  VoronoiOptions vo;
+  Box3 mb = bounding_box(clipper.mesh());
+  vo.box = vor::Box{mb.lo - 0.05 * mb.extent(), mb.hi + 0.05 * mb.extent()};
+  const VoronoiDiagram vd = compute_voronoi(sites, vo);
+  const auto split = clipper.intersect_all(vd.cells, 2);
+  REQUIRE(split.size() == vd.cells.size());
+  double total = 0;
+  for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+    INFO("cell " << i);
+    Piece a, b;
+    a.geometry = split[i];
+    b.geometry = clipper.intersect(vd.cells[i]);
+    CHECK(a.geometry.mesh.triangles.empty() == b.geometry.mesh.triangles.empty());
+    if (b.geometry.mesh.triangles.empty()) continue;
+    CHECK(closed_manifold(a.geometry.mesh));
+    measure_piece(a);
+    measure_piece(b);
+    CHECK(std::abs(a.volume - b.volume) <= 1e-12 * clipper.volume());
+    CHECK(std::abs(a.interior_area - b.interior_area) <= 1e-9 * b.interior_area);
+    total += a.volume;
+  }
+  CHECK(std::abs(total - clipper.volume()) <= 1e-9 * clipper.volume());
+}

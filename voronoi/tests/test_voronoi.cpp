@@ -177,3 +177,35 @@ TEST_CASE("manifest totals and OBJ/VTU writers") {
   std::fclose(f);
   CHECK(groups == 40);
 }
+
+TEST_CASE("dual cells agree with the clipping engine; shrink and threads") {
+  auto pts = uniform(400, 21);
+  VoronoiOptions o;
+  o.predicates = kExact;
+  o.threads = 2;
+  auto vd = compute_voronoi(pts, o);
+  check_diagram(vd);
+  // Most cells come from the DT directly; hull sites are clipped.
+  CHECK(vd.clipped < pts.size() / 2);
+  CHECK(vd.clipped > 0);
+  auto dt = build_delaunay(pts, kExact);
+  REQUIRE_FALSE(dt.failure);
+  const Adjacency adj = delaunay_neighbors(dt.mesh);
+  ConvexCell cell;
+  for (std::uint32_t i = 0; i < pts.size(); ++i) {
+    compute_cell(cell, pts, i, {adj.adj.data() + adj.off[i], adj.off[i + 1] - adj.off[i]}, vd.box, 1e-12);
+    INFO("cell " << i);
+    CHECK(std::abs(cell.volume() - vd.cells[i].volume) <= 1e-12 * vd.box.volume());
+    CHECK(cell.face_count() == vd.cells[i].face_count());
+  }
+  // Shrunk cells (gaps between neighbours) lie inside the plain ones.
+  o.shrink = 0.01;
+  auto shrunk = compute_voronoi(pts, o);
+  CHECK(shrunk.clipped == pts.size());
+  double sum = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    CHECK(shrunk.cells[i].volume < vd.cells[i].volume);
+    sum += shrunk.cells[i].volume;
+  }
+  CHECK(sum < 0.99 * vd.box.volume());
+}

@@ -1,0 +1,57 @@
+#pragma once
+// A Voronoi cell built directly from the Delaunay star of its site, without clipping.
+//
+// The tets around site v, each with v removed, form v's link: a closed triangulated
+// sphere when v is interior (an open one on the hull). Link triangle t is dual to the
+// Voronoi vertex cc[t] (its tet's circumcentre, computed once per tet and shared by
+// the four cells around it); link vertex w is dual to the cell face on the bisector of
+// v and w, whose corners are the circumcentres of the link triangles around w, in ring
+// order. Cospherical tets (lattices) share one circumcentre: neighbouring link
+// triangles whose centres lie within `band` are merged (union-find), rings are
+// collapsed, a face left with one distinct corner is dropped (a Delaunay edge inside a
+// cospherical cluster: no Voronoi face). Anything doubtful (an open link, a badly
+// conditioned centre, a merge that does not leave a polytope with V - E + F = 2, an
+// edge shorter than `min_edge`) returns false, and the caller clips the cell instead.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "kernel/tetrahedralization.hpp"
+#include "voronoi/voronoi.hpp"
+
+namespace dtlab::vor {
+
+class DualCellBuilder {
+ public:
+  explicit DualCellBuilder(std::size_t sites) : local_(sites, UINT32_MAX) {}
+
+  // `star`: the tets containing v; `cc`: circumcentre per tet; `bad[t]`: centre too
+  // badly conditioned to trust. On success `out` holds the unclipped cell (vertices,
+  // faces counter-clockwise from outside, face_neighbor = site ids); volume and
+  // centroid are left to the caller.
+  bool build(std::uint32_t v, std::span<const std::uint32_t> star, std::span<const Tet> tets,
+             std::span<const Point3> cc, std::span<const char> bad, double band, double min_edge,
+             VoronoiCell& out);
+
+  // Only collects the link of v (for `neighbors`); false if a centre is bad.
+  bool gather(std::uint32_t v, std::span<const std::uint32_t> star, std::span<const Tet> tets,
+              std::span<const char> bad);
+
+  // Global ids of the link vertices of the last build or gather (v's Delaunay neighbours).
+  std::span<const std::uint32_t> neighbors() const { return global_; }
+
+ private:
+  std::uint32_t find(std::uint32_t t);
+
+  std::vector<std::uint32_t> local_;   // global vertex id -> local id, UINT32_MAX when unused
+  std::vector<std::uint32_t> global_;  // local -> global
+  std::vector<std::uint32_t> tri_;     // 3 local ids per link triangle
+  std::vector<std::uint32_t> tet_;     // link triangle -> tet
+  std::vector<Point3> lcc_;            // link triangle -> circumcentre
+  std::vector<std::uint32_t> coff_, btri_, bnext_, bprev_;  // corners bucketed by link vertex
+  std::vector<std::uint32_t> ring_, roff_;    // ring of link triangles per link vertex
+  std::vector<std::uint32_t> parent_, vid_;
+  std::vector<std::uint64_t> edges_;
+};
+
+}  // namespace dtlab::vor
