@@ -7,7 +7,4 @@ namespace dtlab::cli {
 
 enum ExitCode : int { kOk = 0, kDefect = 1, kBadInput = 2 };
 
-void add_pending_command(CLI::App& app, int& rc, const char* name, const char* what,
-                         const char* issue);
-
 }  // namespace dtlab::cli

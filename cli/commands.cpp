@@ -7,7 +7,7 @@ void register_commands(CLI::App& app, int& rc) {
   add_check_command(app, rc);
   add_oracle_command(app, rc);
   add_fuzz_command(app, rc);
-  add_pending_command(app, rc, "experiment", "reproducible experiments with reports", "#7 [6/8]");
+  add_experiment_command(app, rc);
   add_sample_command(app, rc);
   add_voronoi_command(app, rc);
   add_fracture_command(app, rc);

@@ -1,0 +1,87 @@
+// dtlab experiment: reproducible experiments that write a report folder.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <unistd.h>
+
+#include "cli/command.hpp"
+#include "experiments/benchmark.hpp"
+#include "experiments/thesis_failures.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+
+std::string command_line(const std::string& sub, const std::vector<std::string>& args) {
+  std::string s = "dtlab experiment " + sub;
+  for (const auto& a : args) s += " " + a;
+  return s;
+}
+
+int finish(int code, const std::filesystem::path& out) {
+  std::printf("report: %s\n", (out / "report.md").string().c_str());
+  return code;
+}
+
+}  // namespace
+
+void add_experiment_command(CLI::App& app, int& rc) {
+  CLI::App* sub = app.add_subcommand("experiment", "reproducible experiments with reports (report.md/.html, figures, data)");
+  sub->require_subcommand(1);
+
+  auto thesis = std::make_shared<experiments::ThesisFailuresOptions>();
+  thesis->out = "reports/thesis-failures";
+  auto no_figures = std::make_shared<bool>(false);
+  CLI::App* t = sub->add_subcommand("thesis-failures", "reproduce and measure the thesis's robustness failures (chapter 5)");
+  t->add_option("--out", thesis->out, "report folder")->capture_default_str();
+  t->add_flag("--quick", thesis->quick, "fewer sizes and cases (seconds instead of minutes)");
+  t->add_option("--seed", thesis->seed, "experiment seed")->capture_default_str();
+  t->add_flag("--no-figures", *no_figures, "skip the matplotlib figures");
+  t->callback([thesis, no_figures, t, &rc] {
+    thesis->figures = !*no_figures;
+    thesis->progress = isatty(2);
+    std::vector<std::string> args = {"--out", thesis->out.string(), "--seed", std::to_string(thesis->seed)};
+    if (thesis->quick) args.push_back("--quick");
+    if (*no_figures) args.push_back("--no-figures");
+    thesis->command_line = command_line(t->get_name(), args);
+    try {
+      const auto r = experiments::run_thesis_failures(*thesis);
+      rc = finish(r.exit_code, thesis->out);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "dtlab experiment: %s\n", e.what());
+      rc = kBadInput;
+    }
+  });
+
+  auto bench = std::make_shared<experiments::BenchmarkOptions>();
+  bench->out = "reports/benchmark";
+  auto bench_no_figures = std::make_shared<bool>(false);
+  CLI::App* b = sub->add_subcommand("benchmark", "time and memory of dtlab vs CGAL vs TetGen, predicate costs");
+  b->add_option("--out", bench->out, "report folder")->capture_default_str();
+  b->add_flag("--large", bench->large, "also n = 10^7 uniform and 10^6 for the other distributions");
+  b->add_option("--runs", bench->runs, "runs per tool and size for n <= 10^5 (larger n: 1 run)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  b->add_option("--seed", bench->seed, "seed of the generated points")->capture_default_str();
+  b->add_option("--max-n", bench->max_n, "largest n (default 10^6, 10^7 with --large)");
+  b->add_flag("--no-figures", *bench_no_figures, "skip the matplotlib figures");
+  b->callback([bench, bench_no_figures, b, &rc] {
+    bench->figures = !*bench_no_figures;
+    bench->progress = isatty(2);
+    std::vector<std::string> args = {"--out", bench->out.string(), "--runs", std::to_string(bench->runs), "--seed",
+                                     std::to_string(bench->seed)};
+    if (bench->large) args.push_back("--large");
+    if (bench->max_n) args.insert(args.end(), {"--max-n", std::to_string(bench->max_n)});
+    if (*bench_no_figures) args.push_back("--no-figures");
+    bench->command_line = command_line(b->get_name(), args);
+    try {
+      const auto r = experiments::run_benchmark(*bench);
+      rc = finish(r.exit_code, bench->out);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "dtlab experiment: %s\n", e.what());
+      rc = kBadInput;
+    }
+  });
+}
+
+}  // namespace dtlab::cli
