@@ -36,51 +36,84 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, i
   return key;
 }
 
+namespace {
+
+// Hilbert keys on a 2^10 grid over a bounding box: 2^30 cells, a thousand per point
+// at 10^6 points, is all the locality the walk needs. Extreme ranges (overflowing
+// h - l) only need to be ordered, not exact.
+class HilbertGrid {
+ public:
+  static constexpr int kBits = 10;
+
+  template <class Points>
+  explicit HilbertGrid(const Points& pts) {
+    bool first = true;
+    for (const Point3& p : pts) {
+      if (first) lo_ = hi_ = p, first = false;
+      lo_ = {std::min(lo_.x, p.x), std::min(lo_.y, p.y), std::min(lo_.z, p.z)};
+      hi_ = {std::max(hi_.x, p.x), std::max(hi_.y, p.y), std::max(hi_.z, p.z)};
+    }
+    set_axis(0, lo_.x, hi_.x);
+    set_axis(1, lo_.y, hi_.y);
+    set_axis(2, lo_.z, hi_.z);
+  }
+
+  std::uint64_t key(const Point3& p) const {
+    return hilbert_index(cell(0, p.x), cell(1, p.y), cell(2, p.z), kBits);
+  }
+
+ private:
+  static constexpr double kMax = (1 << kBits) - 1;
+  // cell = (v * scale_ - offset_) clamped, with the halving trick when h - l overflows.
+  void set_axis(int a, double l, double h) {
+    half_[a] = !std::isfinite(h - l);
+    const double range = half_[a] ? h / 2 - l / 2 : h - l;
+    scale_[a] = range > 0 ? kMax / range : 0;
+    low_[a] = half_[a] ? l / 2 : l;
+  }
+  std::uint32_t cell(int a, double v) const {
+    const double u = ((half_[a] ? v / 2 : v) - low_[a]) * scale_[a];
+    return static_cast<std::uint32_t>(std::clamp(u, 0.0, kMax));
+  }
+
+  Point3 lo_{0, 0, 0}, hi_{0, 0, 0};
+  double scale_[3] = {}, low_[3] = {};
+  bool half_[3] = {};
+};
+
+// Key in the high 30 bits, index in the low 32: one integer sort.
+std::uint64_t keyed(std::uint64_t key, std::uint32_t index) { return key << 32 | index; }
+
+}  // namespace
+
 void hilbert_sort(std::span<const Point3> points, std::span<std::uint32_t> indices) {
   if (indices.size() < 2) return;
-  Point3 lo = points[indices[0]], hi = lo;
-  for (std::uint32_t i : indices) {
-    const Point3& p = points[i];
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  // Scale per axis into [0, 2^10): 2^30 cells, a thousand per point at 10^6 points,
-  // is all the locality the walk needs. Extreme ranges only need to be ordered.
-  constexpr int kBits = 10;
-  constexpr double kMax = (1 << kBits) - 1;
-  auto axis = [kMax](double v, double l, double h) -> std::uint32_t {
-    const double range = h - l;
-    if (!(range > 0) || !std::isfinite(range)) {
-      const double r2 = h / 2 - l / 2;
-      if (!(r2 > 0)) return 0;
-      return static_cast<std::uint32_t>(std::min(kMax, (v / 2 - l / 2) / r2 * kMax));
-    }
-    return static_cast<std::uint32_t>(std::min(kMax, (v - l) / range * kMax));
-  };
-  // Key in the high 30 bits, index in the low 32: one integer sort.
-  std::vector<std::uint64_t> keyed(indices.size());
-  for (std::size_t k = 0; k < indices.size(); ++k) {
-    const Point3& p = points[indices[k]];
-    const std::uint64_t key =
-        hilbert_index(axis(p.x, lo.x, hi.x), axis(p.y, lo.y, hi.y), axis(p.z, lo.z, hi.z), kBits);
-    keyed[k] = key << 32 | indices[k];
-  }
-  std::sort(keyed.begin(), keyed.end());
-  for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = static_cast<std::uint32_t>(keyed[k]);
+  std::vector<Point3> subset(indices.size());
+  for (std::size_t k = 0; k < indices.size(); ++k) subset[k] = points[indices[k]];
+  const HilbertGrid grid(subset);
+  std::vector<std::uint64_t> keys(indices.size());
+  for (std::size_t k = 0; k < indices.size(); ++k) keys[k] = keyed(grid.key(subset[k]), indices[k]);
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = static_cast<std::uint32_t>(keys[k]);
 }
 
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed) {
-  std::vector<std::uint32_t> order(points.size());
-  std::iota(order.begin(), order.end(), 0u);
+  // Keys are computed in input order (sequential reads of the points), then shuffled
+  // together with their indices: no random access into the point array.
+  const HilbertGrid grid(points);
+  std::vector<std::uint64_t> keys(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) keys[i] = keyed(grid.key(points[i]), static_cast<std::uint32_t>(i));
   std::mt19937_64 rng(seed);
-  std::shuffle(order.begin(), order.end(), rng);
-  // Rounds [n/2^(k+1), n/2^k), the first one holding everything below 64 points.
-  std::size_t end = order.size();
+  std::shuffle(keys.begin(), keys.end(), rng);
+  // Rounds [n/2^(k+1), n/2^k), the first one holding everything below 128 points.
+  std::size_t end = keys.size();
   while (end > 0) {
     const std::size_t begin = end > 128 ? end / 2 : 0;
-    hilbert_sort(points, std::span<std::uint32_t>(order).subspan(begin, end - begin));
+    std::sort(keys.begin() + static_cast<std::ptrdiff_t>(begin), keys.begin() + static_cast<std::ptrdiff_t>(end));
     end = begin;
   }
+  std::vector<std::uint32_t> order(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) order[k] = static_cast<std::uint32_t>(keys[k]);
   return order;
 }
 
