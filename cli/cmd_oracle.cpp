@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/input_points.hpp"
 #include "kernel/build.hpp"
 #include "kernel/point_io.hpp"
 #include "oracle/cgal_oracle.hpp"
@@ -60,7 +61,7 @@ std::string verdict(const Comparison& c) {
 }
 
 void run_oracle(const Args& a, int& rc) {
-  const PointFile pf = read_points(a.input);
+  const PointFile pf = read_input_points(a.input);
   const auto& pts = pf.points;
   std::vector<Checked> runs;
 

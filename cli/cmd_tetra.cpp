@@ -6,6 +6,7 @@
 
 #include "cli/build_options.hpp"
 #include "cli/command.hpp"
+#include "cli/input_points.hpp"
 #include "cli/tetra_report.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
@@ -23,7 +24,7 @@ struct TetraArgs {
 
 int run_tetra(const TetraArgs& a) {
   const BuildOptions options = a.kernel.build_options();
-  PointFile in = read_points(a.input);
+  PointFile in = read_input_points(a.input);
   BuildResult r = build_delaunay(in.points, a.kernel.predicate_spec(), options);
   if (!a.out.empty()) {
     write_tetgen(a.out, r.mesh);
@@ -49,7 +50,7 @@ int run_tetra(const TetraArgs& a) {
 void add_tetra_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<TetraArgs>();
   CLI::App* sub = app.add_subcommand("tetra", "Delaunay tetrahedralization of a point file (.node or .xyz)");
-  sub->add_option("INPUT", args->input, "points: TetGen .node or .xyz")->required();
+  sub->add_option("INPUT", args->input, "points: .node, .xyz, or the vertices of a mesh (.off .obj .ply .stl)")->required();
   sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)");
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu for ParaView");
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/input_points.hpp"
 #include "kernel/point_io.hpp"
 #include "voronoi/cell_check.hpp"
 #include "voronoi/voronoi_io.hpp"
@@ -21,7 +22,7 @@ struct VoronoiArgs {
 };
 
 int run_voronoi(const VoronoiArgs& a) {
-  PointFile in = read_points(a.input);
+  PointFile in = read_input_points(a.input);
   if (in.points.empty()) {
     std::fprintf(stderr, "dtlab voronoi: %s: no points\n", a.input.c_str());
     return kBadInput;
@@ -79,7 +80,7 @@ int run_voronoi(const VoronoiArgs& a) {
 void add_voronoi_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<VoronoiArgs>();
   CLI::App* sub = app.add_subcommand("voronoi", "Voronoi cells of a point file, clipped to a box");
-  sub->add_option("INPUT", args->input, "points: TetGen .node or .xyz")->required();
+  sub->add_option("INPUT", args->input, "points: .node, .xyz, or the vertices of a mesh (.off .obj .ply .stl)")->required();
   sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)");
   sub->add_option("--box", args->box, "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
       ->expected(6);
