@@ -43,6 +43,9 @@ sed -i '2s/.*/0 0 1 2 4/' "$tmp/ok.ele"
 expect 1 "check a broken mesh" -- "$dtlab" check "$tmp/ok"
 expect 2 "bad boundary option" -- "$dtlab" tetra "$tmp/ok.xyz" --boundary bigtet:x
 expect 0 "bigtet boundary" -- "$dtlab" tetra "$tmp/ok.xyz" --boundary bigtet:100 --predicates exact --perturb none --order input
+printf 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n' > "$tmp/cube.off"
+expect 0 "tetra on a mesh file's vertices" -- "$dtlab" tetra "$tmp/cube.off" --out "$tmp/cube"
+expect 0 "check the cube" -- "$dtlab" check "$tmp/cube"
 expect 0 "demo (small)" -- "$dtlab" demo --out "$tmp/demo" --points 2000 --pieces 5 --no-oracles
 [ -s "$tmp/demo/fracture/exploded.png" ] || { echo "FAIL: demo wrote no PNG"; fails=$((fails + 1)); }
 
