@@ -40,6 +40,10 @@ class ConvexCell {
     return {fv_.data() + fo_[f], fo_[f + 1] - fo_[f]};
   }
   std::int32_t face_tag(std::size_t f) const { return face_tag_[f]; }
+  // All faces at once: offsets (face_count() + 1, from 0), corners, tags.
+  std::span<const std::uint32_t> face_offsets() const { return fo_; }
+  std::span<const std::uint32_t> face_vertices() const { return fv_; }
+  std::span<const std::int32_t> face_tags() const { return face_tag_; }
   std::size_t edge_count() const { return (fv_.size()) / 2; }  // each edge in two faces
 
   double volume() const;

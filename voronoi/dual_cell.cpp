@@ -1,6 +1,7 @@
 #include "voronoi/dual_cell.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dtlab::vor {
 
@@ -20,10 +21,11 @@ bool DualCellBuilder::gather(std::uint32_t v, std::span<const std::uint32_t> sta
                              std::span<const char> bad) {
   for (auto g : global_) local_[g] = UINT32_MAX;
   global_.clear();
-  tri_.clear();
-  tet_.clear();
+  tri_.resize(3 * star.size());
+  std::uint32_t* tri = tri_.data();
   bool ok = true;
   for (auto t : star) {
+    if (prefetch_) __builtin_prefetch(prefetch_ + t);
     const Tet& q = tets[t];
     const int i = q[0] == v ? 0 : q[1] == v ? 1 : q[2] == v ? 2 : 3;
     for (int k = 0; k < 3; ++k) {
@@ -32,9 +34,8 @@ bool DualCellBuilder::gather(std::uint32_t v, std::span<const std::uint32_t> sta
         local_[g] = static_cast<std::uint32_t>(global_.size());
         global_.push_back(g);
       }
-      tri_.push_back(local_[g]);
+      *tri++ = local_[g];
     }
-    tet_.push_back(t);
     ok &= !bad[t];
   }
   return ok;
@@ -48,11 +49,12 @@ std::uint32_t DualCellBuilder::find(std::uint32_t t) {
 bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star,
                             std::span<const Tet> tets, std::span<const Point3> cc,
                             std::span<const char> bad, double band, double min_edge,
-                            VoronoiCell& out) {
-  if (!gather(v, star, tets, bad)) return false;
-  lcc_.clear();
-  for (auto t : tet_) lcc_.push_back(cc[t]);
-  const std::size_t nl = global_.size(), nt = tet_.size();
+                            CellBuffer& out) {
+  prefetch_ = cc.data();
+  const bool ok = gather(v, star, tets, bad);
+  prefetch_ = nullptr;
+  if (!ok) return false;
+  const std::size_t nl = global_.size(), nt = star.size();
   // Link Euler characteristic: a closed sphere has V - E + F = 2 with E = 3F/2.
   if (nt < 4 || 2 * nl != nt + 4) return false;
 
@@ -76,16 +78,19 @@ bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star
   // Rings: around link vertex a, from the triangle (a, p, q) to the one (a, y, p).
   ring_.clear();
   roff_.assign(1, 0);
+  if (by_prev_.size() < nl) by_prev_.resize(nl, 0);
   for (std::uint32_t a = 0; a < nl; ++a) {
     const std::uint32_t b = coff_[a], e = coff_[a + 1];
+    // by_prev_[x]: the corner of a whose previous vertex is x (stale entries from other
+    // link vertices are caught by the range and value checks, so no reset is needed).
+    for (std::uint32_t k = b; k < e; ++k) by_prev_[bprev_[k]] = k;
     std::uint32_t cur = b;
     for (std::uint32_t step = 0;; ++step) {
       if (step == e - b) return false;  // not one cycle
       ring_.push_back(btri_[cur]);
       const std::uint32_t target = bnext_[cur];
-      std::uint32_t nxt = b;
-      while (nxt < e && bprev_[nxt] != target) ++nxt;
-      if (nxt == e) return false;  // open link: a hull site
+      const std::uint32_t nxt = by_prev_[target];
+      if (nxt < b || nxt >= e || bprev_[nxt] != target) return false;  // open link: a hull site
       if (nxt == b) {
         if (step + 1 != e - b) return false;
         break;
@@ -95,21 +100,50 @@ bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star
     roff_.push_back(static_cast<std::uint32_t>(ring_.size()));
   }
 
-  // Merge coincident circumcentres of neighbouring link triangles.
-  parent_.resize(nt);
-  for (std::uint32_t t = 0; t < nt; ++t) parent_[t] = t;
-  const double band2 = band * band;
+  // Without coincident centres the cell's vertices are the link triangles' centres,
+  // one each, in link triangle order: write them straight into the output.
+  out.vertices.resize(nt);
+  for (std::uint32_t t = 0; t < nt; ++t) out.vertices[t] = cc[star[t]];
+  const Point3* c = out.vertices.data();
+
+  // Merge coincident circumcentres of neighbouring link triangles. Consecutive ring
+  // entries are the cell's edges (each seen from both of its faces), so the same pass
+  // finds the shortest edge.
+  const double band2 = band * band, min2 = min_edge * min_edge;
   bool merged = false;
+  double shortest = INFINITY;
   for (std::uint32_t a = 0; a < nl; ++a) {
     const std::uint32_t b = roff_[a], e = roff_[a + 1];
+    if (e - b < 3) return false;
     for (auto k = b; k < e; ++k) {
       const std::uint32_t s = ring_[k], t = ring_[k + 1 < e ? k + 1 : b];
-      if (dist2(lcc_[s], lcc_[t]) <= band2) {
+      const double d = dist2(c[s], c[t]);
+      shortest = std::min(shortest, d);
+      if (d <= band2) {
+        if (!merged) {
+          parent_.resize(nt);
+          for (std::uint32_t x = 0; x < nt; ++x) parent_[x] = x;
+          merged = true;
+        }
         const auto rs = find(s), rt = find(t);
-        if (rs != rt) parent_[rs] = rt, merged = true;
+        if (rs != rt) parent_[rs] = rt;
       }
     }
   }
+  if (!merged) {
+    if (shortest <= min2) return false;
+    // The ring runs clockwise seen from outside the cell: emit it backwards.
+    out.face_offsets.assign(roff_.begin(), roff_.end());
+    out.face_vertices.resize(ring_.size());
+    out.face_neighbor.resize(nl);
+    for (std::uint32_t a = 0; a < nl; ++a) {
+      const std::uint32_t b = roff_[a], e = roff_[a + 1];
+      for (auto k = b; k < e; ++k) out.face_vertices[b + (e - 1 - k)] = ring_[k];
+      out.face_neighbor[a] = static_cast<std::int32_t>(global_[a]);
+    }
+    return true;
+  }
+  lcc_.assign(out.vertices.begin(), out.vertices.end());
 
   out.vertices.clear();
   out.vertices.reserve(nt);
@@ -120,7 +154,6 @@ bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star
   out.face_neighbor.clear();
   out.face_neighbor.reserve(nl);
   vid_.assign(nt, UINT32_MAX);
-  const double min2 = min_edge * min_edge;
   auto vertex_of = [&](std::uint32_t root) {
     if (vid_[root] == UINT32_MAX) {
       vid_[root] = static_cast<std::uint32_t>(out.vertices.size());
@@ -133,7 +166,7 @@ bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star
     const std::size_t start = out.face_vertices.size();
     // The ring runs clockwise seen from outside the cell: emit it backwards.
     for (auto k = e; k-- > b;) {
-      const std::uint32_t r = merged ? find(ring_[k]) : ring_[k];
+      const std::uint32_t r = find(ring_[k]);
       const std::uint32_t id = vertex_of(r);
       if (out.face_vertices.size() > start && out.face_vertices.back() == id) continue;
       out.face_vertices.push_back(id);
@@ -149,14 +182,13 @@ bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star
     for (std::size_t k = start; k < start + m; ++k) {
       const std::uint32_t p = out.face_vertices[k], q = out.face_vertices[k + 1 < start + m ? k + 1 : start];
       if (dist2(out.vertices[p], out.vertices[q]) <= min2) return false;
-      if (merged)
-        for (std::size_t j = k + 1; j < start + m; ++j)
-          if (out.face_vertices[j] == p) return false;  // a corner twice: no polygon
+      for (std::size_t j = k + 1; j < start + m; ++j)
+        if (out.face_vertices[j] == p) return false;  // a corner twice: no polygon
     }
     out.face_offsets.push_back(static_cast<std::uint32_t>(out.face_vertices.size()));
     out.face_neighbor.push_back(static_cast<std::int32_t>(global_[a]));
   }
-  if (merged) {
+  {
     const long f = static_cast<long>(out.face_neighbor.size());
     if (f < 4 || long(out.vertices.size()) - long(out.face_vertices.size() / 2) + f != 2) return false;
     // Closed and oriented: every directed edge once, its reverse once.

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "kernel/tetrahedralization.hpp"
+#include "voronoi/cell_buffer.hpp"
 #include "voronoi/voronoi.hpp"
 
 namespace dtlab::vor {
@@ -31,7 +32,7 @@ class DualCellBuilder {
   // centroid are left to the caller.
   bool build(std::uint32_t v, std::span<const std::uint32_t> star, std::span<const Tet> tets,
              std::span<const Point3> cc, std::span<const char> bad, double band, double min_edge,
-             VoronoiCell& out);
+             CellBuffer& out);
 
   // Only collects the link of v (for `neighbors`); false if a centre is bad.
   bool gather(std::uint32_t v, std::span<const std::uint32_t> star, std::span<const Tet> tets,
@@ -45,12 +46,13 @@ class DualCellBuilder {
 
   std::vector<std::uint32_t> local_;   // global vertex id -> local id, UINT32_MAX when unused
   std::vector<std::uint32_t> global_;  // local -> global
-  std::vector<std::uint32_t> tri_;     // 3 local ids per link triangle
-  std::vector<std::uint32_t> tet_;     // link triangle -> tet
-  std::vector<Point3> lcc_;            // link triangle -> circumcentre
+  std::vector<std::uint32_t> tri_;     // 3 local ids per link triangle (= star tet)
+  std::vector<Point3> lcc_;            // link triangle -> circumcentre (cells with merges)
   std::vector<std::uint32_t> coff_, btri_, bnext_, bprev_;  // corners bucketed by link vertex
   std::vector<std::uint32_t> ring_, roff_;    // ring of link triangles per link vertex
+  std::vector<std::uint32_t> by_prev_;        // link vertex -> corner, while walking one ring
   std::vector<std::uint32_t> parent_, vid_;
+  const Point3* prefetch_ = nullptr;          // centres to prefetch while gathering
   std::vector<std::uint64_t> edges_;
 };
 

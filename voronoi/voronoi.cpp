@@ -8,6 +8,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "voronoi/cell_buffer.hpp"
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/dual_cell.hpp"
 #include "voronoi/parallel_for.hpp"
@@ -117,17 +118,17 @@ void sort_by_distance(std::span<const Point3> p, std::uint32_t v, std::vector<st
   });
 }
 
-void store(const ConvexCell& c, VoronoiCell& out) {
-  out.vertices = c.vertices();
-  out.face_offsets.assign(1, 0);
-  out.face_vertices.clear();
-  out.face_neighbor.clear();
-  for (std::size_t f = 0; f < c.face_count(); ++f) {
-    auto fv = c.face(f);
-    out.face_vertices.insert(out.face_vertices.end(), fv.begin(), fv.end());
-    out.face_offsets.push_back(static_cast<std::uint32_t>(out.face_vertices.size()));
-    out.face_neighbor.push_back(c.face_tag(f));
-  }
+// The arrays of a finished cell, copied into the worker's arena.
+void store(CellArena& arena, std::span<const Point3> v, std::span<const std::uint32_t> fo,
+           std::span<const std::uint32_t> fv, std::span<const std::int32_t> fn, VoronoiCell& out) {
+  out.vertices = arena.copy(v);
+  out.face_offsets = arena.copy(fo);
+  out.face_vertices = arena.copy(fv);
+  out.face_neighbor = arena.copy(fn);
+}
+
+void store(CellArena& arena, const ConvexCell& c, VoronoiCell& out) {
+  store(arena, c.vertices(), c.face_offsets(), c.face_vertices(), c.face_tags(), out);
   out.volume = c.volume();
   out.centroid = c.centroid();
 }
@@ -138,7 +139,7 @@ namespace {
 
 // Volume and centroid of a polytope, cones from `o` (near the cell: keeps the
 // magnitudes local).
-void measure(VoronoiCell& c, const Point3& o) {
+void measure(const CellBuffer& c, const Point3& o, VoronoiCell& out) {
   double vol = 0;
   Point3 m{0, 0, 0};
   for (std::size_t f = 0; f + 1 < c.face_offsets.size(); ++f) {
@@ -151,8 +152,8 @@ void measure(VoronoiCell& c, const Point3& o) {
       m = vadd(m, vscale(w, vadd(vadd(a, p), q)));
     }
   }
-  c.volume = vol / 6;
-  c.centroid = vol != 0 ? vadd(o, vscale(1.0 / (4 * vol), m)) : o;
+  out.volume = vol / 6;
+  out.centroid = vol != 0 ? vadd(o, vscale(1.0 / (4 * vol), m)) : o;
 }
 
 // Tets around each vertex, compressed rows.
@@ -166,6 +167,24 @@ void vertex_stars(std::size_t n, std::span<const Tet> tets, std::vector<std::uin
   std::vector<std::uint32_t> fill(off.begin(), off.end() - 1);
   for (std::uint32_t t = 0; t < tets.size(); ++t)
     for (auto v : tets[t]) star[fill[v]++] = t;
+}
+
+// The tets with vertices renamed by rank, in a stable counting sort by their lowest
+// rank (the first cell that reaches them).
+std::vector<Tet> sort_by_first_cell(std::span<const Tet> tets, std::span<const std::uint32_t> rank) {
+  std::vector<std::uint32_t> key(tets.size()), off(rank.size() + 1, 0);
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const Tet& q = tets[t];
+    key[t] = std::min(std::min(rank[q[0]], rank[q[1]]), std::min(rank[q[2]], rank[q[3]]));
+    ++off[key[t] + 1];
+  }
+  for (std::size_t k = 0; k + 1 < off.size(); ++k) off[k + 1] += off[k];
+  std::vector<Tet> out(tets.size());
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const Tet& q = tets[t];
+    out[off[key[t]]++] = {rank[q[0]], rank[q[1]], rank[q[2]], rank[q[3]]};
+  }
+  return out;
 }
 
 using Clock = std::chrono::steady_clock;
@@ -201,6 +220,7 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
     if (sites.size() > 4096) throw std::runtime_error("coplanar input too large for all-pairs cells");
     ConvexCell cell;
     std::vector<std::uint32_t> row;
+    auto storage = std::make_shared<std::vector<CellArena>>(1);
     for (std::uint32_t v = 0; v < sites.size(); ++v) {
       if (dup[v] >= 0) {
         vd.cells[v].duplicate_of = dup[v];
@@ -211,36 +231,51 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
         if (w != v && dup[w] < 0) row.push_back(w);
       sort_by_distance(sites, v, row);
       compute_cell(cell, sites, v, row, vd.box, o.tolerance, o.shrink);
-      store(cell, vd.cells[v]);
+      store(storage->front(), cell, vd.cells[v]);
     }
+    vd.storage = std::move(storage);
     vd.clipped = sites.size();
     vd.seconds_cells = since(t0);
   vd.cpu_seconds_cells = double(std::clock() - c0) / CLOCKS_PER_SEC;
     return vd;
   }
 
-  const auto& tets = r.mesh.tets;
+  // Cells in the order of their first tet: the tets come out of the DT in spatial
+  // (insertion) order, so neighbouring cells are near each other. One pass over the
+  // tets (no sort); sites in no tet (duplicates) go last.
+  const std::size_t n = sites.size();
+  std::vector<std::uint32_t> order;
+  order.reserve(n);
+  std::vector<std::uint32_t> rank(n, UINT32_MAX);
+  for (const auto& q : r.mesh.tets)
+    for (auto v : q)
+      if (rank[v] == UINT32_MAX) rank[v] = static_cast<std::uint32_t>(order.size()), order.push_back(v);
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (rank[v] == UINT32_MAX) order.push_back(v);
+  // Sites renumbered by rank and tets in the order the cells first reach them (counting
+  // sort on the lowest rank of their vertices): the stars, tets and centres of
+  // consecutive cells then lie in nearby memory instead of all over the mesh.
+  const std::vector<Tet> tets = sort_by_first_cell(r.mesh.tets, rank);
+  std::vector<std::uint32_t>().swap(rank);
+  r.mesh.tets = {};
+  std::vector<Point3> ranked(n);
+  std::vector<char> dup_ranked(n);
+  for (std::size_t k = 0; k < n; ++k) ranked[k] = sites[order[k]], dup_ranked[k] = dup[order[k]] >= 0;
+  // The stars (one task) while other workers compute the circumcentres (chunks of
+  // 4096 tets); with one thread, one after the other.
   std::vector<std::uint32_t> star_off, star;
-  vertex_stars(sites.size(), tets, star_off, star);
   std::vector<Point3> cc(tets.size());
   std::vector<char> bad(tets.size());
-  parallel_chunks(tets.size(), threads, 4096, [&](std::size_t b, std::size_t e, unsigned) {
-    for (std::size_t t = b; t < e; ++t) {
+  constexpr std::size_t kChunk = 4096;
+  parallel_chunks(1 + (tets.size() + kChunk - 1) / kChunk, threads, 1, [&](std::size_t job, std::size_t, unsigned) {
+    if (job == 0) return vertex_stars(n, tets, star_off, star);
+    for (std::size_t t = (job - 1) * kChunk, e = std::min(tets.size(), job * kChunk); t < e; ++t) {
       const Tet& q = tets[t];
       double cond = 0;
-      cc[t] = circumcenter(sites[q[0]], sites[q[1]], sites[q[2]], sites[q[3]], &cond);
+      cc[t] = circumcenter(ranked[q[0]], ranked[q[1]], ranked[q[2]], ranked[q[3]], &cond);
       bad[t] = !(cond <= kMaxCondition);
     }
   });
-
-  // Cells in the order of their first tet: the tets come out of the DT in spatial
-  // (insertion) order, so neighbouring cells then share cached tets and centres.
-  std::vector<std::uint32_t> order(sites.size());
-  std::iota(order.begin(), order.end(), 0u);
-  auto first_tet = [&](std::uint32_t v) {
-    return star_off[v] < star_off[v + 1] ? star[star_off[v]] : UINT32_MAX;
-  };
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return first_tet(a) < first_tet(b); });
 
   std::atomic<std::size_t> clipped{0}, box_clipped{0};
   const bool dual_ok = o.shrink == 0;
@@ -249,35 +284,42 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
     DualCellBuilder builder;
     ConvexCell cell;
     std::vector<std::uint32_t> row;
+    CellBuffer buffer;
+    CellArena arena;
   };
   std::vector<std::unique_ptr<Scratch>> scratch(threads);
   parallel_chunks(sites.size(), threads, 256, [&](std::size_t b, std::size_t e, unsigned w) {
     if (!scratch[w]) scratch[w] = std::make_unique<Scratch>(sites.size());
-    auto& [builder, cell, row] = *scratch[w];
+    auto& [builder, cell, row, buf, arena] = *scratch[w];
     std::size_t n_clip = 0, n_box = 0;
     for (std::size_t k = b; k < e; ++k) {
       const std::uint32_t i = order[k];
+      // The cells are stored by site id, in no spatial order: fetch the next one early.
+      if (k + 1 < e) __builtin_prefetch(&vd.cells[order[k + 1]], 1);
       VoronoiCell& out = vd.cells[i];
-      if (dup[i] >= 0) {
+      const auto rk = static_cast<std::uint32_t>(k);
+      const std::span<const std::uint32_t> st(star.data() + star_off[rk], star_off[rk + 1] - star_off[rk]);
+      if (dup_ranked[rk]) {
         out.duplicate_of = dup[i];
         continue;
       }
-      const std::span<const std::uint32_t> st(star.data() + star_off[i], star_off[i + 1] - star_off[i]);
-      const Point3 s = sites[i];
-      if (dual_ok && builder.build(i, st, tets, cc, bad, band, 1e4 * band, out)) {
+      const Point3 s = ranked[rk];
+      if (dual_ok && builder.build(rk, st, tets, cc, bad, band, 1e4 * band, buf)) {
+        for (auto& f : buf.face_neighbor) f = static_cast<std::int32_t>(order[f]);
         // Walls the cell crosses (strictly, beyond the band).
         int walls = 0;
-        for (const auto& p : out.vertices) {
+        for (const auto& p : buf.vertices) {
           walls |= (p.x < vd.box.lo.x - band) << 0 | (p.x > vd.box.hi.x + band) << 1;
           walls |= (p.y < vd.box.lo.y - band) << 2 | (p.y > vd.box.hi.y + band) << 3;
           walls |= (p.z < vd.box.lo.z - band) << 4 | (p.z > vd.box.hi.z + band) << 5;
         }
         if (!walls) {
-          measure(out, s);
+          measure(buf, s, out);
+          store(arena, buf.vertices, buf.face_offsets, buf.face_vertices, buf.face_neighbor, out);
           continue;
         }
         ++n_box;
-        cell.assign(out.vertices, out.face_offsets, out.face_vertices, out.face_neighbor, s);
+        cell.assign(buf.vertices, buf.face_offsets, buf.face_vertices, buf.face_neighbor, s);
         const Point3 lo = vsub(vd.box.lo, s), hi = vsub(vd.box.hi, s);
         const Point3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
         const double los[3] = {lo.x, lo.y, lo.z}, his[3] = {hi.x, hi.y, hi.z};
@@ -286,20 +328,24 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
           if (walls >> (2 * k + 1) & 1) cell.clip(axis[k], his[k], -2 - 2 * k, o.tolerance * vd.box.diagonal());
         }
         cell.translate(s);
-        store(cell, out);
+        store(arena, cell, out);
         continue;
       }
       ++n_clip;
-      if (!dual_ok) builder.gather(i, st, tets, bad);
-      auto nb = builder.neighbors();
-      row.assign(nb.begin(), nb.end());
+      if (!dual_ok) builder.gather(rk, st, tets, bad);
+      row.clear();
+      for (auto w : builder.neighbors()) row.push_back(order[w]);
       sort_by_distance(sites, i, row);
       compute_cell(cell, sites, i, row, vd.box, o.tolerance, o.shrink);
-      store(cell, out);
+      store(arena, cell, out);
     }
     clipped += n_clip;
     box_clipped += n_box;
   });
+  auto storage = std::make_shared<std::vector<CellArena>>();
+  for (auto& sc : scratch)
+    if (sc) storage->push_back(std::move(sc->arena));
+  vd.storage = std::move(storage);
   vd.clipped = clipped;
   vd.box_clipped = box_clipped;
   vd.seconds_cells = since(t0);

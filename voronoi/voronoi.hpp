@@ -10,12 +10,14 @@
 // site's Delaunay neighbours, nearest first (voronoi/convex_cell.hpp), where
 // cospherical planes collapse inside one tolerance band. Cells run in parallel.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "kernel/build.hpp"
+#include "voronoi/cell_arena.hpp"
 #include "voronoi/convex_cell.hpp"
 
 namespace dtlab {
@@ -29,14 +31,17 @@ struct VoronoiOptions {
   unsigned threads = 0;             // cells in parallel; 0: all hardware threads
 };
 
+// One cell: views into arrays owned by its diagram (VoronoiDiagram::storage), valid
+// while the diagram or a copy of it lives. All cells' arrays lie in a few flat blocks
+// (no allocation per cell).
 struct VoronoiCell {
-  std::vector<Point3> vertices;
-  std::vector<std::uint32_t> face_offsets{0};  // face f: face_vertices[off[f] .. off[f+1])
-  std::vector<std::uint32_t> face_vertices;    // counter-clockwise seen from outside
-  std::vector<std::int32_t> face_neighbor;     // site id, or -1..-6 for the box walls
+  std::span<const Point3> vertices;
+  std::span<const std::uint32_t> face_offsets;   // face f: face_vertices[off[f] .. off[f+1])
+  std::span<const std::uint32_t> face_vertices;  // counter-clockwise seen from outside
+  std::span<const std::int32_t> face_neighbor;   // site id, or -1..-6 for the box walls
   double volume = 0;
   Point3 centroid{0, 0, 0};
-  std::int64_t duplicate_of = -1;              // a repeated site gets an empty cell
+  std::int64_t duplicate_of = -1;                // a repeated site gets an empty cell
 
   std::size_t face_count() const { return face_neighbor.size(); }
   std::size_t edge_count() const { return face_vertices.size() / 2; }
@@ -47,6 +52,7 @@ struct VoronoiDiagram {
   vor::Box box;
   std::vector<Point3> sites;
   std::vector<VoronoiCell> cells;
+  std::shared_ptr<const std::vector<vor::CellArena>> storage;  // owns the cells' arrays
   std::size_t tets = 0;
   std::size_t clipped = 0;          // cells built by clipping (hull sites, doubtful duals, shrink)
   std::size_t box_clipped = 0;      // dual cells then clipped by the box walls

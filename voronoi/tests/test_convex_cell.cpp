@@ -7,15 +7,14 @@ using namespace dtlab;
 using namespace dtlab::vor;
 
 namespace {
+// A view of the clipped cell; its arrays live in an arena kept for the whole test run.
 VoronoiCell as_cell(const ConvexCell& c) {
+  static CellArena arena;
   VoronoiCell out;
-  out.vertices = c.vertices();
-  for (std::size_t f = 0; f < c.face_count(); ++f) {
-    auto fv = c.face(f);
-    out.face_vertices.insert(out.face_vertices.end(), fv.begin(), fv.end());
-    out.face_offsets.push_back(static_cast<std::uint32_t>(out.face_vertices.size()));
-    out.face_neighbor.push_back(c.face_tag(f));
-  }
+  out.vertices = arena.copy(std::span<const Point3>(c.vertices()));
+  out.face_offsets = arena.copy(c.face_offsets());
+  out.face_vertices = arena.copy(c.face_vertices());
+  out.face_neighbor = arena.copy(c.face_tags());
   return out;
 }
 }  // namespace

@@ -34,7 +34,7 @@ TEST_CASE("per-cell volumes and neighbours agree with voro++") {
         worst = std::max(worst, rel);
         std::vector<int> nb;
         c.neighbors(nb);
-        std::vector<std::int32_t> ours = vd.cells[id].face_neighbor;
+        std::vector<std::int32_t> ours(vd.cells[id].face_neighbor.begin(), vd.cells[id].face_neighbor.end());
         std::sort(nb.begin(), nb.end());
         std::sort(ours.begin(), ours.end());
         CHECK(nb == ours);
