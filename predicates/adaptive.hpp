@@ -21,6 +21,7 @@
 #include <string_view>
 
 #include "predicates/backend.hpp"
+#include "predicates/naive.hpp"
 
 namespace dtlab {
 
@@ -120,24 +121,8 @@ inline int adaptive_orient3d(const Point3& a, const Point3& b, const Point3& c, 
 inline int adaptive_insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                              const Point3& e, AdaptiveStats* stats) {
   using namespace adaptive_detail;
-  const double aex = a.x - e.x, aey = a.y - e.y, aez = a.z - e.z;
-  const double bex = b.x - e.x, bey = b.y - e.y, bez = b.z - e.z;
-  const double cex = c.x - e.x, cey = c.y - e.y, cez = c.z - e.z;
-  const double dex = d.x - e.x, dey = d.y - e.y, dez = d.z - e.z;
   // naive.hpp's evaluation order (the bound above counts its roundings).
-  const double ab = aex * bey - bex * aey, bc = bex * cey - cex * bey;
-  const double cd = cex * dey - dex * cey, da = dex * aey - aex * dey;
-  const double ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
-  const double abc = aez * bc - bez * ac + cez * ab;
-  const double bcd = bez * cd - cez * bd + dez * bc;
-  const double cda = cez * da + dez * ac + aez * cd;
-  const double dab = dez * ab + aez * bd + bez * da;
-  const double alift = aex * aex + aey * aey + aez * aez;
-  const double blift = bex * bex + bey * bey + bez * bez;
-  const double clift = cex * cex + cey * cey + cez * cez;
-  const double dlift = dex * dex + dey * dey + dez * dez;
-  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
-  const double lift = std::max(std::max(alift, blift), std::max(clift, dlift));
+  const auto [det, lift] = insphere_eval(a, b, c, d, e);
   const double lift2 = lift * lift;
   const double bound = kIspSemiStaticSquared * (lift2 * lift2 * lift);
   if ((lift >= kIspLiftLow) & (det * det > bound))

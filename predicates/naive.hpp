@@ -2,6 +2,7 @@
 // The plain double-precision determinants: the thesis's first, failing version.
 // Each is the textbook cofactor expansion after translating by the last point,
 // evaluated in floating point with no error control.
+#include <algorithm>
 #include <string_view>
 
 #include "predicates/backend.hpp"
@@ -16,8 +17,15 @@ inline double orient3d_value(const Point3& a, const Point3& b, const Point3& c, 
          cdx * (ady * bdz - adz * bdy);
 }
 
-inline double insphere_value(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-                             const Point3& e) {
+// The insphere determinant and the largest lift |q - e|^2 of a,b,c,d (which the
+// adaptive backend's semi-static filter bounds its error with).
+struct InsphereEval {
+  double det;
+  double max_lift;
+};
+
+inline InsphereEval insphere_eval(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                                  const Point3& e) {
   const double aex = a.x - e.x, aey = a.y - e.y, aez = a.z - e.z;
   const double bex = b.x - e.x, bey = b.y - e.y, bez = b.z - e.z;
   const double cex = c.x - e.x, cey = c.y - e.y, cez = c.z - e.z;
@@ -33,7 +41,14 @@ inline double insphere_value(const Point3& a, const Point3& b, const Point3& c, 
   const double blift = bex * bex + bey * bey + bez * bez;
   const double clift = cex * cex + cey * cey + cez * cez;
   const double dlift = dex * dex + dey * dey + dez * dez;
-  return (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+  const double max_lift = std::max(std::max(alift, blift), std::max(clift, dlift));
+  return {det, max_lift};
+}
+
+inline double insphere_value(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                             const Point3& e) {
+  return insphere_eval(a, b, c, d, e).det;
 }
 
 struct NaivePredicates {
