@@ -7,12 +7,11 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
 #include "cli/commands.hpp"
+#include "cli/stdout_to_stderr.hpp"
 
 #ifndef DTLAB_SOURCE_DIR
 #define DTLAB_SOURCE_DIR "."
@@ -28,22 +27,6 @@ struct DemoArgs {
   std::size_t pieces = 30;
   bool no_oracles = false;
   bool json = false;
-};
-
-// With --json the steps' own reports go to stderr and stdout carries one JSON summary.
-class StdoutToStderr {
- public:
-  explicit StdoutToStderr(bool on) : saved_(on ? dup(1) : -1) {
-    if (saved_ >= 0) std::fflush(stdout), dup2(2, 1);
-  }
-  ~StdoutToStderr() {
-    if (saved_ >= 0) std::fflush(stdout), dup2(saved_, 1), close(saved_);
-  }
-  StdoutToStderr(const StdoutToStderr&) = delete;
-  StdoutToStderr& operator=(const StdoutToStderr&) = delete;
-
- private:
-  int saved_;
 };
 
 // Runs `dtlab args...` in this process, through the same parser as the shell.

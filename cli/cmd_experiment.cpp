@@ -1,11 +1,15 @@
 // dtlab experiment: reproducible experiments that write a report folder.
 #include <cstdio>
+#include <fstream>
 #include <memory>
 #include <string>
 
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/command.hpp"
+#include "cli/stdout_to_stderr.hpp"
 #include "experiments/benchmark.hpp"
 #include "experiments/thesis_failures.hpp"
 
@@ -19,8 +23,27 @@ std::string command_line(const std::string& sub, const std::vector<std::string>&
   return s;
 }
 
-int finish(int code, const std::filesystem::path& out) {
-  std::printf("report: %s\n", (out / "report.md").string().c_str());
+// Runs one experiment; with --json its own output goes to stderr and stdout gets
+// {"report", "exit", "facts"} (facts: the report's data/facts.json, its headline numbers).
+template <class Run>
+int run_experiment(bool json, const std::filesystem::path& out, Run&& run) {
+  int code;
+  {
+    StdoutToStderr quiet(json);
+    try {
+      code = run();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "dtlab experiment: %s\n", e.what());
+      return kBadInput;
+    }
+    std::printf("report: %s\n", (out / "report.md").string().c_str());
+  }
+  if (json) {
+    nlohmann::json j = {{"report", (out / "report.md").string()}, {"exit", code}};
+    std::ifstream facts(out / "data" / "facts.json");
+    if (facts) j["facts"] = nlohmann::json::parse(facts, nullptr, false);
+    std::printf("%s\n", j.dump(2).c_str());
+  }
   return code;
 }
 
@@ -38,20 +61,16 @@ void add_experiment_command(CLI::App& app, int& rc) {
   t->add_flag("--quick", thesis->quick, "fewer sizes and cases (seconds instead of minutes)");
   t->add_option("--seed", thesis->seed, "experiment seed")->capture_default_str();
   t->add_flag("--no-figures", *no_figures, "skip the matplotlib figures");
-  t->callback([thesis, no_figures, t, &rc] {
+  auto thesis_json = std::make_shared<bool>(false);
+  t->add_flag("--json", *thesis_json, "print a JSON summary (the report's headline facts) on stdout");
+  t->callback([thesis, no_figures, thesis_json, t, &rc] {
     thesis->figures = !*no_figures;
     thesis->progress = isatty(2);
     std::vector<std::string> args = {"--out", thesis->out.string(), "--seed", std::to_string(thesis->seed)};
     if (thesis->quick) args.push_back("--quick");
     if (*no_figures) args.push_back("--no-figures");
     thesis->command_line = command_line(t->get_name(), args);
-    try {
-      const auto r = experiments::run_thesis_failures(*thesis);
-      rc = finish(r.exit_code, thesis->out);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "dtlab experiment: %s\n", e.what());
-      rc = kBadInput;
-    }
+    rc = run_experiment(*thesis_json, thesis->out, [&] { return experiments::run_thesis_failures(*thesis).exit_code; });
   });
 
   auto bench = std::make_shared<experiments::BenchmarkOptions>();
@@ -65,7 +84,9 @@ void add_experiment_command(CLI::App& app, int& rc) {
   b->add_option("--seed", bench->seed, "seed of the generated points")->capture_default_str();
   b->add_option("--max-n", bench->max_n, "largest n (default 10^6, 10^7 with --large)");
   b->add_flag("--no-figures", *bench_no_figures, "skip the matplotlib figures");
-  b->callback([bench, bench_no_figures, b, &rc] {
+  auto bench_json = std::make_shared<bool>(false);
+  b->add_flag("--json", *bench_json, "print a JSON summary (the report's headline facts) on stdout");
+  b->callback([bench, bench_no_figures, bench_json, b, &rc] {
     bench->figures = !*bench_no_figures;
     bench->progress = isatty(2);
     std::vector<std::string> args = {"--out", bench->out.string(), "--runs", std::to_string(bench->runs), "--seed",
@@ -74,13 +95,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
     if (bench->max_n) args.insert(args.end(), {"--max-n", std::to_string(bench->max_n)});
     if (*bench_no_figures) args.push_back("--no-figures");
     bench->command_line = command_line(b->get_name(), args);
-    try {
-      const auto r = experiments::run_benchmark(*bench);
-      rc = finish(r.exit_code, bench->out);
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "dtlab experiment: %s\n", e.what());
-      rc = kBadInput;
-    }
+    rc = run_experiment(*bench_json, bench->out, [&] { return experiments::run_benchmark(*bench).exit_code; });
   });
 }
 

@@ -21,6 +21,10 @@ expect() {  # expect CODE DESCRIPTION -- command...
 for sub in tetra check oracle fuzz sample voronoi fracture bench experiment demo; do
   expect 0 "$sub --help" -- "$dtlab" "$sub" --help
 done
+# Every command that does work offers --json.
+for sub in tetra check oracle fuzz sample voronoi fracture bench demo "experiment thesis-failures" "experiment benchmark"; do
+  $dtlab $sub --help | grep -q -- "--json" || { echo "FAIL: $sub has no --json"; fails=$((fails + 1)); }
+done
 expect 2 "no subcommand" -- "$dtlab"
 expect 2 "unknown subcommand" -- "$dtlab" frobnicate
 
