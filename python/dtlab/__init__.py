@@ -1,0 +1,242 @@
+"""dtlab: robust 3D Delaunay tetrahedralization with exact checks, from numpy.
+
+    import numpy as np, dtlab
+    pts = dtlab.fuzz.generate("cospherical", 200, seed=7)
+    dt = dtlab.tetrahedralize(pts)                 # adaptive predicates + symbolic perturbation
+    print(dtlab.check(pts, dt.tets).verdict)       # exact proof: valid Delaunay tetrahedralization
+    print(dtlab.check(pts, scipy.spatial.Delaunay(pts).simplices).verdict)   # any tool's output
+
+Point arrays are (n, 3) and finite; float64 C-contiguous arrays are used without a copy.
+Bad input (wrong shape, NaN, fewer than 4 points, an unknown option value, an unreadable
+file) raises ValueError with the message the `dtlab` command prints for it. Long calls
+release the GIL. Defaults are those of the `dtlab` command, so the same call gives the
+same result as the same command line (seeds included).
+"""
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Sequence
+from typing import Any, Union
+
+import numpy as np
+
+from . import _core, fuzz
+from ._results import (DEFECT_KINDS, BuildFailure, CheckReport, Comparison, Defect, Failure, Mesh,
+                       OracleReport, OracleRun, Piece, Pieces, Tetrahedralization, VoronoiCell,
+                       VoronoiDiagram)
+
+__version__: str = _core.__version__
+
+__all__ = [
+    "BuildFailure", "CheckReport", "Comparison", "DEFECT_KINDS", "Defect", "Failure", "Mesh",
+    "OracleReport", "OracleRun", "Piece", "Pieces", "Tetrahedralization", "VoronoiCell",
+    "VoronoiDiagram", "check", "compare", "fracture", "fuzz", "oracle", "read_mesh", "sample",
+    "tetrahedralize", "voronoi",
+]
+
+MeshLike = Union[str, "os.PathLike[str]", Mesh, tuple[Any, Any]]
+
+
+def _seed(seed: int) -> int:
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= int(seed) < 2**64:
+        raise ValueError(f"--seed: expected an integer in [0, 2^64), got {seed!r}")
+    return int(seed)
+
+
+def _count(value: int, name: str) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or int(value) < 0:
+        raise ValueError(f"{name}: expected a non-negative integer, got {value!r}")
+    return int(value)
+
+
+def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "sos",
+                   boundary: str = "infinite", order: str = "brio", seed: int = 1, *,
+                   eps: float = 1e-12, eps_mode: str = "absolute",
+                   raise_on_failure: bool = True) -> Tetrahedralization:
+    """The Delaunay tetrahedralization of an (n, 3) array of points.
+
+    predicates: "naive", "epsilon", "adaptive" (Shewchuk, the default) or "exact" (GMP);
+    perturb: "sos" (symbolic perturbation: a unique answer on degenerate input, CGAL's)
+    or "none"; boundary: "infinite" or "bigtet[:FACTOR]" (the thesis's enclosing
+    tetrahedron); order: "brio" or "input"; seed: of the BRIO rounds and the walk;
+    eps, eps_mode ("absolute" or "relative"): the epsilon backend's band.
+
+    Returns a Tetrahedralization with tets ((m, 4) uint32, positive orientation),
+    duplicates, stats and failure. Fewer than 4 points or an input with all points
+    collinear or coplanar raise ValueError. A non-robust backend may stop at a named
+    failure (walk-cycle, flip-stuck, inconsistent-adjacency, outside-boundary): that
+    raises BuildFailure carrying the partial mesh, or, with raise_on_failure=False,
+    comes back in `failure`.
+    """
+    raw = _core.tetrahedralize(points, predicates, perturb, boundary, order, _seed(seed), float(eps), eps_mode)
+    summary = dict(raw["summary"])
+    f = summary.pop("failure")
+    summary.pop("duplicates")
+    summary["peak_tets"] = raw["peak_tets"]
+    failure = None if f is None else Failure(f["kind"], int(f["point"]), f["detail"])
+    result = Tetrahedralization(np.asarray(points, dtype=np.float64), raw["tets"], raw["duplicates"],
+                                raw["skipped"], summary, failure)
+    if failure is not None and failure.kind == "lower-dimensional":
+        raise ValueError(failure.detail)
+    if failure is not None and raise_on_failure:
+        raise BuildFailure(failure, result)
+    return result
+
+
+def check(points: Any, tets: Any, orientation: str = "any", *, duplicates: Any = None,
+          witnesses: int = 16, delaunay: bool = True) -> CheckReport:
+    """Proves exactly that `tets` is the Delaunay tetrahedralization of `points`, or
+    names each defect with witnesses: broken-adjacency, inverted, flat, non-delaunay,
+    hull-not-convex, overlap, gap, missing-point, duplicate-vertex, euler (see
+    oracle/README.md). Every sign is exact.
+
+    tets: (m, 4) integer array of input indices, from any tool. orientation says how
+    its tets are ordered:
+      "any" (default)  each tet may come in either order: it is reoriented by its own
+                       exact sign (scipy.spatial.Delaunay / Qhull give 3D simplices in
+                       both orders); flat tets stay flat and are reported.
+      "consistent"     one handedness for all (CGAL, TetGen, dtlab); the majority sign
+                       decides and the other tets are reported as inverted.
+      "positive"       orient3d > 0 (dtlab's tets, CGAL's cells as dtlab.oracle gives them).
+      "negative"       orient3d < 0 (TetGen's .ele order).
+    duplicates: input indices the producer left out as repeats of another point (each
+    is verified to have the coordinates of a vertex; exact repeats need not be listed).
+    witnesses: defects listed per kind. delaunay=False skips the insphere tests.
+    """
+    raw = _core.check(points, tets, orientation, duplicates, _count(witnesses, "witnesses"), bool(delaunay))
+    return CheckReport._from_raw(raw)
+
+
+def compare(points: Any, tets_a: Any, tets_b: Any, orientation: str = "any") -> Comparison:
+    """Compares two tetrahedralizations of the same points canonically.
+
+    Both are checked exactly first (orientation as in dtlab.check). Verdict "identical":
+    the same tets; "same Delaunay complex": both valid and equal once the tets inside
+    groups of cospherical points (where the Delaunay tetrahedralization is not unique)
+    are merged into the complex's cells; "different" otherwise. The complex is only
+    compared when both meshes are valid; the reports are in .a and .b.
+    """
+    raw = _core.compare(points, tets_a, tets_b, orientation)
+    a, b = CheckReport._from_raw(raw["a"]), CheckReport._from_raw(raw["b"])
+    return Comparison._from_raw(raw["comparison"], bool(raw["tets_equal"]), a, b)
+
+
+def oracle(points: Any, against: Sequence[str] = ("cgal", "tetgen"), *, predicates: str = "adaptive",
+           perturb: str = "sos", tetgen: str = "tetgen", timeout: float = 600.0) -> OracleReport:
+    """`dtlab oracle` on an array: builds ours (predicates, perturb, default options),
+    runs the oracles in `against` (CGAL's Delaunay_triangulation_3 in process, the
+    `tetgen` binary as a process with `timeout` seconds), checks every answer exactly
+    and compares every pair canonically. An oracle that crashes, times out or is
+    missing gives no answer (not a failure of ours)."""
+    if isinstance(against, str):
+        against = [a for a in against.split(",") if a]
+    raw = _core.oracle(points, list(against), predicates, perturb, tetgen, float(timeout))
+    runs: dict[str, OracleRun] = {}
+    for name, r in raw["runs"].items():
+        report = None
+        if r["check"] is not None:
+            report = CheckReport._from_raw({**r["check"], "orientation": "positive"})
+        runs[name] = OracleRun(name, bool(r["answered"]), r["note"], float(r["seconds"]), int(r["duplicates"]),
+                               r["tets"], report)
+    comparisons: dict[str, Comparison] = {}
+    for pair, c in raw["comparisons"].items():
+        first, second = pair.split(" vs ")
+        comparisons[pair] = Comparison._from_raw(c, bool(c["tets_equal"]), runs[first].check, runs[second].check)
+    return OracleReport(bool(raw["ok"]), list(raw["problems"]), runs, comparisons)
+
+
+def _box_arg(box: Any) -> list[float] | None:
+    if box is None:
+        return None
+    b = np.asarray(box, dtype=np.float64).reshape(-1)
+    if b.size != 6 or not np.all(np.isfinite(b)):
+        raise ValueError("--box needs xmin ymin zmin xmax ymax zmax with min < max")
+    return [float(x) for x in b]
+
+
+def voronoi(points: Any, box: Any = None, *, margin: float = 0.1, predicates: str = "adaptive",
+            threads: int = 0) -> VoronoiDiagram:
+    """The Voronoi cell of every point, clipped to a box.
+
+    box: (xmin, ymin, zmin, xmax, ymax, zmax) or ((xmin, ymin, zmin), (xmax, ymax, zmax));
+    default the bounding box grown by `margin` (relative to its extent) on every side.
+    predicates: the Delaunay backend the cells are read from. threads: 0 for all cores.
+    A repeated point gets an empty cell (duplicate_of names the first). The cells' arrays
+    are read-only views of the diagram's storage.
+    """
+    raw = _core.voronoi(points, _box_arg(box), float(margin), predicates, _count(threads, "threads"))
+    cells = []
+    for i, c in enumerate(raw["cells"]):
+        off = c["face_offsets"]
+        faces = np.split(c["face_vertices"], off[1:-1]) if len(off) >= 2 else []
+        cells.append(VoronoiCell(i, c["vertices"], faces, c["face_neighbors"], c["neighbors"], float(c["volume"]),
+                                 tuple(c["centroid"]), int(c["duplicate_of"])))
+    return VoronoiDiagram(tuple(tuple(x) for x in raw["box"]), cells, int(raw["tets"]), int(raw["clipped"]),
+                          int(raw["box_clipped"]), float(raw["seconds_delaunay"]), float(raw["seconds_cells"]))
+
+
+def read_mesh(path: str | os.PathLike[str]) -> Mesh:
+    """(vertices, faces) of a triangle mesh file: OFF, OBJ, PLY (ASCII or binary), STL
+    (ASCII or binary); polygons are split into fans. "builtin" is the built-in bumpy
+    torus. A malformed file raises ValueError("file:line: reason")."""
+    p = os.fspath(path)
+    if p == "builtin":
+        return Mesh(*_core.builtin_mesh())
+    if not os.path.exists(p):
+        raise FileNotFoundError(2, "No such file or directory", p)
+    return Mesh(*_core.read_mesh(p))
+
+
+def _mesh_arrays(mesh: MeshLike) -> tuple[Any, Any]:
+    if isinstance(mesh, (str, os.PathLike)):
+        return read_mesh(mesh)
+    if isinstance(mesh, tuple) and len(mesh) == 2:
+        return mesh[0], mesh[1]
+    raise ValueError("mesh must be a path, 'builtin', or a (vertices, faces) pair")
+
+
+def sample(mesh: MeshLike, n: int, method: str = "winding", seed: int = 1, *, blue_noise: bool = False,
+           blue_noise_ratio: float = 5.0) -> np.ndarray:
+    """n points on or inside a triangle mesh, as an (n, 3) float64 array.
+
+    mesh: a file path, "builtin" (the bumpy torus), or (vertices, faces) arrays.
+    method: "winding" (inside, by fast winding numbers: robust on imperfect meshes),
+    "sdf" (inside, by signed distance), "rays" (inside, by ray parity) or "surface"
+    (on the triangles). blue_noise: weighted sample elimination over blue_noise_ratio
+    candidates per point. Reproducible from the seed (the same as `dtlab sample`).
+    Raises ValueError if the mesh encloses too little volume to find n points.
+    """
+    vertices, faces = _mesh_arrays(mesh)
+    count = _count(n, "--count")
+    raw = _core.sample(vertices, faces, count, method, _seed(seed), bool(blue_noise), float(blue_noise_ratio))
+    pts = raw["points"]
+    if len(pts) < count:
+        raise ValueError(f"only {len(pts)} of {count} points after {raw['candidates']} candidates "
+                         "(mesh encloses little volume?)")
+    return pts
+
+
+def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin: float = 0.0, *,
+             sampler: str = "winding", blue_noise: bool = False, threads: int = 0,
+             recurse: Iterable[int] = (), recurse_pieces: int = 4) -> Pieces:
+    """Voronoi fracture of a closed triangle mesh into closed pieces.
+
+    `pieces` sites are sampled inside the mesh (sampler "winding", "sdf" or "rays",
+    from `seed`), their Voronoi cells are intersected with the mesh exactly (CGAL
+    corefinement). margin: a gap of this length between neighbouring pieces. recurse:
+    top-level pieces split again into recurse_pieces each. threads: 0 for all cores.
+    Returns Pieces, a list of Piece (vertices, faces, cut-face mask, volume, ...)
+    with mesh_volume and relative_volume_error. A mesh that is not closed, manifold
+    and free of self-intersections raises ValueError. `dtlab.fracture(*dtlab.read_mesh(path))`
+    fractures a file.
+    """
+    raw = _core.fracture(vertices, faces, _count(pieces, "--pieces"), _seed(seed), float(margin), sampler,
+                         bool(blue_noise), _count(threads, "threads"), [_count(r, "--recurse") for r in recurse],
+                         _count(recurse_pieces, "--recurse-pieces"))
+    out = Pieces(Piece(p["vertices"], p["faces"], p["cut"], p["cut_tag"], float(p["volume"]), tuple(p["centroid"]),
+                       tuple(p["site"]), float(p["interior_area"]), p["neighbors"], int(p["parent"]))
+                 for p in raw["pieces"])
+    out.manifest = raw["manifest"]
+    out.mesh_volume = float(raw["manifest"]["mesh_volume"])
+    out.relative_volume_error = float(raw["manifest"]["relative_volume_error"])
+    return out

@@ -1,0 +1,78 @@
+// _core.fracture: Voronoi fracture of a closed mesh given as arrays.
+#include <pybind11/stl.h>
+
+#include "fracture/fracture.hpp"
+#include "fracture/piece_io.hpp"
+#include "python/src/bindings.hpp"
+#include "python/src/json_to_python.hpp"
+#include "python/src/numpy_io.hpp"
+#include "python/src/triangle_mesh_arrays.hpp"
+
+namespace py = pybind11;
+
+namespace dtlab::python {
+namespace {
+
+py::tuple point_tuple(const Point3& p) { return py::make_tuple(p.x, p.y, p.z); }
+
+// {"pieces": [per piece: vertices, faces, cut, cut_tag, volume, centroid, site,
+// interior_area, neighbors, parent], "manifest": `dtlab fracture --json`'s manifest}.
+py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std::uint64_t seed, double margin,
+                  const std::string& sampler, bool blue_noise, unsigned threads,
+                  const std::vector<std::size_t>& recurse, std::size_t recurse_pieces) {
+  const auto method = parse_sample_method(sampler);
+  if (!method || *method == SampleMethod::surface)
+    throw py::value_error("--sampler must be rays, sdf or winding (a volume sampler)");
+  if (pieces < 1 || pieces > 100000) throw py::value_error("--pieces: " + std::to_string(pieces) + " not in [1 - 100000]");
+  if (recurse_pieces < 1 || recurse_pieces > 10000)
+    throw py::value_error("--recurse-pieces: " + std::to_string(recurse_pieces) + " not in [1 - 10000]");
+  if (!(margin >= 0)) throw py::value_error("--margin: must be a non-negative number");
+  const TriangleMesh mesh = mesh_from_arrays(vertices, faces);
+  FractureOptions o;
+  o.pieces = pieces;
+  o.sampler = *method;
+  o.blue_noise = blue_noise;
+  o.seed = seed;
+  o.margin = margin;
+  o.threads = threads;
+  o.recurse = recurse;
+  o.recurse_pieces = recurse_pieces;
+  FractureResult r;
+  {
+    py::gil_scoped_release nogil;
+    r = fracture_mesh(mesh, o);  // std::invalid_argument (not closed, ...) -> ValueError
+  }
+  py::dict out;
+  out["manifest"] = json_to_python(fracture_manifest(r));
+  py::list list;
+  for (Piece& p : r.pieces) {
+    py::dict d;
+    const std::vector<char>& cut = p.geometry.cut;
+    py::array_t<bool> mask(static_cast<py::ssize_t>(cut.size()));
+    bool* m = mask.mutable_data();
+    for (std::size_t i = 0; i < cut.size(); ++i) m[i] = cut[i] != 0;
+    d["cut"] = mask;
+    d["cut_tag"] = to_numpy<std::int32_t, 1>(std::move(p.geometry.cut_tag));
+    d["vertices"] = points_to_numpy(std::move(p.geometry.mesh.vertices));
+    d["faces"] = to_numpy<std::uint32_t, 3>(std::move(p.geometry.mesh.triangles));
+    d["volume"] = p.volume;
+    d["centroid"] = point_tuple(p.centroid);
+    d["site"] = point_tuple(p.site);
+    d["interior_area"] = p.interior_area;
+    d["neighbors"] = to_numpy<std::uint32_t, 1>(std::move(p.neighbors));
+    d["parent"] = p.parent;
+    list.append(d);
+  }
+  out["pieces"] = list;
+  return out;
+}
+
+}  // namespace
+
+void bind_fracture(py::module_& m) {
+  m.def("fracture", &fracture, py::arg("vertices"), py::arg("faces"), py::arg("pieces"), py::arg("seed"),
+        py::arg("margin"), py::arg("sampler"), py::arg("blue_noise"), py::arg("threads"), py::arg("recurse"),
+        py::arg("recurse_pieces"), "Voronoi fracture of a closed mesh (see dtlab.fracture).");
+}
+
+}  // namespace dtlab::python

@@ -1,0 +1,31 @@
+// _core: the compiled half of the `dtlab` Python package. The public API, with its
+// result classes and docstrings, is dtlab/__init__.py; this module does the work.
+#include <CLI/CLI.hpp>
+
+#include "kernel/input_error.hpp"
+#include "python/src/bindings.hpp"
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "dtlab's C++ core (use the `dtlab` package, not this module).";
+  // Bad input is a ValueError carrying the CLI's message: a file's "file:line: reason",
+  // an option's "--name: reason".
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const dtlab::InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const CLI::ParseError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  m.attr("__version__") = "0.1.0";
+  dtlab::python::bind_tetrahedralize(m);
+  dtlab::python::bind_check(m);
+  dtlab::python::bind_oracle(m);
+  dtlab::python::bind_voronoi(m);
+  dtlab::python::bind_sampling(m);
+  dtlab::python::bind_fracture(m);
+  dtlab::python::bind_fuzz(m);
+}

@@ -1,0 +1,116 @@
+"""Bad input raises ValueError (with the CLI's message where the CLI has one)."""
+import numpy as np
+import pytest
+
+import dtlab
+
+GOOD = np.random.default_rng(3).random((20, 3))
+TETS = dtlab.tetrahedralize(GOOD).tets
+
+
+def calls(points):
+    """Every function that takes a point array, called on `points`."""
+    return {
+        "tetrahedralize": lambda: dtlab.tetrahedralize(points),
+        "check": lambda: dtlab.check(points, TETS),
+        "compare": lambda: dtlab.compare(points, TETS, TETS),
+        "oracle": lambda: dtlab.oracle(points, against=["cgal"]),
+        "voronoi": lambda: dtlab.voronoi(points),
+    }
+
+
+@pytest.mark.parametrize("name", list(calls(GOOD)))
+@pytest.mark.parametrize("points,message", [
+    (np.zeros((5, 2)), r"points must be an \(n, 3\) array, got shape \(5, 2\)"),
+    (np.zeros(12), r"got shape \(12,\)"),
+    (np.zeros((2, 3, 3)), r"got shape \(2, 3, 3\)"),
+    (np.array([["a", "b", "c"]]), "real numbers"),
+    ([[0, 0, 0], [1, 0], [0, 1, 0]], "points must be an"),
+])
+def test_wrong_shape(name, points, message):
+    with pytest.raises(ValueError, match=message):
+        calls(points)[name]()
+
+
+@pytest.mark.parametrize("name", list(calls(GOOD)))
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_non_finite(name, bad):
+    pts = GOOD.copy()
+    pts[7, 1] = bad
+    with pytest.raises(ValueError, match=r"points\[7\]: non-finite coordinate"):
+        calls(pts)[name]()
+
+
+@pytest.mark.parametrize("name", ["tetrahedralize", "check", "compare", "oracle"])
+def test_fewer_than_4_points(name):
+    with pytest.raises(ValueError, match="fewer than 4 points"):
+        calls(GOOD[:3])[name]()
+
+
+def test_lower_dimensional_input():
+    flat = GOOD.copy()
+    flat[:, 2] = 0
+    with pytest.raises(ValueError, match="coplanar"):
+        dtlab.tetrahedralize(flat)
+    with pytest.raises(ValueError, match="collinear"):
+        dtlab.tetrahedralize(np.outer(np.arange(10.0), [1, 2, 3]))
+
+
+@pytest.mark.parametrize("kw,message", [
+    ({"predicates": "fast"}, "--predicates: fast not in"),
+    ({"perturb": "yes"}, "--perturb"),
+    ({"order": "random"}, "--order"),
+    ({"boundary": "box"}, "--boundary: expected infinite or bigtet"),
+    ({"boundary": "bigtet:-1"}, "--boundary: FACTOR must be positive"),
+    ({"eps_mode": "scaled"}, "--eps-mode"),
+    ({"seed": -1}, "--seed"),
+])
+def test_bad_options(kw, message):
+    with pytest.raises(ValueError, match=message):
+        dtlab.tetrahedralize(GOOD, **kw)
+
+
+def test_bad_tets():
+    with pytest.raises(ValueError, match=r"tets must be an \(m, 4\) array"):
+        dtlab.check(GOOD, TETS[:, :3])
+    with pytest.raises(ValueError, match=r"tets\[2, 1\]: vertex index 20 out of range \(20 points\)"):
+        bad = TETS.astype(np.int64)
+        bad[2, 1] = 20
+        dtlab.check(GOOD, bad)
+    with pytest.raises(ValueError, match="vertex index -1 out of range"):
+        bad = TETS.astype(np.int64)
+        bad[0, 0] = -1
+        dtlab.check(GOOD, bad)
+    with pytest.raises(ValueError, match="integer array"):
+        dtlab.check(GOOD, TETS.astype(float))
+    with pytest.raises(ValueError, match="orientation: 'left' not in"):
+        dtlab.check(GOOD, TETS, orientation="left")
+    with pytest.raises(ValueError, match=r"tets_b\[0, 0\]"):
+        bad = TETS.astype(np.int64)
+        bad[0, 0] = 99
+        dtlab.compare(GOOD, TETS, bad)
+
+
+def test_bad_other_arguments(tmp_path):
+    with pytest.raises(ValueError, match="unknown oracle 'qhull'"):
+        dtlab.oracle(GOOD, against=["qhull"])
+    with pytest.raises(ValueError, match="--box needs"):
+        dtlab.voronoi(GOOD, box=(1, 0, 0, 0, 1, 1))
+    with pytest.raises(ValueError, match="no points"):
+        dtlab.voronoi(np.zeros((0, 3)))
+    with pytest.raises(ValueError, match="--method"):
+        dtlab.sample("builtin", 10, method="grid")
+    with pytest.raises(ValueError, match="--family: unknown family 'nope'"):
+        dtlab.fuzz.generate("nope", 10, 1)
+    with pytest.raises(ValueError, match="mesh has no triangles"):
+        dtlab.sample((GOOD, np.zeros((0, 3), dtype=np.int32)), 10)
+    with pytest.raises(ValueError, match=r"faces\[0, 2\]: vertex index 20 out of range"):
+        dtlab.sample((GOOD, np.array([[0, 1, 20]])), 10)
+    with pytest.raises(ValueError, match="--sampler must be rays, sdf or winding"):
+        dtlab.fracture(*dtlab.read_mesh("builtin"), pieces=2, sampler="surface")
+    bad = tmp_path / "bad.off"
+    bad.write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 nan\n3 0 1 2\n")
+    with pytest.raises(ValueError, match=str(bad) + ":5: "):
+        dtlab.read_mesh(bad)
+    with pytest.raises(FileNotFoundError):
+        dtlab.read_mesh(tmp_path / "missing.off")
