@@ -41,16 +41,20 @@ def run(name: str, points: np.ndarray) -> bool:
     our_check = dtlab.check(points, ours.tets, orientation="positive")
     try:
         t2 = time.perf_counter()
-        simplices = Delaunay(points).simplices
+        qhull = Delaunay(points)
         t3 = time.perf_counter()
     except Exception as e:  # Qhull refuses some degenerate inputs (QhullError)
         print(f"{name:<18} {len(points):>6}  dtlab {len(ours.tets):>7} tets {t1 - t0:6.3f} s {short(our_check):<12}"
               f"  scipy: {type(e).__name__}")
         return our_check.ok
+    simplices = qhull.simplices
     scipy_check = dtlab.check(points, simplices)
     verdict = dtlab.compare(points, simplices, ours.tets).verdict
+    # Points Qhull left out of every simplex (exact or near repeats, "coplanar" to it).
+    left_out = len(np.unique(qhull.coplanar[:, 0])) if len(qhull.coplanar) else 0
     print(f"{name:<18} {len(points):>6}  dtlab {len(ours.tets):>7} tets {t1 - t0:6.3f} s {short(our_check):<12}"
-          f"  scipy {len(simplices):>7} tets {t3 - t2:6.3f} s {short(scipy_check):<40}  scipy vs dtlab: {verdict}")
+          f"  scipy {len(simplices):>7} tets {t3 - t2:6.3f} s {left_out:>5} left out  {short(scipy_check):<40}"
+          f"  scipy vs dtlab: {verdict}")
     return our_check.ok
 
 
