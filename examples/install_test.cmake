@@ -1,0 +1,25 @@
+# CTest install_example: `cmake --install` dtlab into a fresh prefix, then configure,
+# build and run examples/kernel_api against it, as another project would.
+#   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK=... -DGENERATOR=... -DCXX=... -P install_test.cmake
+file(REMOVE_RECURSE "${WORK}")
+set(prefix "${WORK}/prefix")
+function(step what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "install_example: ${what} failed (${rc}):\n${out}")
+  endif()
+  set(step_output "${out}" PARENT_SCOPE)
+endfunction()
+step("cmake --install" ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
+foreach(f bin/dtlab include/dtlab/kernel/build.hpp include/dtlab/predicates/point.hpp)
+  if(NOT EXISTS "${prefix}/${f}")
+    message(FATAL_ERROR "install_example: ${prefix}/${f} was not installed")
+  endif()
+endforeach()
+step("dtlab --version" "${prefix}/bin/dtlab" --version)
+message(STATUS "${step_output}")
+step("configuring the example" ${CMAKE_COMMAND} -S "${SOURCE_DIR}/examples/kernel_api" -B "${WORK}/build"
+     -G "${GENERATOR}" -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${prefix}")
+step("building the example" ${CMAKE_COMMAND} --build "${WORK}/build")
+step("running the example" "${WORK}/build/kernel_api")
+message(STATUS "kernel_api: ${step_output}")
