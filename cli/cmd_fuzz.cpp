@@ -144,13 +144,21 @@ nlohmann::json witness_json(const fuzz::ReplayResult& r) {
 void print_witness(const fuzz::ReplayResult& r) {
   if (!r.run.defects.empty()) {
     std::string counts;
-    for (const auto& [kind, n] : r.run.defects) counts += (counts.empty() ? "" : ", ") + kind + " " + std::to_string(n);
+    for (const auto& [kind, n] : r.run.defects) {
+      if (!counts.empty()) counts += ", ";
+      counts += kind;
+      counts += ' ';
+      counts += std::to_string(n);
+    }
     std::printf("         defects: %s\n", counts.c_str());
   }
   if (!r.run.detail.empty()) std::printf("         witness: %s\n", r.run.detail.c_str());
   if (!r.run.witness_tets.empty()) {
     std::string tets;
-    for (auto t : r.run.witness_tets) tets += " " + std::to_string(t);
+    for (auto t : r.run.witness_tets) {
+      tets += ' ';
+      tets += std::to_string(t);
+    }
     std::printf("         tets:%s\n", tets.c_str());
   }
   if (!r.run.witness_vertices.empty()) {
@@ -216,7 +224,9 @@ void print_summary(const std::vector<fuzz::CaseRecord>& records, bool json, std:
 // as summary.md / summary.json into --out (default: the one DIR). Exit 0 once written,
 // whatever the results say; 2 when a folder has no results.
 int run_summarize(const FuzzArgs& a) {
-  std::vector<std::string> dirs = a.summarize_dirs;
+  std::vector<std::string> dirs;
+  for (const auto& d : a.summarize_dirs)
+    if (!d.empty()) dirs.push_back(d);  // `--summarize` given without a value may leave ""
   if (dirs.empty() && !a.out.empty()) dirs.push_back(a.out);
   if (dirs.empty()) usage_error("--summarize needs campaign folders (or --out DIR)");
   for (const auto& d : dirs)

@@ -18,6 +18,16 @@ foreach(f bin/dtlab include/dtlab/kernel/build.hpp include/dtlab/predicates/poin
 endforeach()
 step("dtlab --version" "${prefix}/bin/dtlab" --version)
 message(STATUS "${step_output}")
+foreach(line "dtlab [0-9]+\\.[0-9]+\\.[0-9]+" "commit [0-9a-f]+|commit unknown" "CGAL [0-9]" "GMP [0-9]" "TetGen ")
+  if(NOT step_output MATCHES "${line}")
+    message(FATAL_ERROR "install_example: dtlab --version lacks '${line}':\n${step_output}")
+  endif()
+endforeach()
+execute_process(COMMAND git -C "${SOURCE_DIR}" rev-parse --short=12 HEAD OUTPUT_VARIABLE head
+                RESULT_VARIABLE rc ERROR_QUIET OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(rc EQUAL 0 AND NOT step_output MATCHES "commit ${head}")
+  message(FATAL_ERROR "install_example: --version does not name the checkout's commit ${head}:\n${step_output}")
+endif()
 step("configuring the example" ${CMAKE_COMMAND} -S "${SOURCE_DIR}/examples/kernel_api" -B "${WORK}/build"
      -G "${GENERATOR}" -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${prefix}")
 step("building the example" ${CMAKE_COMMAND} --build "${WORK}/build")

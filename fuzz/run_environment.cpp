@@ -68,7 +68,8 @@ std::string command_line() {
       arg += c;
       continue;
     }
-    out += (out.empty() ? "" : " ") + shell_quote(arg);
+    if (!out.empty()) out += ' ';
+    out += shell_quote(arg);
     arg.clear();
   }
   return out;

@@ -89,7 +89,12 @@ std::string summary_table(const Summary& s, bool with_timing) {
 
 std::string summary_markdown(const Summary& s) {
   std::string builds;
-  for (const auto& b : s.builds) builds += (builds.empty() ? "" : ", ") + ("`" + b + "`");
+  for (const auto& b : s.builds) {
+    if (!builds.empty()) builds += ", ";
+    builds += '`';
+    builds += b;
+    builds += '`';
+  }
   std::string out = "# Fuzz campaign summary\n\n";
   out += std::to_string(s.cases()) + " results (case x backend), " + std::to_string(s.failures()) +
          " failures. dtlab build(s) (version commit): " + (builds.empty() ? "none" : builds) + ".\n\n";

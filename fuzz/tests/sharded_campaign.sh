@@ -48,5 +48,11 @@ grep -q '"dtlab_commit"' "$out/whole/results.jsonl" || { echo "FAIL: results lin
 grep -q '"ci95"' "$out/whole/summary.json" || { echo "FAIL: summary.json has no intervals"; status=1; }
 failures=$(grep -o '"failing": [0-9]*' "$out/whole/summary.json" | head -1 | grep -o '[0-9]*$')
 [ "${failures:-0}" -gt 0 ] || { echo "FAIL: naive found no failure, the comparison is vacuous"; status=1; }
+# `fuzz --replay` prints the checker's witness of a failing case, not only its kind
+run "$dtlab" fuzz --family kettner_grid --cases 2 --points 24 --predicates naive --perturb none --out "$out/witness"
+replay=$("$dtlab" fuzz --replay "$out/witness" || true)
+if ! grep -q "^FAIL" <<<"$replay" || ! grep -q "defects:" <<<"$replay" || ! grep -Eq "point [0-9]+ \(" <<<"$replay"; then
+  echo "FAIL: the replay shows no witness:"; echo "$replay" | head -20; status=1
+fi
 [ $status -eq 0 ] && echo "sharded summaries identical to the unsharded one ($failures failures)"
 exit $status
