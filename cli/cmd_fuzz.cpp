@@ -152,7 +152,8 @@ void print_witness(const fuzz::ReplayResult& r) {
     }
     std::printf("         defects: %s\n", counts.c_str());
   }
-  if (!r.run.detail.empty()) std::printf("         witness: %s\n", r.run.detail.c_str());
+  if (!r.run.detail.empty())
+    std::printf("         %s: %s\n", r.run.defects.empty() ? "failure" : "witness", r.run.detail.c_str());
   if (!r.run.witness_tets.empty()) {
     std::string tets;
     for (auto t : r.run.witness_tets) {
@@ -323,7 +324,7 @@ void add_fuzz_command(CLI::App& app, int& rc) {
                                     "summary.md and summary.json in --out, without running")
                         ->expected(0, -1);
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
-  sub->callback([args, pred, &rc] {
+  sub->callback([args, pred, summarize, &rc] {
     args->predicates_given = pred->count() > 0;
     args->summarize_only = summarize->count() > 0;
     rc = run_fuzz(*args);
