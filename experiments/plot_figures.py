@@ -39,8 +39,9 @@ def wilson(k, n, z=1.959963984540054):
 def rate_errorbar(ax, xs, ks, ns, **style):
     """Failure rates k/n at xs with their 95% Wilson intervals as error bars."""
     r = [wilson(k, n) for k, n in zip(ks, ns)]
+    # the axis ends at exactly 0 and 1: markers there are drawn whole, not clipped
     ax.errorbar(xs, [x[0] for x in r], yerr=[[x[0] - x[1] for x in r], [x[2] - x[0] for x in r]], capsize=2,
-                **style)
+                clip_on=False, **style)
 
 
 def rate_axis(ax, label):
