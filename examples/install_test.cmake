@@ -23,10 +23,17 @@ foreach(line "dtlab [0-9]+\\.[0-9]+\\.[0-9]+" "commit [0-9a-f]+|commit unknown" 
     message(FATAL_ERROR "install_example: dtlab --version lacks '${line}':\n${step_output}")
   endif()
 endforeach()
-execute_process(COMMAND git -C "${SOURCE_DIR}" rev-parse --short=12 HEAD OUTPUT_VARIABLE head
-                RESULT_VARIABLE rc ERROR_QUIET OUTPUT_STRIP_TRAILING_WHITESPACE)
-if(rc EQUAL 0 AND NOT step_output MATCHES "commit ${head}")
-  message(FATAL_ERROR "install_example: --version does not name the checkout's commit ${head}:\n${step_output}")
+# the commit it names is a real commit of this checkout (it may be older than HEAD
+# when commits were made after the build)
+if(step_output MATCHES "commit ([0-9a-f]+)")
+  set(commit "${CMAKE_MATCH_1}")
+  execute_process(COMMAND git -C "${SOURCE_DIR}" rev-parse --git-dir RESULT_VARIABLE in_git OUTPUT_QUIET ERROR_QUIET)
+  if(in_git EQUAL 0)
+    execute_process(COMMAND git -C "${SOURCE_DIR}" cat-file -e "${commit}^{commit}" RESULT_VARIABLE rc ERROR_QUIET)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "install_example: --version names commit ${commit}, not one of this checkout")
+    endif()
+  endif()
 endif()
 step("configuring the example" ${CMAKE_COMMAND} -S "${SOURCE_DIR}/examples/kernel_api" -B "${WORK}/build"
      -G "${GENERATOR}" -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=Release "-DCMAKE_PREFIX_PATH=${prefix}")
