@@ -79,6 +79,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
   CLI::App* b = sub->add_subcommand("benchmark", "time and memory of dtlab vs CGAL vs TetGen, predicate costs");
   b->add_option("--out", bench->out, "report folder")->capture_default_str();
   b->add_flag("--large", bench->large, "also n = 10^7 uniform and 10^6 for the other distributions");
+  b->add_flag("--quick", bench->quick, "n up to 10^4, fewer predicate calls (seconds instead of minutes)");
   b->add_option("--runs", bench->runs, "runs per tool and size for n <= 10^5 (larger n: 1 run)")
       ->check(CLI::PositiveNumber)->capture_default_str();
   b->add_option("--seed", bench->seed, "seed of the generated points")->capture_default_str();
@@ -92,6 +93,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
     std::vector<std::string> args = {"--out", bench->out.string(), "--runs", std::to_string(bench->runs), "--seed",
                                      std::to_string(bench->seed)};
     if (bench->large) args.push_back("--large");
+    if (bench->quick) args.push_back("--quick");
     if (bench->max_n) args.insert(args.end(), {"--max-n", std::to_string(bench->max_n)});
     if (*bench_no_figures) args.push_back("--no-figures");
     bench->command_line = command_line(b->get_name(), args);

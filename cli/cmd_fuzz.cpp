@@ -2,7 +2,10 @@
 // the list of point-set families.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -16,9 +19,12 @@
 #include "oracle/compare.hpp"
 #include "oracle/tetgen_oracle.hpp"
 #include "fuzz/campaign.hpp"
+#include "fuzz/campaign_report.hpp"
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/summary.hpp"
+#include "kernel/input_error.hpp"
+#include "kernel/point_io.hpp"
 
 namespace dtlab::cli {
 
@@ -44,6 +50,7 @@ struct FuzzArgs {
   std::size_t shrink_budget = 500;
   bool list = false;
   bool summarize_only = false;
+  std::vector<std::string> summarize_dirs;
   bool json = false;
   bool predicates_given = false;
 };
@@ -116,6 +123,52 @@ void progress_bar(std::size_t done, std::size_t total, std::size_t failing) {
   std::fflush(stderr);
 }
 
+std::string point_text(const Point3& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", p.x, p.y, p.z);
+  return buf;
+}
+
+// The checker's witness of a failing replay: its detail, the defect counts, the
+// tets and the input points (index and exact coordinates) it names.
+nlohmann::json witness_json(const fuzz::ReplayResult& r) {
+  nlohmann::json points = nlohmann::json::array();
+  if (!r.run.witness_vertices.empty()) {
+    const auto input = read_points(r.file).points;
+    for (auto v : r.run.witness_vertices)
+      if (v < input.size()) points.push_back({{"index", v}, {"xyz", {input[v].x, input[v].y, input[v].z}}});
+  }
+  return {{"detail", r.run.detail}, {"defects", r.run.defects}, {"tets", r.run.witness_tets}, {"points", points}};
+}
+
+void print_witness(const fuzz::ReplayResult& r) {
+  if (!r.run.defects.empty()) {
+    std::string counts;
+    for (const auto& [kind, n] : r.run.defects) {
+      if (!counts.empty()) counts += ", ";
+      counts += kind;
+      counts += ' ';
+      counts += std::to_string(n);
+    }
+    std::printf("         defects: %s\n", counts.c_str());
+  }
+  if (!r.run.detail.empty())
+    std::printf("         %s: %s\n", r.run.defects.empty() ? "failure" : "witness", r.run.detail.c_str());
+  if (!r.run.witness_tets.empty()) {
+    std::string tets;
+    for (auto t : r.run.witness_tets) {
+      tets += ' ';
+      tets += std::to_string(t);
+    }
+    std::printf("         tets:%s\n", tets.c_str());
+  }
+  if (!r.run.witness_vertices.empty()) {
+    const auto input = read_points(r.file).points;
+    for (auto v : r.run.witness_vertices)
+      if (v < input.size()) std::printf("         point %u %s\n", v, point_text(input[v]).c_str());
+  }
+}
+
 int run_replay(const FuzzArgs& a) {
   fuzz::ReplayOptions options;
   if (a.predicates_given) options.backends = backends_of(a);
@@ -130,13 +183,16 @@ int run_replay(const FuzzArgs& a) {
   for (const auto& r : results) {
     failing += !r.run.ok();
     if (a.json) {
-      lines.push_back({{"file", r.file}, {"backend", r.backend}, {"boundary", r.boundary},
-                       {"outcome", r.run.outcome}, {"recorded", r.recorded_outcome},
-                       {"ok", r.run.ok()}, {"detail", r.run.detail}});
+      nlohmann::json line = {{"file", r.file}, {"backend", r.backend}, {"boundary", r.boundary},
+                             {"outcome", r.run.outcome}, {"recorded", r.recorded_outcome},
+                             {"ok", r.run.ok()}, {"detail", r.run.detail}, {"defects", r.run.defects}};
+      if (!r.run.ok()) line["witness"] = witness_json(r);
+      lines.push_back(std::move(line));
     } else {
       std::printf("%-8s %-14s %-24s %s%s\n", r.run.ok() ? "ok" : "FAIL", r.backend.c_str(),
                   r.run.outcome.c_str(), r.file.c_str(),
                   r.recorded_outcome.empty() ? "" : (" (recorded: " + r.recorded_outcome + ")").c_str());
+      if (!r.run.ok()) print_witness(r);
     }
   }
   if (a.json) {
@@ -165,20 +221,39 @@ void print_summary(const std::vector<fuzz::CaseRecord>& records, bool json, std:
   }
 }
 
+// `--summarize [DIR...]`: the merged summary of campaign folders (shards), written
+// as summary.md / summary.json into --out (default: the one DIR). Exit 0 once written,
+// whatever the results say; 2 when a folder has no results.
+int run_summarize(const FuzzArgs& a) {
+  std::vector<std::string> dirs;
+  for (const auto& d : a.summarize_dirs)
+    if (!d.empty()) dirs.push_back(d);  // `--summarize` given without a value may leave ""
+  if (dirs.empty() && !a.out.empty()) dirs.push_back(a.out);
+  if (dirs.empty()) usage_error("--summarize needs campaign folders (or --out DIR)");
+  for (const auto& d : dirs)
+    if (fuzz::read_records(d).empty()) throw InputError(d, 0, "no campaign results (results*.jsonl) in this folder");
+  const auto records = fuzz::read_campaigns(dirs);
+  const std::string out = !a.out.empty() ? a.out : dirs.size() == 1 ? dirs.front() : "";
+  if (out.empty()) usage_error("--summarize with several folders needs --out DIR for the merged summary");
+  std::filesystem::create_directories(out);
+  fuzz::write_summary_files(out, fuzz::summarize(records));
+  if (std::find(dirs.begin(), dirs.end(), out) == dirs.end()) {
+    const nlohmann::json env = {{"merged_from", dirs}, {"environments", fuzz::read_environments(dirs)}};
+    std::ofstream(std::filesystem::path(out) / "environment.json") << env.dump(2) << "\n";
+  }
+  print_summary(records, a.json, 0, records.size());
+  if (!a.json) std::printf("wrote %s/summary.md and summary.json\n", out.c_str());
+  return kOk;
+}
+
 int run_fuzz(const FuzzArgs& a) {
   if (a.list) {
     for (const auto& f : fuzz::families()) std::printf("%-16s %s\n", f.name.c_str(), f.description.c_str());
     return kOk;
   }
   if (!a.replay.empty()) return run_replay(a);
-  if (a.out.empty()) usage_error("--out DIR is required (or --replay, --list)");
-  if (a.summarize_only) {
-    const auto records = fuzz::read_records(a.out);
-    print_summary(records, a.json, 0, records.size());
-    for (const auto& r : records)
-      if (!r.run.ok()) return kDefect;
-    return kOk;
-  }
+  if (a.summarize_only) return run_summarize(a);
+  if (a.out.empty()) usage_error("--out DIR is required (or --replay, --list, --summarize DIR)");
 
   fuzz::CampaignOptions o;
   if (a.families == "all") {
@@ -244,10 +319,14 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   sub->add_flag("--no-shrink", args->no_shrink, "do not shrink failing cases");
   sub->add_option("--shrink-budget", args->shrink_budget, "builds per shrunk case")->capture_default_str();
   sub->add_flag("--list", args->list, "list the point-set families and what each targets");
-  sub->add_flag("--summarize", args->summarize_only, "print the summary of --out DIR without running");
+  auto* summarize = sub->add_option("--summarize", args->summarize_dirs,
+                                    "[DIR...] merge the results of campaign folders (shards; default --out) into "
+                                    "summary.md and summary.json in --out, without running")
+                        ->expected(0, -1);
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
-  sub->callback([args, pred, &rc] {
+  sub->callback([args, pred, summarize, &rc] {
     args->predicates_given = pred->count() > 0;
+    args->summarize_only = summarize->count() > 0;
     rc = run_fuzz(*args);
   });
 }

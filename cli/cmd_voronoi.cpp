@@ -69,7 +69,15 @@ int run_voronoi(const VoronoiArgs& a) {
   } else {
     std::printf("%s: %zu cells, box volume %.17g, cell volume sum %.17g\n", a.input.c_str(), vd.cells.size(),
                 vd.box.volume(), m["cell_volume_sum"].get<double>());
-    if (a.check) std::printf("check: %zu defect(s)\n", defects);
+    if (a.check) {
+      std::printf("check: %zu defect(s)\n", defects);
+      const auto& bad = m["check"]["defects"];
+      for (std::size_t k = 0; k < bad.size() && k < 20; ++k)
+        std::printf("  cell %zu: %s\n", bad[k]["cell"].get<std::size_t>(), bad[k]["defect"].get<std::string>().c_str());
+      if (bad.size() > 20) std::printf("  ... %zu more in the --json manifest\n", bad.size() - 20);
+      const double rel = m["check"]["relative_volume_error"].get<double>();
+      if (rel > 1e-12) std::printf("  cell volumes sum to the box volume within %.3g (relative), more than 1e-12\n", rel);
+    }
     if (!a.out.empty())
       std::printf("wrote %s.json%s%s\n", a.out.c_str(), a.obj ? ", .obj" : "", a.vtu ? ", .vtu" : "");
   }

@@ -30,7 +30,7 @@ struct Plan {
 };
 
 std::vector<Plan> make_plan(const BenchmarkOptions& o) {
-  const std::size_t cap = o.max_n ? o.max_n : (o.large ? 10000000 : 1000000);
+  const std::size_t cap = o.max_n ? o.max_n : o.quick ? 10000 : (o.large ? 10000000 : 1000000);
   const std::size_t other = o.large ? 1000000 : 100000;
   std::vector<Plan> plan = {{"uniform", {}}, {"clustered", {}}, {"lattice", {}}, {"torus-winding", {}}};
   for (auto& p : plan)
@@ -72,6 +72,54 @@ std::string speedup_markdown(const json& rows) {
     const double d = get("dtlab"), c = get("cgal"), g = get("tetgen");
     o << table_row({key.first, std::to_string(key.second), d ? fmt("%.4f", d) : "-", c ? fmt("%.4f", c) : "-",
                     g ? fmt("%.4f", g) : "-", d && c ? fmt("%.2f", d / c) : "-", d && g ? fmt("%.2f", d / g) : "-"});
+  }
+  o << "\n";
+  return o.str();
+}
+
+Timing timing_of(const json& r) {
+  return {r["median_s"].get<double>(), r["min_s"].get<double>(), r["max_s"].get<double>(), r["runs"].get<int>()};
+}
+
+double stage_share(const json& row, const char* stage) {
+  const double calls = row["calls"].get<double>();
+  return row["stages"].contains(stage) && calls > 0 ? row["stages"][stage].get<double>() / calls : 0.0;
+}
+
+// Every sentence carries its number: timing claims from repeated runs, filter shares
+// from the stage counts of the same report.
+std::string findings_markdown(const json& rows, const json& pred) {
+  std::ostringstream o;
+  std::map<std::string, std::map<std::size_t, std::map<std::string, json>>> by;
+  for (const auto& r : rows)
+    if (r["ok"].get<bool>()) by[r["distribution"]][r["n"].get<std::size_t>()][r["tool"]] = r;
+  for (const auto& [dist, sizes] : by) {
+    // the largest n with repeated runs of all three tools
+    const std::map<std::string, json>* cell = nullptr;
+    std::size_t n = 0;
+    for (const auto& [size, tools] : sizes)
+      if (tools.size() == 3 && tools.at("dtlab")["runs"].get<int>() > 1) cell = &tools, n = size;
+    if (!cell) continue;
+    const json &d = cell->at("dtlab"), &c = cell->at("cgal"), &g = cell->at("tetgen");
+    o << "- `" << dist << "`, n = " << n << ": dtlab vs CGAL " << timing_claim(timing_of(d), timing_of(c))
+      << "; dtlab vs TetGen " << timing_claim(timing_of(d), timing_of(g)) << ". Peak memory above the fork "
+      << "baseline: dtlab " << fmt("%.0f", d["own_mb"]) << " MB, CGAL " << fmt("%.0f", c["own_mb"]) << " MB, TetGen "
+      << fmt("%.0f", g["own_mb"]) << " MB (TetGen: its whole process).\n";
+  }
+  std::map<std::string, std::map<std::string, json>> adaptive;
+  for (const auto& r : pred)
+    if (r["backend"] == "adaptive") adaptive[r["points"]][r["predicate"]] = r;
+  if (adaptive.count("uniform") && adaptive.count("near_degenerate")) {
+    const auto& u = adaptive["uniform"];
+    const auto& h = adaptive["near_degenerate"];
+    o << "- The semi-static filter of `adaptive` decided " << fmt("%.3g%%", 100 * stage_share(u.at("orient3d"), "semistatic"))
+      << " of orient3d and " << fmt("%.3g%%", 100 * stage_share(u.at("insphere"), "semistatic"))
+      << " of insphere calls on `uniform` tuples, and " << fmt("%.3g%%", 100 * stage_share(h.at("orient3d"), "semistatic"))
+      << " and " << fmt("%.3g%%", 100 * stage_share(h.at("insphere"), "semistatic"))
+      << " on `near_degenerate` tuples, where the rest went to the later stages (table below). Cost per call "
+         "(best of 3 passes): orient3d " << fmt("%.1f", u.at("orient3d")["ns_per_call"]) << " ns on uniform vs "
+      << fmt("%.1f", h.at("orient3d")["ns_per_call"]) << " ns on near_degenerate, insphere "
+      << fmt("%.1f", u.at("insphere")["ns_per_call"]) << " vs " << fmt("%.1f", h.at("insphere")["ns_per_call"]) << " ns.\n";
   }
   o << "\n";
   return o.str();
@@ -189,7 +237,8 @@ ExperimentResult run_benchmark(const BenchmarkOptions& options) {
       }
     }
   step("predicate costs");
-  const json pred = measure_predicate_costs(options.max_n && options.max_n < 100000 ? 200000 : 2000000, options.seed);
+  const json pred =
+      measure_predicate_costs(options.quick || (options.max_n && options.max_n < 100000) ? 200000 : 2000000, options.seed);
 
   write_csv(dir / "data" / "runs.csv", {"distribution", "n", "tool", "run", "ok", "seconds", "peak_mb", "tets", "note"},
             run_rows);
@@ -223,18 +272,26 @@ ExperimentResult run_benchmark(const BenchmarkOptions& options) {
        "(`baseline_mb` in `data/summary.csv`). TetGen runs as its own process: its peak is its own.\n\n";
   o << "Distributions: `uniform` (unit cube), `clustered` (1-6 clusters of radius 2^-4..2^-40), `lattice` "
        "(a full integer grid: massively cospherical), `torus-winding` (points sampled inside the bumpy torus "
-       "by the winding-number sampler). Single thread for every tool.\n\n";
+       "by the winding-number sampler). Single thread for every tool.";
+  if (options.quick)
+    o << " **Quick run** (`--quick`): n up to " << (options.max_n ? options.max_n : 10000)
+      << " and fewer predicate calls; the full run goes to 10^6.";
+  o << "\n\n## Findings\n\nTimes are medians with [min, max] of the runs; a difference smaller than the spread "
+       "of the runs is reported as no measurable difference.\n\n"
+    << findings_markdown(rows, pred);
   o << "## Times and memory\n\n" << summary_markdown(rows);
   o << "## Ratios (median times)\n\n" << speedup_markdown(rows);
-  o << figure_markdown(dir, "fig_time.png", "Time vs n (log-log)");
-  o << figure_markdown(dir, "fig_rate.png", "Points per second vs n");
-  o << figure_markdown(dir, "fig_memory.png", "Peak memory vs n");
+  o << figure_markdown(dir, "fig_time.png", "Time vs n (log-log): median, bars from the fastest to the slowest run");
+  o << figure_markdown(dir, "fig_rate.png", "Million points per second vs n: median, bars from the slowest to the fastest run");
+  o << figure_markdown(dir, "fig_memory.png", "Peak memory above the fork baseline vs n (median of the runs)");
   o << "## Predicate cost per backend\n\n"
-       "Random tuples from 4096 points: `uniform` (general position) and `ulp_jitter` (exact degenerate "
-       "configurations nudged by one ulp: where filters fail). Adaptive stages counted in a second pass "
-       "(counting is not timed).\n\n"
+       "`uniform`: random tuples from 4096 uniform points (general position). `near_degenerate`: each "
+       "orient3d tuple has its 4th point computed (and rounded) on the plane of the first three, each insphere "
+       "tuple has 5 points rounded from one sphere, so the exact determinant is within the rounding error and "
+       "a float filter cannot decide it. `adaptive stages`: the share of calls each stage decided (`semistatic` "
+       "the filter, A..D Shewchuk's stages, `exact` the fallback), counted in a second, untimed pass.\n\n"
     << predicates_markdown(pred);
-  o << figure_markdown(dir, "fig_predicates.png", "Nanoseconds per predicate call");
+  o << figure_markdown(dir, "fig_predicates.png", "Nanoseconds per predicate call (best of 3 passes), uniform and near-degenerate tuples");
   o << "## Predicate calls and adaptive stages inside dtlab builds\n\n"
        "In-process builds of the same points with naive (no perturbation), adaptive+sos and exact+sos "
        "(exact only up to 10^5). A naive build that stops (`walk-cycle`) is fast because it did not finish.\n\n"

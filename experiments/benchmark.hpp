@@ -13,6 +13,7 @@ namespace dtlab::experiments {
 struct BenchmarkOptions {
   std::filesystem::path out = "reports/benchmark";
   bool large = false;        // 10^7 uniform, 10^6 for the other distributions
+  bool quick = false;        // n <= 10^4 and fewer predicate calls: seconds, says so in the report
   int runs = 3;              // runs per (tool, distribution, n) for n <= 10^5; 1 above
   std::uint64_t seed = 1;
   std::size_t max_n = 0;     // cap on n (0: 10^6, or 10^7 with --large)

@@ -11,6 +11,7 @@
 #include "experiments/report.hpp"
 #include "experiments/thesis_parts.hpp"
 #include "fuzz/outcome.hpp"
+#include "fuzz/rate_interval.hpp"
 
 namespace dtlab::experiments {
 
@@ -49,7 +50,9 @@ struct Tally {
   }
   double rate(int k) const { return cases ? double(k) / cases : 0; }
   nlohmann::json json() const {
-    return {{"cases", cases}, {"failed", failed}, {"crash", crash}, {"overlap_inverted", overlap},
+    const fuzz::RateInterval r = fuzz::wilson_interval(failed, cases);
+    return {{"cases", cases}, {"failed", failed}, {"rate", r.rate}, {"ci95_low", r.low}, {"ci95_high", r.high},
+            {"crash", crash}, {"overlap_inverted", overlap},
             {"missing_point", missing}, {"non_delaunay", non_delaunay},
             {"mean_build_ms", cases ? build_ms / cases : 0}, {"outcomes", outcomes}};
   }
@@ -102,7 +105,7 @@ nlohmann::json rates_section(const SectionContext& c) {
                                          "kettner_grid", "torus-rays", "torus-winding"};
   const std::vector<std::size_t> sizes = c.quick ? std::vector<std::size_t>{16, 64, 256}
                                                  : std::vector<std::size_t>{16, 64, 256, 1024, 4096};
-  const int cases = c.quick ? 4 : 16;
+  const int cases = c.quick ? 4 : 64;
   std::vector<PredicateSpec> backends = {{"naive", 0, false, false}, {"epsilon", 1e-12, false, false},
                                          {"adaptive", 0, false, true}, {"exact", 0, false, true}};
   std::vector<std::vector<std::string>> rows;
@@ -130,13 +133,14 @@ nlohmann::json rates_section(const SectionContext& c) {
         j["backend"] = label;
         cells.push_back(j);
         rows.push_back({label, fam, std::to_string(n), std::to_string(t.cases), std::to_string(t.failed),
-                        fmt("%.4f", t.rate(t.failed)), std::to_string(t.crash), std::to_string(t.overlap),
+                        fmt("%.4f", t.rate(t.failed)), fmt("%.4f", j["ci95_low"]), fmt("%.4f", j["ci95_high"]),
+                        std::to_string(t.crash), std::to_string(t.overlap),
                         std::to_string(t.missing), std::to_string(t.non_delaunay),
                         fmt("%.3f", t.cases ? t.build_ms / t.cases : 0), outcomes_text(t.outcomes)});
       }
     }
   write_csv(c.dir / "data" / "rates.csv",
-            {"backend", "family", "n", "cases", "failed", "failure_rate", "crash", "overlap_inverted",
+            {"backend", "family", "n", "cases", "failed", "failure_rate", "ci95_low", "ci95_high", "crash", "overlap_inverted",
              "missing_point", "non_delaunay", "mean_build_ms", "outcomes"},
             rows);
   return {{"families", families}, {"sizes", sizes}, {"cases", cases}, {"cells", cells},
@@ -148,7 +152,7 @@ nlohmann::json epsilon_section(const SectionContext& c) {
       c.quick ? std::vector<std::string>{"near_degenerate", "ulp_jitter"}
               : std::vector<std::string>{"clustered", "near_degenerate", "ulp_jitter", "kettner_grid", "torus-rays"};
   const std::size_t n = c.quick ? 128 : 256;
-  const int cases = c.quick ? 4 : 16;
+  const int cases = c.quick ? 4 : 64;
   std::vector<double> eps;
   for (int k = -20; k <= -2; k += c.quick ? 6 : 2) eps.push_back(std::pow(10.0, k));
   std::vector<std::vector<std::string>> rows;
@@ -179,13 +183,14 @@ nlohmann::json epsilon_section(const SectionContext& c) {
         j["eps"] = e;
         cells.push_back(j);
         rows.push_back({fam, m, fmt("%.0e", e), std::to_string(n), std::to_string(t.cases), std::to_string(t.failed),
-                        fmt("%.4f", t.rate(t.failed)), std::to_string(t.crash), std::to_string(t.overlap),
+                        fmt("%.4f", t.rate(t.failed)), fmt("%.4f", j["ci95_low"]), fmt("%.4f", j["ci95_high"]),
+                        std::to_string(t.crash), std::to_string(t.overlap),
                         std::to_string(t.missing), std::to_string(t.non_delaunay), outcomes_text(t.outcomes)});
       }
     }
   }
   write_csv(c.dir / "data" / "epsilon.csv",
-            {"family", "mode", "eps", "n", "cases", "failed", "failure_rate", "crash", "overlap_inverted",
+            {"family", "mode", "eps", "n", "cases", "failed", "failure_rate", "ci95_low", "ci95_high", "crash", "overlap_inverted",
              "missing_point", "non_delaunay", "outcomes"},
             rows);
   return {{"families", families}, {"n", n}, {"cases", cases}, {"eps", eps}, {"cells", cells}};

@@ -23,6 +23,32 @@ BACKEND_STYLE = {
 TOOL_STYLE = {"dtlab": ("tab:green", "o"), "cgal": ("tab:blue", "s"), "tetgen": ("tab:purple", "^")}
 
 
+def wilson(k, n, z=1.959963984540054):
+    """95% Wilson score interval of k failures in n cases: (rate, low, high)."""
+    if n == 0:
+        return 0.0, 0.0, 1.0
+    p = k / n
+    centre = p + z * z / (2 * n)
+    spread = z * ((p * (1 - p) / n + z * z / (4 * n * n)) ** 0.5)
+    scale = 1 + z * z / n
+    low = 0.0 if k == 0 else (centre - spread) / scale
+    high = 1.0 if k == n else (centre + spread) / scale
+    return p, low, high
+
+
+def rate_errorbar(ax, xs, ks, ns, **style):
+    """Failure rates k/n at xs with their 95% Wilson intervals as error bars."""
+    r = [wilson(k, n) for k, n in zip(ks, ns)]
+    # the axis ends at exactly 0 and 1: markers there are drawn whole, not clipped
+    ax.errorbar(xs, [x[0] for x in r], yerr=[[x[0] - x[1] for x in r], [x[2] - x[0] for x in r]], capsize=2,
+                clip_on=False, **style)
+
+
+def rate_axis(ax, label):
+    ax.set_ylim(0, 1)
+    ax.set_ylabel(label)
+
+
 def save(fig, d, name):
     fig.tight_layout()
     fig.savefig(os.path.join(d, name), dpi=110)
@@ -46,20 +72,21 @@ def fig_rates(d, rates):
     fams = rates["families"]
     fig, axes = grid_axes(len(fams))
     cells = rates["cells"]
+    # coinciding lines stay visible by size (drawn largest first), never by moving them
     for ax, fam in zip(axes, fams):
-        for b, (color, marker) in BACKEND_STYLE.items():
-            pts = sorted((c["n"], c["failed"] / c["cases"]) for c in cells if c["family"] == fam and c["backend"] == b)
+        for k, (b, (color, marker)) in enumerate(BACKEND_STYLE.items()):
+            pts = sorted((c["n"], c["failed"], c["cases"]) for c in cells if c["family"] == fam and c["backend"] == b)
             if pts:
-                ax.plot([p[0] for p in pts], [p[1] for p in pts], color=color, marker=marker, label=b,
-                        alpha=0.85, lw=1.5)
+                rate_errorbar(ax, [p[0] for p in pts], [p[1] for p in pts], [p[2] for p in pts], color=color,
+                              marker=marker, label=b, alpha=0.85, lw=3.0 - 0.6 * k, ms=9 - 1.5 * k)
         ax.set_xscale("log", base=2)
-        ax.set_ylim(-0.04, 1.04)
+        rate_axis(ax, "failure rate")
         ax.set_title(fam, fontsize=10)
         ax.set_xlabel("n (points)")
-        ax.set_ylabel("failing cases")
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=8)
-    fig.suptitle("Wrong results (build stopped or checker defect) per backend, %d cases per point" % rates["cases"])
+    fig.suptitle("Failure rate (build stopped or checker defect) per backend, %d cases per point, 95%% Wilson intervals"
+                 % rates["cases"])
     save(fig, d, "fig_rates.png")
 
     # naive: what goes wrong, pooled over families
@@ -75,13 +102,13 @@ def fig_rates(d, rates):
                 agg[c["n"]][1] += c["cases"]
         ns = sorted(agg)
         dashed = key == "crash"  # equal to "missing" when no missing-point defect: keep it visible
-        ax.plot(ns, [agg[n][0] / agg[n][1] for n in ns], marker="x" if dashed else "o", ls="--" if dashed else "-",
-                lw=2.5 if dashed else 1.5, ms=9 if dashed else 6, label=label, zorder=3 if dashed else 2)
+        rate_errorbar(ax, ns, [agg[n][0] for n in ns], [agg[n][1] for n in ns], marker="x" if dashed else "o",
+                      ls="--" if dashed else "-", lw=2.5 if dashed else 1.5, ms=9 if dashed else 6, label=label,
+                      zorder=3 if dashed else 2)
     ax.set_xscale("log", base=2)
-    ax.set_ylim(-0.03, 1.03)
+    rate_axis(ax, "share of naive cases")
     ax.set_xlabel("n (points)")
-    ax.set_ylabel("share of naive cases")
-    ax.set_title("Naive floating point, every family but uniform pooled")
+    ax.set_title("Naive floating point, every family but uniform pooled\n(95% Wilson intervals)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     save(fig, d, "fig_naive_kinds.png")
@@ -93,21 +120,23 @@ def fig_epsilon(d, eps):
     colors = plt.cm.tab10.colors
     for ax, mode in zip(axes, ["absolute", "relative"]):
         for i, fam in enumerate(fams):
-            pts = sorted((c["eps"], c["failed"] / c["cases"]) for c in eps["cells"]
+            pts = sorted((c["eps"], c["failed"], c["cases"]) for c in eps["cells"]
                          if c["family"] == fam and c["mode"] == mode)
             base = [c["failed"] / c["cases"] for c in eps["cells"] if c["family"] == fam and c["mode"] == "naive"]
-            off = 0.012 * (i - len(fams) / 2)  # keeps coinciding lines apart
-            ax.plot([p[0] for p in pts], [p[1] + off for p in pts], marker="o", color=colors[i], label=fam)
+            # the true values, unshifted: coinciding lines stay visible by size (largest first)
+            rate_errorbar(ax, [p[0] for p in pts], [p[1] for p in pts], [p[2] for p in pts], marker="o",
+                          color=colors[i], label=fam, lw=3.2 - 0.5 * i, ms=9 - 1.2 * i, alpha=0.8)
             if base:
                 ax.axhline(base[0], color=colors[i], ls=":", lw=1)
         ax.set_xscale("log")
-        ax.set_ylim(-0.03, 1.03)
+        ax.set_ylim(0, 1)
         ax.set_xlabel("eps (%s band)" % mode)
         ax.set_title("epsilon predicates, %s: |det| <= eps%s" % (mode, "" if mode == "absolute" else " * M^k"))
         ax.grid(alpha=0.3)
-    axes[0].set_ylabel("failing cases (dotted: naive)")
+    axes[0].set_ylabel("failure rate (dotted: naive)")
     axes[0].legend(fontsize=8)
-    fig.suptitle("A tolerance does not fix it (n = %d, %d cases per point)" % (eps["n"], eps["cases"]))
+    fig.suptitle("A tolerance does not fix it (n = %d, %d cases per point, 95%% Wilson intervals)"
+                 % (eps["n"], eps["cases"]))
     save(fig, d, "fig_epsilon.png")
 
 
@@ -119,14 +148,16 @@ def fig_bigtet(d, big):
         for n in big["sizes"]:
             cells = [c for c in big["cells"] if c["family"] == fam and c["n"] == n]
             fs = sorted(set(c["factor"] for c in cells))
-            miss, wrong = [], []
+            miss, wrong, count = [], [], []
             for f in fs:
                 cs = [c for c in cells if c["factor"] == f]
                 miss.append(sum(1.0 if c["failure"] else c["missing"] / max(1, c["reference_tets"]) for c in cs) / len(cs))
-                wrong.append(sum(1 for c in cs if c["failure"] or c["missing"] or c["extra"]) / len(cs))
+                wrong.append(sum(1 for c in cs if c["failure"] or c["missing"] or c["extra"]))
+                count.append(len(cs))
             style = "-" if n == big["sizes"][0] else "--"
             axes[0].plot(fs, miss, style, marker="o", ms=3, color=colors[i % 10], label="%s n=%d" % (fam, n))
-            axes[1].plot(fs, wrong, style, marker="o", ms=3, color=colors[i % 10], label="%s n=%d" % (fam, n))
+            rate_errorbar(axes[1], fs, wrong, count, ls=style, marker="o", ms=3, color=colors[i % 10],
+                          label="%s n=%d" % (fam, n))
         i += 1
     for ax in axes:
         ax.set_xscale("log")
@@ -135,10 +166,9 @@ def fig_bigtet(d, big):
     axes[0].set_yscale("symlog", linthresh=1e-3)
     axes[0].set_ylim(0, 1)
     axes[0].set_ylabel("share of true DT tets missing (mean)")
-    axes[1].set_ylabel("inputs whose result is not the DT")
-    axes[1].set_ylim(-0.03, 1.03)
+    rate_axis(axes[1], "share of inputs whose result is not the DT")
     axes[1].legend(fontsize=7)
-    fig.suptitle("The big enclosing tetrahedron vs the infinite vertex (adaptive+sos)")
+    fig.suptitle("The big enclosing tetrahedron vs the infinite vertex (adaptive+sos; right: 95% Wilson intervals)")
     save(fig, d, "fig_bigtet.png")
 
 
@@ -149,13 +179,15 @@ def fig_cost(d, cost):
     fig, ax = plt.subplots(figsize=(max(6, 1.3 * len(groups)), 4))
     w = 0.8 / len(backends)
     for j, b in enumerate(backends):
-        xs, ys = [], []
+        xs, ys, lo, hi = [], [], [], []
         for i, g in enumerate(groups):
             for c in cells:
                 if (c["source"], c["n"]) == g and c["backend"] == b:
                     xs.append(i + (j - 1.5) * w)
                     ys.append(c["median_s"])
-        ax.bar(xs, ys, width=w, color=BACKEND_STYLE[b][0], label=b)
+                    lo.append(c["median_s"] - c["min_s"])
+                    hi.append(c["max_s"] - c["median_s"])
+        ax.bar(xs, ys, width=w, color=BACKEND_STYLE[b][0], label=b, yerr=[lo, hi], capsize=2)
     for i, g in enumerate(groups):
         for j, b in enumerate(backends):
             for c in cells:
@@ -165,8 +197,8 @@ def fig_cost(d, cost):
     ax.set_xticks(range(len(groups)))
     ax.set_xticklabels(["%s\nn=%d" % g for g in groups], fontsize=8)
     ax.set_yscale("log")
-    ax.set_ylabel("build time, s (median)")
-    ax.set_title("Cost of robustness (red x: wrong result)")
+    ax.set_ylabel("build time, s (median; bars: min to max)")
+    ax.set_title("Cost of robustness, %d runs per bar (exact at 10^5: 1) (red x: wrong result)" % cost["runs"])
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3, axis="y")
     save(fig, d, "fig_cost.png")
@@ -176,11 +208,12 @@ def fig_sampling(d, s):
     fig, ax = plt.subplots(figsize=(6.4, 4))
     colors = {"rays": "tab:red", "sdf": "tab:orange", "winding": "tab:green"}
     for m in ["rays", "sdf", "winding"]:
-        pts = sorted((c["removed_fraction"], c["outside_fraction"]) for c in s["cells"] if c["method"] == m)
-        ax.plot([100 * p[0] for p in pts], [100 * p[1] for p in pts], marker="o", color=colors[m], label=m)
+        pts = sorted((c["removed_fraction"], c["outside"], c["points"]) for c in s["cells"] if c["method"] == m)
+        rate_errorbar(ax, [100 * p[0] for p in pts], [p[1] for p in pts], [p[2] for p in pts], marker="o",
+                      color=colors[m], label=m)
     ax.set_xlabel("faces removed from the bumpy torus (%)")
-    ax.set_ylabel("samples outside the solid (%)")
-    ax.set_title("Volume samplers on a mesh with holes (%d points each)" % s["count"])
+    rate_axis(ax, "share of samples outside the solid")
+    ax.set_title("Volume samplers on a mesh with holes\n(%d points each, 95%% Wilson intervals)" % s["count"])
     ax.grid(alpha=0.3)
     ax.legend()
     save(fig, d, "fig_sampling.png")
@@ -282,6 +315,10 @@ def fig_benchmark(d, res):
                 if key == "median_s":
                     ax.errorbar(xs, ys, yerr=[[p[1] - p[2] for p in pts], [p[3] - p[1] for p in pts]],
                                 color=color, marker=marker, label=tool, capsize=2)
+                elif key == "mpoints_per_s":  # from the slowest and the fastest run
+                    ax.errorbar(xs, ys, yerr=[[y - p[0] / p[3] / 1e6 for y, p in zip(ys, pts)],
+                                              [p[0] / p[2] / 1e6 - y for y, p in zip(ys, pts)]],
+                                color=color, marker=marker, label=tool, capsize=2)
                 else:
                     ax.plot(xs, ys, color=color, marker=marker, label=tool)
             ax.set_xscale("log")
@@ -297,7 +334,7 @@ def fig_benchmark(d, res):
     pred = res["predicates"]
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8), sharey=True)
     backends = ["naive", "epsilon", "adaptive", "exact"]
-    for ax, source in zip(axes, ["uniform", "ulp_jitter"]):
+    for ax, source in zip(axes, ["uniform", "near_degenerate"]):
         for j, p in enumerate(["orient3d", "insphere"]):
             ys = [next((r["ns_per_call"] for r in pred if r["points"] == source and r["backend"] == b
                         and r["predicate"] == p), 0) for b in backends]

@@ -1,6 +1,11 @@
 #pragma once
-// Cost of one predicate call per backend, on random tuples of general-position
-// points and of points one ulp away from exact degeneracies.
+// Cost of one predicate call per backend on two kinds of tuples: `uniform` (random
+// points in general position, where every filter succeeds) and `near_degenerate`
+// (each orient3d tuple has its 4th point rounded from the plane of the first three,
+// each insphere tuple has 5 points rounded from one sphere: the exact determinant is
+// within the rounding error, so a float filter cannot decide it). For adaptive the
+// share of calls each stage decided is measured too: it shows whether the input is
+// really hard for the filter.
 #include <cstdint>
 
 #include <nlohmann/json.hpp>

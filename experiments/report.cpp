@@ -2,12 +2,17 @@
 
 #include <array>
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <thread>
 
 #include <sys/wait.h>
+
+#include "dtlab/build_info.hpp"
+#include "fuzz/rate_interval.hpp"
+#include "fuzz/run_environment.hpp"
 
 #ifndef DTLAB_EXPERIMENTS_DIR
 #define DTLAB_EXPERIMENTS_DIR "experiments"
@@ -35,17 +40,6 @@ std::string shell_line(const std::string& command) {
   if (std::fgets(buf.data(), static_cast<int>(buf.size()), p)) out = buf.data();
   pclose(p);
   return trim(out);
-}
-
-std::string proc_field(const char* file, const std::string& key) {
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind(key, 0) == 0) {
-      const auto colon = line.find(':');
-      if (colon != std::string::npos) return trim(line.substr(colon + 1));
-    }
-  return "";
 }
 
 std::string html_escape(const std::string& s) {
@@ -79,6 +73,15 @@ std::string inline_html(const std::string& s) {
         continue;
       }
     }
+    // *emphasis* (a caption): a single star before a non-space, closed before a non-space
+    if (s[i] == '*' && i + 1 < s.size() && s[i + 1] != '*' && s[i + 1] != ' ') {
+      const auto j = s.find('*', i + 1);
+      if (j != std::string::npos && s[j - 1] != ' ') {
+        o += "<em>" + inline_html(s.substr(i + 1, j - i - 1)) + "</em>";
+        i = j + 1;
+        continue;
+      }
+    }
     if (s.compare(i, 2, "![") == 0) {
       const auto close = s.find("](", i);
       const auto end = close == std::string::npos ? close : s.find(')', close);
@@ -108,27 +111,10 @@ std::vector<std::string> split_row(const std::string& line) {
 
 }  // namespace
 
-nlohmann::json machine_description() {
-  nlohmann::json m;
-  m["cpu"] = proc_field("/proc/cpuinfo", "model name");
-  m["hardware_threads"] = std::thread::hardware_concurrency();
-  m["memory"] = proc_field("/proc/meminfo", "MemTotal");
-  m["kernel"] = shell_line("uname -srm");
-  return m;
-}
+nlohmann::json machine_description() { return fuzz::machine_description(); }
 
 nlohmann::json version_description() {
-  nlohmann::json v;
-  v["dtlab"] = "0.1.0";
-  v["compiler"] = __VERSION__;
-#ifdef NDEBUG
-  v["build"] = "release (NDEBUG)";
-#else
-  v["build"] = "debug (assertions on)";
-#endif
-  v["git_commit"] = shell_line(std::string("git -C ") + DTLAB_EXPERIMENTS_DIR + " rev-parse --short HEAD");
-  v["cgal"] = shell_line("dpkg-query -W -f='${Version}' libcgal-dev");
-  v["tetgen"] = shell_line("dpkg-query -W -f='${Version}' tetgen");
+  nlohmann::json v = fuzz::build_description();
   v["python"] = shell_line("/usr/bin/python3 --version");
   v["matplotlib"] = shell_line("/usr/bin/python3 -c 'import matplotlib; print(matplotlib.__version__)'");
   return v;
@@ -136,13 +122,15 @@ nlohmann::json version_description() {
 
 nlohmann::json environment(const std::string& command_line, std::uint64_t seed) {
   return {{"command", command_line}, {"seed", seed}, {"machine", machine_description()},
-          {"versions", version_description()}, {"date_utc", shell_line("date -u +%Y-%m-%dT%H:%M:%SZ")}};
+          {"versions", version_description()}, {"date_utc", fuzz::utc_now()}};
 }
 
 std::string environment_markdown(const nlohmann::json& env) {
   std::ostringstream o;
   o << "## Reproduce\n\n```sh\n" << env.value("command", "") << "\n```\n\n";
-  o << "Seed: `" << env.value("seed", 0) << "`. Run at " << env.value("date_utc", "") << ".\n\n";
+  const auto& v = env["versions"];
+  o << "Seed: `" << env.value("seed", 0) << "`. Run at " << env.value("date_utc", "") << " by dtlab "
+    << v.value("dtlab", "") << ", commit `" << v.value("git_commit", "unknown") << "`.\n\n";
   o << "| | |\n| --- | --- |\n";
   const auto& m = env["machine"];
   o << "| CPU | " << m.value("cpu", "") << " |\n| hardware threads | " << m.value("hardware_threads", 0) << " |\n";
@@ -256,6 +244,20 @@ std::string fmt(const char* format, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, v);
   return buf;
+}
+
+std::string rate_cell(std::size_t failed, std::size_t cases) {
+  return fuzz::rate_text(fuzz::wilson_interval(failed, cases));
+}
+
+std::string timing_claim(const Timing& a, const Timing& b) {
+  char ranges[160];
+  std::snprintf(ranges, sizeof ranges, "median %.4f s [%.4f, %.4f] vs %.4f s [%.4f, %.4f], %d and %d runs", a.median,
+                a.min, a.max, b.median, b.min, b.max, a.runs, b.runs);
+  const double spread = std::max(a.max - a.min, b.max - b.min);
+  if (a.runs < 2 || b.runs < 2) return fmt("%.2fx", a.median / b.median) + " (" + ranges + "; one run: no spread known)";
+  if (std::abs(a.median - b.median) <= spread) return std::string("no measurable difference (") + ranges + ")";
+  return fmt("%.2fx", a.median / b.median) + " (" + ranges + ")";
 }
 
 std::string figure_markdown(const fs::path& dir, const std::string& file, const std::string& caption) {

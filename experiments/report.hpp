@@ -34,6 +34,19 @@ std::string table_row(const std::vector<std::string>& cells);
 std::string table_rule(std::size_t columns, std::size_t left_aligned = 1);
 std::string fmt(const char* format, double v);
 
+// A failure rate as the reports print it: "91.0% [82.4, 95.9] (58/64)": percent, the
+// 95% Wilson interval, failures / cases.
+std::string rate_cell(std::size_t failed, std::size_t cases);
+
+// A timing comparison from repeated runs: "1.37x (median 0.0610 s [0.0511, 0.0740] vs
+// 0.0446 s [0.0399, 0.0497])", or "no measurable difference (...)" when the spread of
+// either side's runs (max - min) is at least the difference of the medians.
+struct Timing {
+  double median = 0, min = 0, max = 0;
+  int runs = 0;
+};
+std::string timing_claim(const Timing& a, const Timing& b);
+
 // A figure line `![caption](file)` if DIR/file exists, else a note that it is missing.
 std::string figure_markdown(const std::filesystem::path& dir, const std::string& file,
                             const std::string& caption);

@@ -1,6 +1,7 @@
 // What robustness costs: the same inputs built with every backend (median wall time
 // of in-process builds), the exact check of one result each, and the adaptive
-// predicates' stage statistics. Runs: 3 (exact at 10^5: 1) (which stage decided how many calls).
+// predicates' stage statistics (which stage decided how many calls). Runs: 5 (quick:
+// 3; exact at 10^5: 1), interleaved over the backends.
 #include <algorithm>
 #include <chrono>
 
@@ -16,7 +17,7 @@ nlohmann::json cost_section(const SectionContext& c) {
   const std::vector<std::string> sources = {"uniform", "torus-rays", "ulp_jitter"};
   const std::vector<std::size_t> sizes = c.quick ? std::vector<std::size_t>{1000, 10000}
                                                  : std::vector<std::size_t>{10000, 100000};
-  const int runs = 3;
+  const int runs = c.quick ? 3 : 5;
   const std::vector<PredicateSpec> backends = {{"naive", 0, false, false}, {"epsilon", 1e-12, false, false},
                                                {"adaptive", 0, false, true}, {"exact", 0, false, true}};
   std::vector<std::vector<std::string>> rows;
@@ -27,16 +28,23 @@ nlohmann::json cost_section(const SectionContext& c) {
       const auto points = experiment_points(src, n, s);
       BuildOptions opt;
       opt.seed = s;
-      for (const auto& spec : backends) {
-        std::vector<double> t;
-        BuildResult last;
-        // exact at 10^5 takes seconds per build: one run
-        const int reps = spec.backend == "exact" && n >= 100000 ? 1 : runs;
-        for (int r = 0; r < reps; ++r) {
+      // Runs interleave the backends (naive, epsilon, adaptive, exact, naive, ...) so a
+      // change of the machine's load hits all of them alike.
+      std::vector<std::vector<double>> times(backends.size());
+      std::vector<BuildResult> results(backends.size());
+      for (int r = 0; r < runs; ++r)
+        for (std::size_t b = 0; b < backends.size(); ++b) {
+          // exact at 10^5 takes seconds per build: one run
+          if (r > 0 && backends[b].backend == "exact" && n >= 100000) continue;
           const auto t0 = std::chrono::steady_clock::now();
-          last = build_delaunay(points, spec, opt);
-          t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+          results[b] = build_delaunay(points, backends[b], opt);
+          times[b].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
+      for (std::size_t b = 0; b < backends.size(); ++b) {
+        const PredicateSpec& spec = backends[b];
+        std::vector<double>& t = times[b];
+        const BuildResult& last = results[b];
+        const int reps = static_cast<int>(t.size());
         std::sort(t.begin(), t.end());
         CheckOptions co;
         co.duplicates = last.duplicates;

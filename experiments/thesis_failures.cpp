@@ -28,8 +28,9 @@ json compute_facts(const json& rates, const json& eps, const json& bigtet, const
                    const json& overlap) {
   json f;
   const std::size_t nmax = rates["sizes"].back().get<std::size_t>();
-  int hard_cases = 0, hard_failed = 0;
-  std::map<std::string, int> naive_kind, robust_failed;
+  const std::size_t nmin = rates["sizes"].front().get<std::size_t>();
+  int hard_cases = 0, hard_failed = 0, hard_cases_min = 0, hard_failed_min = 0;
+  std::map<std::string, int> naive_kind, robust_failed, robust_cases;
   for (const auto& c : rates["cells"]) {
     const std::string b = c["backend"];
     if (b == "naive") {
@@ -39,10 +40,21 @@ json compute_facts(const json& rates, const json& eps, const json& bigtet, const
         hard_cases += c["cases"].get<int>();
         hard_failed += c["failed"].get<int>();
       }
+      if (is_hard(c["family"]) && c["n"].get<std::size_t>() == nmin) {
+        hard_cases_min += c["cases"].get<int>();
+        hard_failed_min += c["failed"].get<int>();
+      }
     }
-    if (b == "adaptive+sos" || b == "exact+sos") robust_failed[b] += c["failed"].get<int>();
+    if (b == "adaptive+sos" || b == "exact+sos") {
+      robust_failed[b] += c["failed"].get<int>();
+      robust_cases[b] += c["cases"].get<int>();
+    }
   }
   f["naive_failure_rate_hard_at_max_n"] = hard_cases ? double(hard_failed) / hard_cases : 0.0;
+  f["naive_hard_at_max_n"] = {{"failed", hard_failed}, {"cases", hard_cases}};
+  f["naive_hard_at_min_n"] = {{"failed", hard_failed_min}, {"cases", hard_cases_min}};
+  f["min_n"] = nmin;
+  f["robust_cases"] = robust_cases;
   f["max_n"] = nmax;
   f["naive_cases_with"] = naive_kind;
   f["robust_failed_cases"] = robust_failed;
@@ -53,7 +65,22 @@ json compute_facts(const json& rates, const json& eps, const json& bigtet, const
   f["robust_defects_in_cost_runs"] = robust_defects;
   std::map<std::string, double> uniform_time;  // the largest n (the last cells)
   for (const auto& c : cost["cells"])
-    if (c["source"] == "uniform") uniform_time[c["backend"]] = c["median_s"];
+    if (c["source"] == "uniform") {
+      uniform_time[c["backend"]] = c["median_s"];
+      f["uniform_timing"][c["backend"].get<std::string>()] = {
+          {"median", c["median_s"]}, {"min", c["min_s"]}, {"max", c["max_s"]}, {"runs", c["runs"]}, {"n", c["n"]}};
+    }
+  // the share of adaptive calls past the semi-static filter, largest n of each source
+  for (const auto& c : cost["cells"])
+    if (c["backend"] == "adaptive+sos") {
+      std::uint64_t all = 0, filter = 0;
+      for (const auto& [k, v] : c["stages"].items()) {
+        all += v.get<std::uint64_t>();
+        if (k.find("semistatic") != std::string::npos) filter += v.get<std::uint64_t>();
+      }
+      f["adaptive_past_filter"][c["source"].get<std::string>()] = {
+          {"n", c["n"]}, {"share", all ? 1.0 - double(filter) / double(all) : 0.0}};
+    }
   if (uniform_time["naive"] > 0) {
     f["adaptive_over_naive_uniform"] = uniform_time["adaptive+sos"] / uniform_time["naive"];
     f["exact_over_naive_uniform"] = uniform_time["exact+sos"] / uniform_time["naive"];
@@ -72,12 +99,15 @@ json compute_facts(const json& rates, const json& eps, const json& bigtet, const
   }
   for (const char* mode : {"naive", "absolute", "relative"}) {
     double best = 2, best_eps = 0;
+    int failed = 0, cases = 0;
     for (const auto& [key, v] : pooled)
       if (key.first == mode && double(v.first) / v.second < best) {
         best = double(v.first) / v.second;
         best_eps = key.second;
+        failed = v.first;
+        cases = v.second;
       }
-    f["epsilon_best_failure_rate"][mode] = {{"rate", best}, {"eps", best_eps}};
+    f["epsilon_best_failure_rate"][mode] = {{"rate", best}, {"eps", best_eps}, {"failed", failed}, {"cases", cases}};
   }
   // bigtet: cases with missing tets at the smallest factor that holds every point
   int small_cases = 0, small_missing = 0;
@@ -103,10 +133,14 @@ json compute_facts(const json& rates, const json& eps, const json& bigtet, const
       break;
     }
   f["bigtet_cases_wrong_at_every_factor"] = never;
-  for (const auto& c : sampling["cells"])
+  for (const auto& c : sampling["cells"]) {
     f["outside_fraction"][c["method"].get<std::string>()][std::to_string(c["removed_every"].get<int>())] =
         c["outside_fraction"];
+    f["outside_count"][c["method"].get<std::string>()][std::to_string(c["removed_every"].get<int>())] = {
+        {"outside", c["outside"]}, {"points", c["points"]}};
+  }
   f["overlap_case_points"] = overlap.is_null() ? 0 : overlap["points"].size();
+  f["epsilon_n"] = eps["n"];
   return f;
 }
 
@@ -115,6 +149,7 @@ std::string rates_markdown(const json& rates) {
   const auto& sizes = rates["sizes"];
   std::vector<std::string> head = {"backend / family"};
   for (const auto& n : sizes) head.push_back("n=" + std::to_string(n.get<std::size_t>()));
+  o << "Failure rate per cell: percent, [95% Wilson interval], (failed/cases).\n\n";
   o << table_row(head) << table_rule(head.size());
   std::map<std::pair<std::string, std::string>, std::map<std::size_t, json>> grid;
   for (const auto& c : rates["cells"]) grid[{c["backend"], c["family"]}][c["n"]] = c;
@@ -123,7 +158,7 @@ std::string rates_markdown(const json& rates) {
       std::vector<std::string> row = {b + " / " + fam.get<std::string>()};
       for (const auto& n : sizes) {
         const json& c = grid[{b, fam}][n.get<std::size_t>()];
-        row.push_back(pct(c["failed"].get<double>() / c["cases"].get<double>()));
+        row.push_back(rate_cell(c["failed"].get<std::size_t>(), c["cases"].get<std::size_t>()));
       }
       o << table_row(row);
     }
@@ -156,13 +191,14 @@ std::string eps_markdown(const json& eps) {
   }
   std::vector<std::string> head = {"mode"};
   for (const auto& e : eps["eps"]) head.push_back(fmt("%.0e", e.get<double>()));
-  o << "Failing cases, pooled over the families (naive: " << pct(double(pooled[{"naive", 0.0}].first) / std::max(1, pooled[{"naive", 0.0}].second))
-    << "):\n\n" << table_row(head) << table_rule(head.size());
+  const auto& naive = pooled[{"naive", 0.0}];
+  o << "Failure rate pooled over the families, [95% Wilson interval], (failed/cases) (naive: "
+    << rate_cell(naive.first, naive.second) << "):\n\n" << table_row(head) << table_rule(head.size());
   for (const char* mode : {"absolute", "relative"}) {
     std::vector<std::string> row = {mode};
     for (const auto& e : eps["eps"]) {
       const auto& p = pooled[{mode, e.get<double>()}];
-      row.push_back(pct(double(p.first) / std::max(1, p.second)));
+      row.push_back(rate_cell(p.first, p.second));
     }
     o << table_row(row);
   }
@@ -243,6 +279,7 @@ std::string cost_markdown(const json& cost) {
 
 std::string sampling_markdown(const json& s) {
   std::ostringstream o;
+  o << "Share of samples outside the solid, [95% Wilson interval], (outside/points):\n\n";
   o << table_row({"faces removed", "rays outside", "sdf outside", "winding outside"}) << table_rule(4);
   std::map<int, std::map<std::string, json>> g;
   std::map<int, double> frac;
@@ -255,7 +292,7 @@ std::string sampling_markdown(const json& s) {
     std::vector<std::string> row = {k ? pct(frac[k]) + " (every " + std::to_string(k) + "th)" : "none (closed)"};
     for (const char* m : {"rays", "sdf", "winding"}) {
       const json& c = g[k][m];
-      row.push_back(pct(c["outside_fraction"]) + " (" + c["outside"].dump() + " of " + c["points"].dump() + ")");
+      row.push_back(rate_cell(c["outside"].get<std::size_t>(), c["points"].get<std::size_t>()));
     }
     o << table_row(row);
   }
@@ -290,49 +327,79 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
        "and ray-intersection sampling that put points outside concave meshes. Each is reproduced here with "
        "dtlab's one inserter, switching only the predicate backend, the boundary method or the sampler, and "
        "every result is judged by the exact checker (`oracle/check.hpp`).";
-  if (quick) o << " **Quick run** (`--quick`): fewer sizes and cases than the full experiment.";
+  if (quick)
+    o << " **Quick run** (`--quick`): " << rates["cases"] << " cases per cell and fewer sizes, so the intervals "
+      << "are wide; the full run uses 64 cases per cell. Cite the full run, not this one.";
   o << "\n\n## Findings\n\n";
+  o << "Every rate below is failures / cases with its 95% Wilson interval in brackets; every time comes from "
+       "repeated runs (median, [min, max]).\n\n";
   const auto& nk = facts["naive_cases_with"];
-  o << "- **Naive floating point fails, and more often as n grows.** On the near-degenerate families at n = "
-    << facts["max_n"] << ", " << pct(facts["naive_failure_rate_hard_at_max_n"]) << " of naive builds are wrong. "
-    << "Over all naive cases: " << nk.value("failed", 0) << " failed, " << nk.value("crash", 0)
+  const auto& hard_max = facts["naive_hard_at_max_n"];
+  const auto& hard_min = facts["naive_hard_at_min_n"];
+  o << "- **Naive floating point fails, and more often as n grows.** Pooled over the hard families ("
+    << "clustered, near_degenerate, ulp_jitter, kettner_grid, torus-rays), naive builds are wrong in "
+    << rate_cell(hard_min["failed"], hard_min["cases"]) << " of the cases at n = " << facts["min_n"] << " and "
+    << rate_cell(hard_max["failed"], hard_max["cases"]) << " at n = " << facts["max_n"] << ". "
+    << "Over all " << nk.value("failed", 0) << " failed naive cases: " << nk.value("crash", 0)
     << " stopped in a walk or flip loop (the thesis's crashes, here bounded and named), " << nk.value("overlap_inverted", 0)
     << " had overlapping or inverted tets, " << nk.value("missing_point", 0) << " left points out of the result, "
-    << nk.value("non_delaunay", 0) << " had non-Delaunay facets. (A build that stops is not checked further, so "
-       "the defect counts are lower bounds.)\n";
+    << nk.value("non_delaunay", 0) << " had non-Delaunay facets (a case may count in several; a build that stops "
+       "is not checked further, so these are lower bounds).\n";
   const auto& be = facts["epsilon_best_failure_rate"];
-  o << "- **The tolerance does not fix it.** The best absolute eps (" << fmt("%.0e", be["absolute"]["eps"])
-    << ") still fails " << pct(be["absolute"]["rate"]) << " of cases, the best relative eps ("
-    << fmt("%.0e", be["relative"]["eps"]) << ") " << pct(be["relative"]["rate"]) << " (naive: "
-    << pct(be["naive"]["rate"]) << "). A band of zeros only moves the inconsistency from the rounding error to "
-       "the band's edge, and large bands declare non-flat tets flat.";
+  o << "- **The tolerance does not fix it.** Pooled over its families at n = " << facts.value("epsilon_n", 0)
+    << ", the best absolute eps (" << fmt("%.0e", be["absolute"]["eps"]) << ") fails "
+    << rate_cell(be["absolute"]["failed"], be["absolute"]["cases"]) << ", the best relative eps ("
+    << fmt("%.0e", be["relative"]["eps"]) << ") " << rate_cell(be["relative"]["failed"], be["relative"]["cases"])
+    << "; naive: " << rate_cell(be["naive"]["failed"], be["naive"]["cases"]) << ".";
   if (facts.contains("epsilon_uniform_defects") && facts["epsilon_uniform_defects"].get<int>() > 0)
-    o << " Worse, the absolute band 1e-12 breaks inputs that naive gets right: uniform points, n = "
-      << facts["epsilon_uniform_n"] << ", " << facts["epsilon_uniform_defects"]
-      << " defects (small tets have determinants below the band).";
+    o << " The absolute band 1e-12 also breaks an input that naive builds correctly: uniform points, n = "
+      << facts["epsilon_uniform_n"] << ", " << facts["epsilon_uniform_defects"] << " defects (section 4).";
   o << "\n";
   o << "- **A big enclosing tetrahedron drops hull tets unless it is huge.** At factor "
-    << facts["bigtet_smallest_factor"] << ", " << facts["bigtet_cases_wrong_at_smallest_factor"] << " of "
-    << facts["bigtet_cases"] << " inputs get a result different from the true DT; the largest factor any input "
-    << "needed was " << fmt("%g", facts["bigtet_required_factor_max"]);
+    << facts["bigtet_smallest_factor"] << ", the result differs from the true DT on "
+    << rate_cell(facts["bigtet_cases_wrong_at_smallest_factor"], facts["bigtet_cases"])
+    << " of the inputs; the largest factor an input needed was " << fmt("%g", facts["bigtet_required_factor_max"]);
   if (facts.contains("bigtet_hardest_family"))
     o << " (`" << facts["bigtet_hardest_family"].get<std::string>() << "`, n = " << facts["bigtet_hardest_n"] << ")";
   if (facts["bigtet_cases_wrong_at_every_factor"].get<int>() > 0)
     o << ", and " << facts["bigtet_cases_wrong_at_every_factor"] << " inputs were wrong even at 1e12";
-  o << ". No factor is safe for every input: the one needed grows as hull tets get flatter (a nearly flat "
-       "hull tet has a huge circumsphere that reaches the corners).\n";
+  o << " (section 3 lists the factor each family needed).\n";
   int robust = facts["robust_defects_in_cost_runs"].get<int>();
+  std::size_t robust_total = 0;
   for (const auto& [k, v] : facts["robust_failed_cases"].items()) robust += v.get<int>();
+  for (const auto& [k, v] : facts["robust_cases"].items()) robust_total += v.get<std::size_t>();
   o << "- **Adaptive and exact predicates: " << (robust == 0 ? "zero defects" : std::to_string(robust) + " DEFECTS (a regression)")
-    << "** on the same inputs. Cost on uniform points (n = " << facts.value("epsilon_uniform_n", 0)
-    << "): adaptive " << fmt("%.2f", facts.value("adaptive_over_naive_uniform", 0.0)) << "x the naive time, exact "
-    << fmt("%.1f", facts.value("exact_over_naive_uniform", 0.0)) << "x; on near-degenerate input adaptive pays "
-       "only where its filter fails (section 4).\n";
-  const auto& of = facts["outside_fraction"];
-  o << "- **Ray-intersection sampling puts points outside a mesh with holes**: with 5% of the torus faces removed, "
-    << pct(of["rays"]["20"]) << " of the ray samples lie outside the solid, vs " << pct(of["sdf"]["20"]) << " for SDF and "
-    << pct(of["winding"]["20"]) << " for the winding number; on the closed concave torus all three put "
-    << "nothing outside (" << pct(of["rays"]["0"]) << ", " << pct(of["sdf"]["0"]) << ", " << pct(of["winding"]["0"]) << ").\n\n";
+    << "** in the cases of section 1 (failure rate " << rate_cell(static_cast<std::size_t>(robust), robust_total)
+    << " over both backends) and in every build of section 4.";
+  const auto& ut = facts["uniform_timing"];
+  if (ut.contains("naive") && ut.contains("adaptive+sos") && ut.contains("exact+sos")) {
+    const auto timing = [&](const char* b) {
+      const auto& t = ut[b];
+      return Timing{t["median"].get<double>(), t["min"].get<double>(), t["max"].get<double>(), t["runs"].get<int>()};
+    };
+    o << " Build time on uniform points (n = " << ut["naive"]["n"] << "), adaptive vs naive: "
+      << timing_claim(timing("adaptive+sos"), timing("naive")) << "; exact vs naive: "
+      << timing_claim(timing("exact+sos"), timing("naive")) << ".";
+  }
+  if (facts.contains("adaptive_past_filter")) {
+    const auto& pf = facts["adaptive_past_filter"];
+    o << " Share of adaptive predicate calls the semi-static filter could not decide:";
+    std::string sep = " ";
+    for (const auto& [src, v] : pf.items()) {
+      o << sep << "`" << src << "` (n = " << v["n"] << ") " << fmt("%.3g%%", 100 * v["share"].get<double>());
+      sep = ", ";
+    }
+    o << ".";
+  }
+  o << "\n";
+  const auto& oc = facts["outside_count"];
+  const auto outside = [&](const char* m, const char* k) {
+    return rate_cell(oc[m][k]["outside"].get<std::size_t>(), oc[m][k]["points"].get<std::size_t>());
+  };
+  o << "- **Ray-intersection sampling puts points outside a mesh with holes.** With every 20th torus face removed, "
+    << "the share of samples outside the solid is " << outside("rays", "20") << " for rays, " << outside("sdf", "20")
+    << " for SDF and " << outside("winding", "20") << " for the winding number; on the closed torus: "
+    << outside("rays", "0") << ", " << outside("sdf", "0") << ", " << outside("winding", "0") << ".\n\n";
 
   o << "## 1. Naive floating point: failure rate per backend x family x n\n\n";
   o << "Every case is built with `naive` (no perturbation: the thesis's code), `epsilon` (absolute 1e-12), "
@@ -345,8 +412,8 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
        "`torus-winding` (winding-number sampler). For the mesh samplers and `uniform`, a larger n at the same "
        "domain is a higher density.\n\n";
   o << rates_markdown(rates);
-  o << figure_markdown(dir, "fig_rates.png", "Failure rate vs n, per family and backend");
-  o << figure_markdown(dir, "fig_naive_kinds.png", "Naive: what goes wrong, vs n (all families pooled)");
+  o << figure_markdown(dir, "fig_rates.png", "Failure rate vs n, per family and backend, with 95% Wilson intervals");
+  o << figure_markdown(dir, "fig_naive_kinds.png", "Naive: what goes wrong, vs n (every family but uniform pooled; 95% Wilson intervals)");
   o << "Why: the inserter's decisions (which tet holds p, which flip) must be consistent with each other. A "
        "rounded orient3d can say p is on both sides of a facet, so the walk cycles or the 1-4 flip happens in "
        "the wrong tet (inverted, overlapping tets); a rounded insphere makes the flip loop undo its own work "
@@ -361,7 +428,7 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
        "a determinant within the band counts as 0. Absolute: `|det| <= eps`; relative: `|det| <= eps * M^k` "
        "(M the largest coordinate difference, k the degree).\n\n";
   o << eps_markdown(eps);
-  o << figure_markdown(dir, "fig_epsilon.png", "Failure rate vs eps (absolute and relative), per family");
+  o << figure_markdown(dir, "fig_epsilon.png", "Failure rate vs eps (absolute and relative), per family, with 95% Wilson intervals; dotted: naive");
 
   o << "## 3. The big enclosing tetrahedron\n\n";
   o << "The thesis inserts all points into one big tetrahedron and deletes the tets touching its corners at the end. "
@@ -371,18 +438,19 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
        "with the infinite-vertex build of the same points. `required factor`: the smallest factor of the sweep "
        "from which every larger one gives the exact DT.\n\n";
   o << bigtet_markdown(bigtet);
-  o << figure_markdown(dir, "fig_bigtet.png", "Bigtet: share of tets missing and inputs wrong vs factor");
+  o << figure_markdown(dir, "fig_bigtet.png", "Bigtet: share of true tets missing (left) and share of inputs wrong (right, 95% Wilson intervals) vs factor");
   o << "What decides the factor is the largest circumsphere of a tet on the hull: nearly flat hull tets (random "
        "points near a facet of the box, points on parallel planes in `coplanar_slabs`) have circumspheres far "
        "larger than the input, and a corner inside one of them removes the tet. The factor any given input "
        "needs can only be found by building both, which is why dtlab uses the infinite vertex.\n\n";
 
   o << "## 4. Adaptive and exact: zero defects, and their cost\n\n";
-  o << "Wall time of in-process builds (median of " << cost["runs"] << "; exact at n = 10^5: one run), the exact check of the result, and the "
+  o << "Wall time of in-process builds (median, min and max of " << cost["runs"] << " runs that interleave the "
+       "backends; exact at n = 10^5: one run), the exact check of the result, and the "
        "predicate calls. `x naive` is the time relative to the naive build of the same points (naive may fail "
        "on these inputs, in which case its time is that of a wrong result).\n\n";
   o << cost_markdown(cost);
-  o << figure_markdown(dir, "fig_cost.png", "Build time per backend");
+  o << figure_markdown(dir, "fig_cost.png", "Build time per backend: median, bars from the fastest to the slowest run");
 
   o << "## 5. Ray-intersection sampling vs the winding number\n\n";
   o << "The bumpy torus (concave, with a hole; " << sampling["triangles"] << " triangles), " << sampling["count"]
@@ -391,7 +459,7 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
        "a ray through a hole has an odd number of hits, the pairs shift, and whole segments outside the solid "
        "get filled.\n\n";
   o << sampling_markdown(sampling);
-  o << figure_markdown(dir, "fig_sampling.png", "Points outside the solid vs share of faces removed");
+  o << figure_markdown(dir, "fig_sampling.png", "Share of samples outside the solid vs share of faces removed, with 95% Wilson intervals");
   o << figure_markdown(dir, "fig_sampling_slice.png", "Slab |y| < 0.05 of the torus with 5% of faces removed: outside points in red");
 
   o << "## 6. One overlapping configuration\n\n";

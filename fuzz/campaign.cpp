@@ -10,11 +10,14 @@
 #include <stdexcept>
 #include <thread>
 
+#include "dtlab/build_info.hpp"
+#include "fuzz/campaign_report.hpp"
 #include "fuzz/case_seed.hpp"
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/record_json.hpp"
 #include "fuzz/shrink.hpp"
+#include "fuzz/summary.hpp"
 
 namespace dtlab::fuzz {
 
@@ -121,6 +124,7 @@ CampaignResult run_campaign(const CampaignOptions& o) {
     results_name = "results.shard-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) + ".jsonl";
   std::ofstream out(fs::path(o.out_dir) / results_name, std::ios::app);
   if (!out) throw std::runtime_error("cannot write " + (fs::path(o.out_dir) / results_name).string());
+  write_campaign_environment(o);
 
   std::mutex lock;
   std::atomic<std::size_t> next{0};
@@ -139,6 +143,8 @@ CampaignResult run_campaign(const CampaignOptions& o) {
     const std::vector<Point3> points = item.family->generate(n, base.case_seed);
     base.points = points.size();
     base.boundary = boundary;
+    base.version = build_version();
+    base.commit = build_commit();
     BuildOptions build = o.build;
     build.seed = base.case_seed;
 
@@ -198,6 +204,9 @@ CampaignResult run_campaign(const CampaignOptions& o) {
   worker();
   for (auto& t : threads) t.join();
   if (error) std::rethrow_exception(error);
+  // A shard's folder may be shared with running shards: their merged summary is
+  // written by `dtlab fuzz --summarize` once all are done.
+  if (o.shards == 1) write_summary_files(o.out_dir, summarize(result.records));
   return result;
 }
 

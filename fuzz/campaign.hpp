@@ -50,6 +50,7 @@ struct CaseRecord {
   CaseRun run;
   std::size_t shrunk_points = 0;  // 0: not shrunk
   std::string corpus_file;        // relative to the campaign folder
+  std::string version, commit;    // the dtlab build that produced it (dtlab/build_info.hpp)
 };
 
 struct CampaignResult {

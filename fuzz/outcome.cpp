@@ -88,7 +88,18 @@ CaseRun run_case(std::span<const Point3> points, const PredicateSpec& predicates
   if (!report.ok()) {
     for (int k = 0; k < kDefectKinds && run.outcome.empty(); ++k)
       if (report.counts[k]) run.outcome = defect_name(static_cast<DefectKind>(k));
-    if (!report.defects.empty()) run.detail = report.defects.front().detail;
+    if (!report.defects.empty()) {
+      // the witness of the first kind counted (the outcome), not of the first listed
+      const Defect* w = &report.defects.front();
+      for (const auto& d : report.defects)
+        if (defect_name(d.kind) == run.outcome) {
+          w = &d;
+          break;
+        }
+      run.detail = w->detail;
+      run.witness_tets = w->tets;
+      run.witness_vertices = w->vertices;
+    }
     return run;
   }
   for (const auto& oracle : oracles) {

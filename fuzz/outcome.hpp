@@ -26,6 +26,7 @@ struct CaseRun {
   std::string outcome;
   std::map<std::string, std::uint64_t> defects;  // every defect kind with its count
   std::string detail;                            // first witness or failure detail
+  std::vector<std::uint32_t> witness_tets, witness_vertices;  // the first witness's tets and input points
   std::uint64_t tets = 0, duplicates = 0;
   double build_seconds = 0, check_seconds = 0;
   bool ok() const { return outcome == "valid" || outcome == "lower-dimensional"; }

@@ -21,6 +21,8 @@ nlohmann::json record_to_json(const CaseRecord& r) {
       {"duplicates", r.run.duplicates},
       {"build_s", r.run.build_seconds},
       {"check_s", r.run.check_seconds},
+      {"dtlab_version", r.version},
+      {"dtlab_commit", r.commit},
   };
   if (!r.run.detail.empty()) j["detail"] = r.run.detail;
   if (r.shrunk_points) {
@@ -51,6 +53,8 @@ CaseRecord record_from_json(const nlohmann::json& j) {
   r.run.check_seconds = j.value("check_s", 0.0);
   r.shrunk_points = j.value("shrunk_points", std::size_t{0});
   r.corpus_file = j.value("corpus", std::string{});
+  r.version = j.value("dtlab_version", std::string{});  // absent in lines written before 0.1.0's commit field
+  r.commit = j.value("dtlab_commit", std::string{});
   return r;
 }
 

@@ -22,11 +22,30 @@ TEST_CASE("markdown_to_html renders the report subset", "[experiments]") {
   CHECK(html.find("<img src=\"f.png\" alt=\"fig\">") != std::string::npos);
 }
 
+TEST_CASE("markdown_to_html renders figure captions, not literal stars", "[experiments]") {
+  const std::string html = markdown_to_html("![A caption](f.png)\n\n*A caption*\n\nx * y and 2 * 3\n", "t");
+  CHECK(html.find("<em>A caption</em>") != std::string::npos);
+  CHECK(html.find("*A caption*") == std::string::npos);
+  CHECK(html.find("x * y and 2 * 3") != std::string::npos);  // a lone star stays text
+}
+
+TEST_CASE("rates carry their interval and counts; timing claims respect the spread", "[experiments]") {
+  CHECK(rate_cell(5, 10) == "50.0% [23.7, 76.3] (5/10)");
+  CHECK(rate_cell(0, 64) == "0.0% [0.0, 5.7] (0/64)");
+  // reruns with one seed gave 0.61 and 0.87: a spread larger than the difference
+  const Timing a{0.0610, 0.0511, 0.0870, 3}, b{0.0660, 0.0600, 0.0700, 3};
+  CHECK(timing_claim(a, b).rfind("no measurable difference", 0) == 0);
+  const Timing fast{0.050, 0.049, 0.051, 5}, slow{0.100, 0.098, 0.103, 5};
+  CHECK(timing_claim(fast, slow).rfind("0.50x", 0) == 0);
+  CHECK(timing_claim({0.5, 0.5, 0.5, 1}, slow).find("one run") != std::string::npos);
+}
+
 TEST_CASE("machine and version descriptions are filled", "[experiments]") {
   const auto m = machine_description();
   CHECK(m["hardware_threads"].get<unsigned>() >= 1);
   CHECK(!m["memory"].get<std::string>().empty());
   CHECK(version_description()["dtlab"] == "0.1.0");
+  CHECK(!version_description()["git_commit"].get<std::string>().empty());
 }
 
 TEST_CASE("case seeds and point sources are reproducible", "[experiments]") {

@@ -52,6 +52,25 @@ TEST_CASE("thesis-failures --quick writes a self-contained report", "[experiment
   CHECK(text.find("model name") == std::string::npos);  // the value, not the raw field
   CHECK(text.find("| CPU |") != std::string::npos);
   CHECK(text.find("dtlab experiment thesis-failures --quick") != std::string::npos);
+  CHECK(text.find("**Quick run**") != std::string::npos);  // a small run says so
+  // every Findings bullet carries a number, and its rates carry interval and counts
+  const auto findings = text.substr(text.find("## Findings"), text.find("## 1.") - text.find("## Findings"));
+  std::size_t bullets = 0;
+  for (std::size_t at = findings.find("\n- "); at != std::string::npos; at = findings.find("\n- ", at + 1)) {
+    const std::string bullet = findings.substr(at, findings.find('\n', at + 1) - at);
+    INFO(bullet);
+    CHECK(bullet.find_first_of("0123456789") != std::string::npos);
+    if (bullet.find('%') != std::string::npos) CHECK(bullet.find("% [") != std::string::npos);
+    ++bullets;
+  }
+  CHECK(bullets == 5);
+  CHECK(text.find("commit `") != std::string::npos);  // the report names its build
+  std::ifstream html_in(report_dir() / "report.html");
+  const std::string html((std::istreambuf_iterator<char>(html_in)), std::istreambuf_iterator<char>());
+  if (have_matplotlib()) {
+    CHECK(html.find("<em>Failure rate vs n") != std::string::npos);
+    CHECK(html.find("<p>*") == std::string::npos);
+  }
   if (have_matplotlib()) {
     CHECK(r.facts.value("figures_status", -1) == 0);
     for (const char* f : {"fig_rates.png", "fig_naive_kinds.png", "fig_epsilon.png", "fig_bigtet.png", "fig_cost.png",
