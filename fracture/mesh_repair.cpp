@@ -1,0 +1,230 @@
+// CGAL's Polygon Mesh Processing drives the repair; the diagnosis before and after is
+// sampling/mesh_report (the same words as everywhere else).
+#include "fracture/mesh_repair.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "fracture/deadline_visitor.hpp"
+#include "predicates/adaptive.hpp"
+#include "sampling/merge_vertices.hpp"
+#include "sampling/self_intersection.hpp"
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+namespace dtlab {
+
+namespace {
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+using ExactMesh = CGAL::Surface_mesh<EK::Point_3>;
+using Polygon = std::vector<std::size_t>;
+
+// Seconds the autorefinement may take before the repair gives up on self-intersections.
+constexpr double kAutorefineSeconds = 30;
+
+double coordinate(double v) { return v; }
+// Lazy-exact: the interval when tight, else the exact value (CGAL's to_double accepts
+// intervals 1e-5 wide).
+double coordinate(const EK::FT& v) {
+  const auto& i = v.approx();
+  if (i.sup() - i.inf() <= 1e-14 * std::max(std::abs(i.inf()), std::abs(i.sup()))) return CGAL::to_double(i);
+  return CGAL::to_double(v.exact());
+}
+
+// The faces of a Surface_mesh as a TriangleMesh; isolated vertices are left out (CGAL's
+// orient_to_bound_a_volume does not accept them).
+template <class M>
+TriangleMesh to_triangles(const M& m) {
+  TriangleMesh out;
+  std::vector<std::uint32_t> id(m.number_of_vertices() + m.number_of_removed_vertices(), UINT32_MAX);
+  for (auto f : m.faces()) {
+    std::array<std::uint32_t, 3> t{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) {
+      if (k == 3) break;
+      if (id[v.idx()] == UINT32_MAX) {
+        id[v.idx()] = static_cast<std::uint32_t>(out.vertices.size());
+        const auto& p = m.point(v);
+        out.vertices.push_back({coordinate(p.x()), coordinate(p.y()), coordinate(p.z())});
+      }
+      t[k++] = id[v.idx()];
+    }
+    if (k == 3) out.triangles.push_back(t);
+  }
+  return out;
+}
+
+template <class M>
+void to_mesh(const TriangleMesh& t, M& m) {
+  using P = typename M::Point;
+  std::vector<P> points;
+  for (const auto& p : t.vertices) points.emplace_back(p.x, p.y, p.z);
+  std::vector<Polygon> polygons;
+  for (const auto& f : t.triangles) polygons.push_back({f[0], f[1], f[2]});
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, m);
+}
+
+bool same_cycle_reversed(const Polygon& a, const Polygon& b) {
+  // b is a with the opposite orientation (3 corners): some rotation of b reversed equals a.
+  for (int s = 0; s < 3; ++s)
+    if (a[0] == b[s] && a[1] == b[(s + 2) % 3] && a[2] == b[(s + 1) % 3]) return true;
+  return false;
+}
+}  // namespace
+
+RepairResult repair_mesh(const TriangleMesh& input) {
+  RepairResult r;
+  r.before = analyze_mesh(input);
+  auto step = [&](const char* what, std::size_t count, std::string detail = "") {
+    if (count > 0) r.steps.push_back({what, count, std::move(detail)});
+  };
+
+  // 1. Duplicate vertices (identical coordinates).
+  MergedMesh merged = merge_duplicate_vertices(input);
+  step("merged duplicate vertices", merged.duplicates);
+
+  // 2. Degenerate triangles (repeated corner, collinear corners: exact) and repeated
+  //    triangles (the same three vertices again, in either orientation).
+  const AdaptivePredicates pred;
+  std::vector<K::Point_3> points;
+  for (const auto& p : merged.mesh.vertices) points.emplace_back(p.x, p.y, p.z);
+  std::vector<Polygon> polygons;
+  std::set<std::array<std::uint32_t, 3>> seen;
+  std::size_t degenerate = 0, repeated = 0;
+  for (std::size_t t = 0; t < merged.mesh.triangles.size(); ++t) {
+    const auto& tri = merged.mesh.triangles[t];
+    const auto& V = merged.mesh.vertices;
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] ||
+        detail::collinear(V[tri[0]], V[tri[1]], V[tri[2]], pred)) {
+      ++degenerate;
+      continue;
+    }
+    auto key = tri;
+    std::sort(key.begin(), key.end());
+    if (!seen.insert(key).second) {
+      ++repeated;
+      continue;
+    }
+    polygons.push_back({tri[0], tri[1], tri[2]});
+  }
+  step("dropped degenerate triangles", degenerate);
+  step("dropped repeated triangles", repeated);
+  if (polygons.empty()) {
+    r.mesh = TriangleMesh{};
+    r.after = analyze_mesh(r.mesh);
+    return r;
+  }
+
+  // 3. Non-manifold vertices split, faces oriented consistently (per component).
+  const std::size_t points_before = points.size();
+  const std::vector<Polygon> polygons_before = polygons;
+  PMP::orient_polygon_soup(points, polygons);
+  std::size_t flipped = 0;
+  for (std::size_t i = 0; i < polygons.size() && i < polygons_before.size(); ++i)
+    flipped += polygons[i] != polygons_before[i] && same_cycle_reversed(polygons[i], polygons_before[i]);
+  step("split non-manifold vertices and edges", points.size() - points_before,
+       "added " + std::to_string(points.size() - points_before) + " vertices");
+  step("reversed triangles to orient consistently", flipped);
+
+  Mesh m;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, m);
+
+  // 4. Borders that run along each other with equal vertices, stitched.
+  step("stitched border edges", PMP::stitch_borders(m));
+
+  // 5. Holes: every boundary cycle triangulated (minimum-weight, Delaunay-restricted).
+  {
+    std::vector<Mesh::Halfedge_index> cycles;
+    PMP::extract_boundary_cycles(m, std::back_inserter(cycles));
+    std::size_t filled = 0, added = 0;
+    for (auto h : cycles) {
+      if (!m.is_border(h)) continue;
+      std::vector<Mesh::Face_index> patch;
+      try {
+        PMP::triangulate_hole(m, h, std::back_inserter(patch));
+      } catch (const std::exception&) {
+        continue;
+      }
+      if (!patch.empty()) ++filled, added += patch.size();
+    }
+    step("filled holes", filled, "added " + std::to_string(added) + " triangles");
+  }
+
+  // 6. Degenerate triangles left by stitching or filling: collapsed.
+  {
+    std::size_t before = 0;
+    for (auto f : m.faces()) before += PMP::is_degenerate_triangle_face(f, m);
+    if (before > 0) {
+      try {
+        PMP::remove_degenerate_faces(m);
+      } catch (const std::exception&) {
+      }
+      m.collect_garbage();
+      std::size_t after = 0;
+      for (auto f : m.faces()) after += PMP::is_degenerate_triangle_face(f, m);
+      step("collapsed degenerate triangles", before - std::min(before, after));
+    }
+  }
+  TriangleMesh current = to_triangles(m);
+
+  // 7. Self-intersections: autorefinement (exact constructions), the inner patches
+  //    removed, the outer surface stitched along the intersection curves.
+  MeshReport now = analyze_mesh(current);
+  if (now.self_intersections > 0 && now.closed) {
+    ExactMesh em;
+    to_mesh(current, em);
+    try {
+      const bool fixed = PMP::experimental::autorefine_and_remove_self_intersections(
+          em, CGAL::parameters::visitor(DeadlineVisitor<ExactMesh>(kAutorefineSeconds)));
+      em.collect_garbage();
+      TriangleMesh refined = to_triangles(em);
+      const MeshReport check = analyze_mesh(refined);
+      if (fixed || check.self_intersections < now.self_intersections) {
+        step("resolved self-intersecting triangle pairs", now.self_intersections - check.self_intersections,
+             "autorefined, inner patches removed");
+        current = std::move(refined);
+        now = check;
+      }
+    } catch (const std::exception&) {
+      // Autorefinement gave up (or ran out of time): the report below says what remains.
+    }
+  }
+
+  // 8. Every shell oriented so that the mesh bounds a volume (outer shells outward,
+  //    cavities inward).
+  if (now.closed && now.manifold && now.self_intersections == 0 && now.degenerate_triangles == 0) {
+    Mesh o;
+    to_mesh(current, o);
+    const TriangleMesh before = to_triangles(o);
+    PMP::orient_to_bound_a_volume(o);
+    TriangleMesh oriented = to_triangles(o);
+    std::size_t reversed = 0;
+    for (std::size_t t = 0; t < oriented.triangles.size() && t < before.triangles.size(); ++t)
+      reversed += same_cycle_reversed({oriented.triangles[t][0], oriented.triangles[t][1], oriented.triangles[t][2]},
+                                      {before.triangles[t][0], before.triangles[t][1], before.triangles[t][2]});
+    step("reversed triangles to bound a volume", reversed);
+    current = std::move(oriented);
+  }
+
+  r.mesh = std::move(current);
+  r.after = analyze_mesh(r.mesh);
+  return r;
+}
+
+}  // namespace dtlab
