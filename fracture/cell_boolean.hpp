@@ -31,9 +31,9 @@ struct BooleanTimeout : std::runtime_error {
 
 class MeshClipper {
  public:
-  // Throws std::invalid_argument with a reason if `mesh` is not a closed, manifold,
-  // self-intersection-free triangle mesh (duplicate vertices are merged first; an
-  // inward orientation is flipped).
+  // Throws std::invalid_argument with a reason if `mesh` is not a closed, manifold
+  // triangle mesh (duplicate vertices are merged first; an inward orientation is
+  // flipped). Self-intersections are not tested here: check with analyze_mesh first.
   explicit MeshClipper(const TriangleMesh& mesh);
   ~MeshClipper();
   MeshClipper(const MeshClipper&) = delete;

@@ -119,14 +119,14 @@ void measure_piece(Piece& p) {
 FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o) {
   if (o.pieces == 0) throw std::invalid_argument("--pieces must be at least 1");
   FractureResult r;
-  r.report = analyze_mesh(mesh);
   TriangleMesh repaired;
   if (o.repair) {
     RepairResult rr = repair_mesh(mesh);
+    r.report = rr.before;
     r.repairs = rr.steps;
     if (!rr.solid()) throw std::invalid_argument("cannot be repaired into a solid: " + rr.after.why_not_solid());
     repaired = std::move(rr.mesh);
-  } else if (!r.report.solid()) {
+  } else if (r.report = analyze_mesh(mesh); !r.report.solid()) {
     throw std::invalid_argument("not a solid: " + r.report.why_not_solid() + " (--repair tries to fix it)");
   }
   MeshClipper clipper(o.repair ? repaired : mesh);
@@ -155,6 +155,11 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
       continue;
     }
     const Piece& parent = top.pieces[i];
+    // A piece's vertices were rounded to doubles: check it is still a solid.
+    const MeshReport pr = analyze_mesh(parent.geometry.mesh);
+    if (!pr.solid())
+      throw std::runtime_error("--recurse: piece " + std::to_string(i) + " is not a solid after rounding: " +
+                               pr.why_not_solid());
     MeshClipper sub_clipper(parent.geometry.mesh);
     sub_clipper.set_time_budget(o.boolean_seconds);
     Level sub = fracture_once(sub_clipper, o, o.seed * 1000003 + i, o.recurse_pieces, r);

@@ -14,7 +14,7 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
@@ -80,6 +80,75 @@ void to_mesh(const TriangleMesh& t, M& m) {
   PMP::polygon_soup_to_polygon_mesh(points, polygons, m);
 }
 
+void append(TriangleMesh& a, const TriangleMesh& b) {
+  const auto n = static_cast<std::uint32_t>(a.vertices.size());
+  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (const auto& t : b.triangles) a.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+}
+
+// Connected components across shared edges, each with only its own vertices.
+std::vector<TriangleMesh> components(const TriangleMesh& m) {
+  std::vector<std::uint32_t> parent(m.triangles.size());
+  for (std::uint32_t t = 0; t < parent.size(); ++t) parent[t] = t;
+  auto find = [&](std::uint32_t a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> first;
+  for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto u = m.triangles[t][k], v = m.triangles[t][(k + 1) % 3];
+      const auto [it, fresh] = first.emplace(std::minmax(u, v), t);
+      if (!fresh) parent[find(t)] = find(it->second);
+    }
+  std::map<std::uint32_t, std::size_t> index;
+  std::vector<TriangleMesh> out;
+  std::vector<std::map<std::uint32_t, std::uint32_t>> ids;
+  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+    const auto [it, fresh] = index.emplace(find(t), out.size());
+    if (fresh) out.emplace_back(), ids.emplace_back();
+    TriangleMesh& c = out[it->second];
+    auto& id = ids[it->second];
+    std::array<std::uint32_t, 3> tri{};
+    for (int k = 0; k < 3; ++k) {
+      const auto [jt, added] = id.emplace(m.triangles[t][k], static_cast<std::uint32_t>(c.vertices.size()));
+      if (added) c.vertices.push_back(m.vertices[m.triangles[t][k]]);
+      tri[k] = jt->second;
+    }
+    c.triangles.push_back(tri);
+  }
+  return out;
+}
+
+// The union of the shells of `m` when each shell alone is a solid (outward), by exact
+// corefinements; false when that does not apply or a corefinement fails.
+bool union_of_shells(const TriangleMesh& m, TriangleMesh& out, std::size_t& count) {
+  std::vector<TriangleMesh> shells = components(m);
+  count = shells.size();
+  if (shells.size() < 2 || shells.size() > 500) return false;
+  for (auto& c : shells) {
+    const MeshReport r = analyze_mesh(c);
+    if (!r.solid() || r.volume <= 0) return false;
+  }
+  const DeadlineVisitor<ExactMesh> deadline(kAutorefineSeconds);
+  try {
+    ExactMesh acc;
+    to_mesh(shells[0], acc);
+    for (std::size_t i = 1; i < shells.size(); ++i) {
+      ExactMesh b, joined;
+      to_mesh(shells[i], b);
+      if (!PMP::corefine_and_compute_union(acc, b, joined, CGAL::parameters::visitor(deadline),
+                                           CGAL::parameters::default_values(), CGAL::parameters::default_values()))
+        return false;
+      acc = std::move(joined);
+    }
+    out = to_triangles(acc);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 bool same_cycle_reversed(const Polygon& a, const Polygon& b) {
   // b is a with the opposite orientation (3 corners): some rotation of b reversed equals a.
   for (int s = 0; s < 3; ++s)
@@ -98,6 +167,21 @@ RepairResult repair_mesh(const TriangleMesh& input) {
   // 1. Duplicate vertices (identical coordinates).
   MergedMesh merged = merge_duplicate_vertices(input);
   step("merged duplicate vertices", merged.duplicates);
+  if (r.before.solid()) {
+    // Nothing else to repair (the report judged the merged mesh); only an inward
+    // orientation is turned outward.
+    r.mesh = std::move(merged.mesh);
+    if (r.before.volume < 0) {
+      for (auto& t : r.mesh.triangles) std::swap(t[1], t[2]);
+      step("reversed triangles to bound a volume", r.mesh.triangles.size());
+    }
+    r.after = r.before;
+    r.after.vertices = r.mesh.vertices.size();
+    r.after.duplicate_vertices = 0;
+    r.after.duplicate_at.clear();
+    r.after.volume = std::abs(r.before.volume);
+    return r;
+  }
 
   // 2. Degenerate triangles (repeated corner, collinear corners: exact) and repeated
   //    triangles (the same three vertices again, in either orientation).
@@ -152,18 +236,32 @@ RepairResult repair_mesh(const TriangleMesh& input) {
   {
     std::vector<Mesh::Halfedge_index> cycles;
     PMP::extract_boundary_cycles(m, std::back_inserter(cycles));
-    std::size_t filled = 0, added = 0;
+    std::size_t filled = 0, fanned = 0, added = 0;
     for (auto h : cycles) {
       if (!m.is_border(h)) continue;
       std::vector<Mesh::Face_index> patch;
       try {
         PMP::triangulate_hole(m, h, std::back_inserter(patch));
       } catch (const std::exception&) {
+        patch.clear();
+      }
+      if (!patch.empty()) {
+        ++filled, added += patch.size();
         continue;
       }
-      if (!patch.empty()) ++filled, added += patch.size();
+      if (!m.is_border(h)) continue;
+      // The minimum-weight search found nothing: a fan from the loop's centroid.
+      K::Vector_3 c(0, 0, 0);
+      std::size_t n = 0;
+      for (auto g : CGAL::halfedges_around_face(h, m)) c = c + (m.point(m.target(g)) - CGAL::ORIGIN), ++n;
+      CGAL::Euler::fill_hole(h, m);
+      const auto centre = CGAL::Euler::add_center_vertex(h, m);
+      m.point(m.target(centre)) = CGAL::ORIGIN + c / static_cast<double>(n);
+      ++fanned, added += n;
     }
-    step("filled holes", filled, "added " + std::to_string(added) + " triangles");
+    step("filled holes", filled + fanned,
+         "added " + std::to_string(added) + " triangles" +
+             (fanned ? ", " + std::to_string(fanned) + " as fans from the centroid" : ""));
   }
 
   // 6. Degenerate triangles left by stitching or filling: collapsed.
@@ -183,9 +281,44 @@ RepairResult repair_mesh(const TriangleMesh& input) {
   }
   TriangleMesh current = to_triangles(m);
 
-  // 7. Self-intersections: autorefinement (exact constructions), the inner patches
-  //    removed, the outer surface stitched along the intersection curves.
+  // 7. Closed shells that enclose nothing (flat patches closed by the hole filling)
+  //    dropped when other shells enclose a volume.
   MeshReport now = analyze_mesh(current);
+  {
+    std::vector<TriangleMesh> shells = components(current);
+    double total = 0;
+    std::vector<double> volumes;
+    for (const auto& c : shells) total += std::abs(volumes.emplace_back(signed_volume(c)));
+    std::size_t dropped = 0;
+    TriangleMesh kept;
+    for (std::size_t i = 0; i < shells.size(); ++i) {
+      if (shells.size() > 1 && std::abs(volumes[i]) <= 1e-9 * total) ++dropped;
+      else append(kept, shells[i]);
+    }
+    if (dropped > 0 && !kept.triangles.empty()) {
+      step("dropped shells that enclose no volume", dropped);
+      current = std::move(kept);
+      now = analyze_mesh(current);
+    }
+  }
+
+  // 8. Self-intersections. Shells that are solids each but overlap: their union,
+  //    one exact corefinement at a time. Otherwise: autorefinement (exact
+  //    constructions), the patches inside the volume removed, accepted only if it
+  //    leaves a solid that keeps at least half the volume.
+  if (now.self_intersections > 0 && now.closed) {
+    TriangleMesh joined;
+    std::size_t shells = 0;
+    if (union_of_shells(current, joined, shells)) {
+      const MeshReport check = analyze_mesh(joined);
+      if (check.solid() && check.volume > 0) {
+        step("resolved self-intersecting triangle pairs", now.self_intersections,
+             "union of " + std::to_string(shells) + " overlapping shells");
+        current = std::move(joined);
+        now = check;
+      }
+    }
+  }
   if (now.self_intersections > 0 && now.closed) {
     ExactMesh em;
     to_mesh(current, em);
@@ -195,8 +328,9 @@ RepairResult repair_mesh(const TriangleMesh& input) {
       em.collect_garbage();
       TriangleMesh refined = to_triangles(em);
       const MeshReport check = analyze_mesh(refined);
-      if (fixed || check.self_intersections < now.self_intersections) {
-        step("resolved self-intersecting triangle pairs", now.self_intersections - check.self_intersections,
+      if (fixed && check.self_intersections == 0 && check.closed &&
+          std::abs(check.volume) >= 0.5 * std::abs(now.volume)) {
+        step("resolved self-intersecting triangle pairs", now.self_intersections,
              "autorefined, inner patches removed");
         current = std::move(refined);
         now = check;
@@ -206,7 +340,7 @@ RepairResult repair_mesh(const TriangleMesh& input) {
     }
   }
 
-  // 8. Every shell oriented so that the mesh bounds a volume (outer shells outward,
+  // 9. Every shell oriented so that the mesh bounds a volume (outer shells outward,
   //    cavities inward).
   if (now.closed && now.manifold && now.self_intersections == 0 && now.degenerate_triangles == 0) {
     Mesh o;
