@@ -8,6 +8,7 @@
 
 #include "cli/command.hpp"
 #include "fracture/piece_io.hpp"
+#include "fracture/render_png.hpp"
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/mesh_io.hpp"
 
@@ -15,7 +16,7 @@ namespace dtlab::cli {
 
 namespace {
 struct FractureArgs {
-  std::string mesh = "builtin", out, sampler = "winding";
+  std::string mesh = "builtin", out, sampler = "winding", png;
   std::size_t pieces = 20, recurse_pieces = 4;
   std::uint64_t seed = 1;
   double margin = 0, explode = 0.6;
@@ -83,6 +84,7 @@ int run_fracture(const FractureArgs& a) {
     }
     std::fclose(f);
   }
+  if (!a.png.empty()) write_exploded_png(a.png, r, a.explode);
   const double rel = m["relative_volume_error"].get<double>();
   if (a.json) {
     std::printf("%s\n", m.dump(2).c_str());
@@ -126,6 +128,7 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_option("--boolean-seconds", args->boolean_seconds,
                   "time budget of one corefinement; past it a named failure, exit 1 (0: none)")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
+  sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file");
   sub->add_option("--out", args->out, "output folder");
   sub->add_flag("--json", args->json, "print the manifest on stdout");
   sub->callback([args, &rc] { rc = run_fracture(*args); });
