@@ -149,6 +149,15 @@ bool union_of_shells(const TriangleMesh& m, TriangleMesh& out, std::size_t& coun
   }
 }
 
+bool has_repeated_triangle(const TriangleMesh& m) {
+  std::set<std::array<std::uint32_t, 3>> seen;
+  for (auto t : m.triangles) {
+    std::sort(t.begin(), t.end());
+    if (!seen.insert(t).second) return true;
+  }
+  return false;
+}
+
 bool same_cycle_reversed(const Polygon& a, const Polygon& b) {
   // b is a with the opposite orientation (3 corners): some rotation of b reversed equals a.
   for (int s = 0; s < 3; ++s)
@@ -319,7 +328,11 @@ RepairResult repair_mesh(const TriangleMesh& input) {
       }
     }
   }
-  if (now.self_intersections > 0 && now.closed) {
+  // CGAL's experimental autorefinement crashed on flat shells (a patch closed by its own
+  // hole filling, two coplanar sheets) in CGAL 5.5: only volumes go there.
+  const Point3 ext = now.box.hi - now.box.lo;
+  const bool flat = !(std::abs(now.volume) > 1e-9 * ext.x * ext.y * ext.z) || has_repeated_triangle(current);
+  if (now.self_intersections > 0 && now.closed && !flat) {
     ExactMesh em;
     to_mesh(current, em);
     try {
