@@ -8,6 +8,7 @@
 
 #include "cli/command.hpp"
 #include "fracture/piece_io.hpp"
+#include "fracture/render_png.hpp"
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/mesh_io.hpp"
 
@@ -15,13 +16,14 @@ namespace dtlab::cli {
 
 namespace {
 struct FractureArgs {
-  std::string mesh = "builtin", out, sampler = "winding";
+  std::string mesh = "builtin", out, sampler = "winding", png;
   std::size_t pieces = 20, recurse_pieces = 4;
   std::uint64_t seed = 1;
   double margin = 0, explode = 0.6;
   unsigned threads = 0;
   std::vector<std::size_t> recurse;
-  bool blue_noise = false, json = false;
+  bool blue_noise = false, json = false, repair = false, split = false;
+  double boolean_seconds = 30;
 };
 
 int run_fracture(const FractureArgs& a) {
@@ -40,23 +42,34 @@ int run_fracture(const FractureArgs& a) {
   o.threads = a.threads;
   o.recurse = a.recurse;
   o.recurse_pieces = a.recurse_pieces;
+  o.repair = a.repair;
+  o.boolean_seconds = a.boolean_seconds;
   FractureResult r;
   try {
     r = fracture_mesh(mesh, o);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "dtlab fracture: %s: %s\n", a.mesh.c_str(), e.what());
     return kBadInput;
+  } catch (const std::runtime_error& e) {  // a named failure of a boolean (time budget)
+    std::fprintf(stderr, "dtlab fracture: %s: %s\n", a.mesh.c_str(), e.what());
+    return kDefect;
   }
   nlohmann::json m = fracture_manifest(r);
   m["input"] = a.mesh;
   m["options"] = {{"pieces", a.pieces}, {"sampler", a.sampler}, {"seed", a.seed}, {"margin", a.margin},
                   {"blue_noise", a.blue_noise}, {"explode", a.explode}, {"recurse", a.recurse},
-                  {"recurse_pieces", a.recurse_pieces}};
+                  {"recurse_pieces", a.recurse_pieces}, {"repair", a.repair}, {"split", a.split},
+                  {"boolean_seconds", a.boolean_seconds}};
   if (!a.out.empty()) {
     std::filesystem::create_directories(a.out);
     write_pieces_obj(a.out + "/pieces.obj", r);
     write_pieces_obj(a.out + "/exploded.obj", r, a.explode);
     write_pieces_mtl(a.out + "/pieces.mtl");
+    if (a.repair) write_off(a.out + "/repaired.off", r.input);
+    if (a.split) {
+      std::filesystem::create_directories(a.out + "/pieces");
+      m["split_files"] = write_piece_files(a.out + "/pieces", r);
+    }
     std::FILE* f = std::fopen((a.out + "/manifest.json").c_str(), "w");
     if (!f) throw std::runtime_error("cannot write " + a.out + "/manifest.json");
     std::fprintf(f, "%s\n", m.dump(1).c_str());
@@ -71,14 +84,20 @@ int run_fracture(const FractureArgs& a) {
     }
     std::fclose(f);
   }
+  if (!a.png.empty()) write_exploded_png(a.png, r, a.explode);
   const double rel = m["relative_volume_error"].get<double>();
   if (a.json) {
     std::printf("%s\n", m.dump(2).c_str());
   } else {
+    std::printf("mesh %s: %s\n", a.mesh.c_str(), r.report.summary().c_str());
+    for (const auto& p : r.report.problems()) std::printf("  %s\n", p.c_str());
+    for (const auto& s : r.repairs)
+      std::printf("  repair: %s: %zu%s%s\n", s.what.c_str(), s.count, s.detail.empty() ? "" : ", ", s.detail.c_str());
     std::printf("%s: %zu pieces (%zu booleans, %zu skipped), mesh volume %.12g, relative volume error %.3g\n",
                 a.mesh.c_str(), r.pieces.size(), r.booleans, r.skipped, r.mesh_volume, rel);
     if (!a.out.empty())
-      std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt}\n", a.out.c_str());
+      std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s}\n", a.out.c_str(),
+                  a.split ? ", pieces/piece_NNNN.obj" : "");
   }
   // With a margin the pieces are meant to lose volume; without one they must tile the mesh.
   return a.margin == 0 && rel > 1e-9 ? kDefect : kOk;
@@ -103,6 +122,13 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_option("--recurse-pieces", args->recurse_pieces, "pieces each --recurse piece is split into")
       ->check(CLI::Range(1ul, 10000ul))->capture_default_str();
   sub->add_option("--threads", args->threads, "threads for the booleans (0: all)")->capture_default_str();
+  sub->add_flag("--repair", args->repair,
+                "repair the mesh first (merge, drop degenerate, orient, stitch, fill holes, resolve self-intersections)");
+  sub->add_flag("--split", args->split, "also write one OBJ per piece to OUT/pieces/");
+  sub->add_option("--boolean-seconds", args->boolean_seconds,
+                  "time budget of one corefinement; past it a named failure, exit 1 (0: none)")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
+  sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file");
   sub->add_option("--out", args->out, "output folder");
   sub->add_flag("--json", args->json, "print the manifest on stdout");
   sub->callback([args, &rc] { rc = run_fracture(*args); });

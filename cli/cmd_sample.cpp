@@ -11,6 +11,7 @@
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/mesh_io.hpp"
 #include "sampling/mesh_report.hpp"
+#include "sampling/mesh_report_json.hpp"
 #include "sampling/mesh_sampler.hpp"
 #include "sampling/sample_quality.hpp"
 
@@ -61,20 +62,8 @@ int run_sample(const SampleArgs& a) {
 
   if (a.json) {
     nlohmann::json j;
-    j["mesh"] = {{"file", a.mesh},
-                 {"vertices", report.vertices},
-                 {"triangles", report.triangles},
-                 {"closed", report.closed},
-                 {"manifold", report.manifold},
-                 {"oriented", report.oriented},
-                 {"boundary_edges", report.boundary_edges},
-                 {"nonmanifold_edges", report.nonmanifold_edges},
-                 {"degenerate_triangles", report.degenerate_triangles},
-                 {"self_intersections", report.self_intersections},
-                 {"area", report.area},
-                 {"volume", report.volume},
-                 {"bbox", {{report.box.lo.x, report.box.lo.y, report.box.lo.z},
-                           {report.box.hi.x, report.box.hi.y, report.box.hi.z}}}};
+    j["mesh"] = mesh_report_json(report);
+    j["mesh"]["file"] = a.mesh;
     j["method"] = a.method;
     j["blue_noise"] = a.blue_noise;
     j["seed"] = a.seed;
@@ -90,10 +79,8 @@ int run_sample(const SampleArgs& a) {
       j["outside"] = nullptr;
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    std::printf("mesh %s: %zu vertices, %zu triangles, %s, %s, %s, %llu self-intersecting pairs, volume %.6g\n",
-                a.mesh.c_str(), report.vertices, report.triangles, report.closed ? "closed" : "open",
-                report.manifold ? "manifold" : "non-manifold", report.oriented ? "oriented" : "not oriented",
-                static_cast<unsigned long long>(report.self_intersections), report.volume);
+    std::printf("mesh %s: %s\n", a.mesh.c_str(), report.summary().c_str());
+    for (const auto& p : report.problems()) std::printf("  %s\n", p.c_str());
     std::printf("%s%s: %zu points in %.3f s (%.0f samples/s) -> %s\n", a.method.c_str(),
                 a.blue_noise ? " + blue noise" : "", out.points.size(), sample_s,
                 sample_s > 0 ? out.points.size() / sample_s : 0.0, a.out.c_str());

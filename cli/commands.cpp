@@ -8,6 +8,7 @@ void register_commands(CLI::App& app, int& rc) {
   add_oracle_command(app, rc);
   add_fuzz_command(app, rc);
   add_experiment_command(app, rc);
+  add_mesh_command(app, rc);
   add_sample_command(app, rc);
   add_voronoi_command(app, rc);
   add_fracture_command(app, rc);

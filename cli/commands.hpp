@@ -10,6 +10,7 @@ void add_oracle_command(CLI::App& app, int& rc);
 void add_sample_command(CLI::App& app, int& rc);
 void add_voronoi_command(CLI::App& app, int& rc);
 void add_fracture_command(CLI::App& app, int& rc);
+void add_mesh_command(CLI::App& app, int& rc);
 void add_demo_command(CLI::App& app, int& rc);
 void add_experiment_command(CLI::App& app, int& rc);
 void add_bench_command(CLI::App& app, int& rc);

@@ -1,5 +1,6 @@
 // CGAL lives here only: conversion, input validation and one corefinement per cell.
 #include "fracture/cell_boolean.hpp"
+#include "fracture/deadline_visitor.hpp"
 
 #include <algorithm>
 #include <future>
@@ -10,14 +11,12 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -26,11 +25,28 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 namespace dtlab {
 
 namespace {
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+// Exact constructions: with EPICK the corefinement rounds intersection points and can
+// loop on coplanar contacts (an 8-vertex cube at 18+ pieces never finished).
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
 using P3 = K::Point_3;
 using Mesh = CGAL::Surface_mesh<P3>;
 using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+
+// tm1 ∩ tm2 -> out within the time budget (0: none).
+bool intersect_within(Mesh& a, Mesh& b, Mesh& out, double budget) {
+  if (budget <= 0) return PMP::corefine_and_compute_intersection(a, b, out);
+  return PMP::corefine_and_compute_intersection(a, b, out, CGAL::parameters::visitor(DeadlineVisitor<Mesh>(budget)),
+                                                CGAL::parameters::default_values(), CGAL::parameters::default_values());
+}
+
+// A lazy-exact coordinate to the nearest double or next to it: the interval when it is
+// tight, else the exact value (CGAL's own to_double accepts intervals 1e-5 wide).
+double coordinate(const K::FT& v) {
+  const auto& i = v.approx();
+  if (i.sup() - i.inf() <= 1e-14 * std::max(std::abs(i.inf()), std::abs(i.sup()))) return CGAL::to_double(i);
+  return CGAL::to_double(v.exact());
+}
 
 TriangleMesh to_triangles(const Mesh& m) {
   TriangleMesh out;
@@ -38,7 +54,7 @@ TriangleMesh to_triangles(const Mesh& m) {
   for (auto v : m.vertices()) {
     id[v.idx()] = static_cast<std::uint32_t>(out.vertices.size());
     const P3& p = m.point(v);
-    out.vertices.push_back({p.x(), p.y(), p.z()});
+    out.vertices.push_back({coordinate(p.x()), coordinate(p.y()), coordinate(p.z())});
   }
   for (auto f : m.faces()) {
     std::array<std::uint32_t, 3> t{};
@@ -109,6 +125,7 @@ struct MeshClipper::Impl {
   Tree tree;
   std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K>> side;
   mutable std::mutex side_mutex;
+  double budget = 0;
 };
 
 MeshClipper::MeshClipper(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
@@ -123,16 +140,18 @@ MeshClipper::MeshClipper(const TriangleMesh& mesh) : impl_(std::make_unique<Impl
   Mesh& sm = impl_->sm;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
   if (!CGAL::is_closed(sm)) throw std::invalid_argument("mesh is not closed (it has boundary edges)");
-  if (PMP::does_self_intersect(sm)) throw std::invalid_argument("mesh intersects itself");
+  // Self-intersections are the caller's check (analyze_mesh, exact predicates): CGAL's
+  // test on the exact kernel cost seconds on 75k triangles.
   if (!PMP::is_outward_oriented(sm)) PMP::reverse_face_orientations(sm);
-  impl_->volume = PMP::volume(sm);
-  impl_->repaired = to_triangles(sm);
+  impl_->repaired = to_triangles(sm);  // input coordinates: exact doubles
+  impl_->volume = signed_volume(impl_->repaired);
   impl_->tree.insert(faces(sm).first, faces(sm).second, sm);
   impl_->tree.build();
   impl_->side = std::make_unique<CGAL::Side_of_triangle_mesh<Mesh, K>>(impl_->tree);
 }
 
 MeshClipper::~MeshClipper() = default;
+void MeshClipper::set_time_budget(double seconds) { impl_->budget = seconds; }
 const TriangleMesh& MeshClipper::mesh() const { return impl_->repaired; }
 double MeshClipper::volume() const { return impl_->volume; }
 
@@ -154,7 +173,13 @@ void MeshClipper::Impl::split(const Mesh& m, std::vector<std::uint32_t> ids, con
   // 16, 32 cells per leaf on the 65k-triangle benchmark, 16 best).
   constexpr std::size_t kLeaf = 16;
   if (ids.size() <= kLeaf || m.number_of_faces() == 0) {
-    for (auto i : ids) out[i] = intersect_with(m, cells[i]);
+    for (auto i : ids) {
+      try {
+        out[i] = intersect_with(m, cells[i]);
+      } catch (const BooleanTimeout& e) {
+        throw std::runtime_error("cell " + std::to_string(i) + ": " + e.what());
+      }
+    }
     return;
   }
   // Halve along the longest spread of the cell centroids.
@@ -193,8 +218,12 @@ void MeshClipper::Impl::split(const Mesh& m, std::vector<std::uint32_t> ids, con
     b = CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
     if (box_inside(mbox, b)) return split(m, std::move(half[h]), cells, out, th);
     Mesh a = m, box = box_mesh(b), cut;
-    if (!PMP::corefine_and_compute_intersection(a, box, cut))
-      throw std::runtime_error("corefinement failed for a box of cells");
+    try {
+      if (!intersect_within(a, box, cut, budget))
+        throw std::runtime_error("corefinement failed for a box of cells");
+    } catch (const BooleanTimeout& e) {
+      throw std::runtime_error("box around " + std::to_string(half[h].size()) + " cells: " + e.what());
+    }
     split(cut, std::move(half[h]), cells, out, th);
   };
   if (threads > 1) {
@@ -227,7 +256,7 @@ PieceMesh MeshClipper::Impl::intersect_with(const Mesh& m, const VoronoiCell& c)
     return piece;  // the mesh misses the box holding this cell
   } else {
     Mesh a = m;
-    if (!PMP::corefine_and_compute_intersection(a, cell, out))
+    if (!intersect_within(a, cell, out, budget))
       throw std::runtime_error("corefinement failed for a cell");
   }
   piece.mesh = to_triangles(out);

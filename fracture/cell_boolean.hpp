@@ -1,8 +1,9 @@
 #pragma once
 // The boolean engine of the fracture: a closed triangle mesh intersected with one
 // convex cell at a time by CGAL's corefinement (Polygon Mesh Processing), exact
-// predicates. CGAL stays inside cell_boolean.cpp (one translation unit).
+// predicates and constructions (EPECK). CGAL stays inside cell_boolean.cpp (one translation unit).
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,20 +22,25 @@ struct PieceMesh {
   bool boolean_skipped = false;  // the cell lies inside the mesh: no corefinement ran
 };
 
-// Why an input mesh cannot be fractured; empty when it can.
-struct MeshDefect {
-  std::string reason;
+// A corefinement that ran past its time budget (a named failure, never a hang).
+struct BooleanTimeout : std::runtime_error {
+  explicit BooleanTimeout(double seconds)
+      : std::runtime_error("boolean exceeded its time budget of " + std::to_string(seconds) + " s"), seconds(seconds) {}
+  double seconds;
 };
 
 class MeshClipper {
  public:
-  // Throws std::invalid_argument with a reason if `mesh` is not a closed, manifold,
-  // self-intersection-free triangle mesh (duplicate vertices are merged first; an
-  // inward orientation is flipped).
+  // Throws std::invalid_argument with a reason if `mesh` is not a closed, manifold
+  // triangle mesh (duplicate vertices are merged first; an inward orientation is
+  // flipped). Self-intersections are not tested here: check with analyze_mesh first.
   explicit MeshClipper(const TriangleMesh& mesh);
   ~MeshClipper();
   MeshClipper(const MeshClipper&) = delete;
   MeshClipper& operator=(const MeshClipper&) = delete;
+
+  // Seconds one corefinement may take before it throws BooleanTimeout (0: no limit).
+  void set_time_budget(double seconds);
 
   // The repaired input (merged vertices, outward orientation).
   const TriangleMesh& mesh() const;

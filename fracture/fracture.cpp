@@ -90,6 +90,26 @@ void measure_piece(Piece& p) {
   }
   p.volume = vol / 6;
   p.centroid = vol != 0 ? o + (1.0 / (4 * vol)) * c : o;
+  // Second moments about o, tetrahedron by tetrahedron (o, a, b, d): for a tetrahedron
+  // with one corner at the origin, integral of x x^T = det/120 (s s^T + a a^T + b b^T + d d^T)
+  // with s = a + b + d. Then moved to the centroid and turned into I = tr(C) Id - C.
+  double C[3][3] = {};
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const Point3 a = m.corner(t, 0) - o, b = m.corner(t, 1) - o, d = m.corner(t, 2) - o;
+    const double w = dot(a, cross(b, d)) / 120;
+    const Point3 s = a + b + d;
+    const double v[4][3] = {{s.x, s.y, s.z}, {a.x, a.y, a.z}, {b.x, b.y, b.z}, {d.x, d.y, d.z}};
+    for (const auto& q : v)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) C[i][j] += w * q[i] * q[j];
+  }
+  const Point3 g = p.centroid - o;
+  const double gv[3] = {g.x, g.y, g.z};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) C[i][j] -= p.volume * gv[i] * gv[j];
+  const double tr = C[0][0] + C[1][1] + C[2][2];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) p.inertia[3 * i + j] = (i == j ? tr : 0) - C[i][j];
   p.interior_area = area;
   std::sort(nb.begin(), nb.end());
   nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
@@ -99,7 +119,18 @@ void measure_piece(Piece& p) {
 FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o) {
   if (o.pieces == 0) throw std::invalid_argument("--pieces must be at least 1");
   FractureResult r;
-  MeshClipper clipper(mesh);
+  TriangleMesh repaired;
+  if (o.repair) {
+    RepairResult rr = repair_mesh(mesh);
+    r.report = rr.before;
+    r.repairs = rr.steps;
+    if (!rr.solid()) throw std::invalid_argument("cannot be repaired into a solid: " + rr.after.why_not_solid());
+    repaired = std::move(rr.mesh);
+  } else if (r.report = analyze_mesh(mesh); !r.report.solid()) {
+    throw std::invalid_argument("not a solid: " + r.report.why_not_solid() + " (--repair tries to fix it)");
+  }
+  MeshClipper clipper(o.repair ? repaired : mesh);
+  clipper.set_time_budget(o.boolean_seconds);
   r.input = clipper.mesh();
   r.mesh_volume = clipper.volume();
   Level top = fracture_once(clipper, o, o.seed, o.pieces, r);
@@ -124,7 +155,13 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
       continue;
     }
     const Piece& parent = top.pieces[i];
+    // A piece's vertices were rounded to doubles: check it is still a solid.
+    const MeshReport pr = analyze_mesh(parent.geometry.mesh);
+    if (!pr.solid())
+      throw std::runtime_error("--recurse: piece " + std::to_string(i) + " is not a solid after rounding: " +
+                               pr.why_not_solid());
     MeshClipper sub_clipper(parent.geometry.mesh);
+    sub_clipper.set_time_budget(o.boolean_seconds);
     Level sub = fracture_once(sub_clipper, o, o.seed * 1000003 + i, o.recurse_pieces, r);
     r.booleans += sub.booleans;
     r.skipped += sub.skipped;

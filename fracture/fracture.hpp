@@ -1,10 +1,12 @@
 #pragma once
 // Voronoi fracture: sites sampled inside a closed mesh, their Voronoi cells (clipped
 // to the mesh's box), each cell intersected with the mesh into one closed piece.
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "fracture/cell_boolean.hpp"
+#include "fracture/mesh_repair.hpp"
 #include "sampling/mesh_sampler.hpp"
 
 namespace dtlab {
@@ -18,12 +20,16 @@ struct FractureOptions {
   unsigned threads = 0;              // 0: all hardware threads
   std::vector<std::size_t> recurse;  // top-level pieces to fracture again
   std::size_t recurse_pieces = 4;    // pieces each of those is split into
+  bool repair = false;               // repair_mesh first (else a mesh that is not solid is refused)
+  double boolean_seconds = 30;       // time budget of one corefinement (0: none); past it, a named failure
 };
 
 struct Piece {
   PieceMesh geometry;
   double volume = 0;
   Point3 centroid{0, 0, 0};
+  // Inertia tensor about the centroid for unit density, row-major 3x3 (symmetric).
+  std::array<double, 9> inertia{};
   double interior_area = 0;              // area of the cut faces
   std::vector<std::uint32_t> neighbors;  // pieces sharing a cut face with this one
   Point3 site{0, 0, 0};
@@ -31,18 +37,21 @@ struct Piece {
 };
 
 struct FractureResult {
-  TriangleMesh input;        // merged, outward-oriented input
+  MeshReport report;                // the input's diagnosis (before any repair)
+  std::vector<RepairStep> repairs;  // what --repair changed (empty without it)
+  TriangleMesh input;        // merged, outward-oriented (repaired) input
   double mesh_volume = 0;
   std::vector<Piece> pieces;
   std::size_t booleans = 0, skipped = 0;
   double seconds_sampling = 0, seconds_voronoi = 0, seconds_boolean = 0;
 };
 
-// Throws std::invalid_argument when the mesh is not closed, manifold and free of
-// self-intersections (see MeshClipper).
+// Throws std::invalid_argument naming the problems (MeshReport::why_not_solid) when the
+// mesh is not a solid, or with options.repair when the repair cannot make it one;
+// std::runtime_error for a named failure of a boolean (time budget).
 FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& options);
 
-// Signed volume, centroid and interior (cut) area of a piece.
+// Signed volume, centroid, inertia tensor and interior (cut) area of a piece.
 void measure_piece(Piece& p);
 
 }  // namespace dtlab

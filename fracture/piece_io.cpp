@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "sampling/mesh_report_json.hpp"
+
 namespace dtlab {
 
 namespace {
@@ -13,7 +15,42 @@ Point3 volume_centroid(const FractureResult& r) {
   for (const auto& p : r.pieces) c += p.volume * p.centroid, v += p.volume;
   return v > 0 ? (1.0 / v) * c : c;
 }
+
+// One piece as object piece_i with groups piece_i_outer / piece_i_cut; returns the
+// next vertex number.
+std::size_t write_piece(std::FILE* f, std::size_t i, const Piece& p, const Point3& shift, std::size_t base) {
+  std::fprintf(f, "o piece_%zu\n", i);
+  for (const auto& v : p.geometry.mesh.vertices) {
+    const Point3 q = v + shift;
+    std::fprintf(f, "v %.17g %.17g %.17g\n", q.x, q.y, q.z);
+  }
+  for (int cut = 0; cut < 2; ++cut) {
+    std::fprintf(f, "g piece_%zu_%s\nusemtl %s\n", i, cut ? "cut" : "outer", cut ? "cut" : "outer");
+    for (std::size_t t = 0; t < p.geometry.mesh.triangles.size(); ++t) {
+      if (p.geometry.cut[t] != cut) continue;
+      const auto& tr = p.geometry.mesh.triangles[t];
+      std::fprintf(f, "f %zu %zu %zu\n", base + tr[0], base + tr[1], base + tr[2]);
+    }
+  }
+  return base + p.geometry.mesh.vertices.size();
+}
 }  // namespace
+
+std::vector<std::string> write_piece_files(const std::string& dir, const FractureResult& r) {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "piece_%04zu.obj", i);
+    const std::string path = dir + "/" + name;
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    if (!f) throw std::runtime_error("cannot write " + path);
+    std::fprintf(f, "# dtlab fracture: piece %zu of %zu\nmtllib ../pieces.mtl\n", i, r.pieces.size());
+    write_piece(f, i, r.pieces[i], Point3{0, 0, 0}, 1);
+    std::fclose(f);
+    names.push_back(name);
+  }
+  return names;
+}
 
 void write_pieces_obj(const std::string& path, const FractureResult& r, double explode) {
   std::FILE* f = std::fopen(path.c_str(), "w");
@@ -23,21 +60,7 @@ void write_pieces_obj(const std::string& path, const FractureResult& r, double e
   std::size_t base = 1;
   for (std::size_t i = 0; i < r.pieces.size(); ++i) {
     const Piece& p = r.pieces[i];
-    const Point3 shift = explode * (p.centroid - centre);
-    std::fprintf(f, "o piece_%zu\n", i);
-    for (const auto& v : p.geometry.mesh.vertices) {
-      const Point3 q = v + shift;
-      std::fprintf(f, "v %.17g %.17g %.17g\n", q.x, q.y, q.z);
-    }
-    for (int cut = 0; cut < 2; ++cut) {
-      std::fprintf(f, "g piece_%zu_%s\nusemtl %s\n", i, cut ? "cut" : "outer", cut ? "cut" : "outer");
-      for (std::size_t t = 0; t < p.geometry.mesh.triangles.size(); ++t) {
-        if (p.geometry.cut[t] != cut) continue;
-        const auto& tr = p.geometry.mesh.triangles[t];
-        std::fprintf(f, "f %zu %zu %zu\n", base + tr[0], base + tr[1], base + tr[2]);
-      }
-    }
-    base += p.geometry.mesh.vertices.size();
+    base = write_piece(f, i, p, explode * (p.centroid - centre), base);
   }
   std::fclose(f);
 }
@@ -60,6 +83,8 @@ nlohmann::json fracture_manifest(const FractureResult& r) {
     j["id"] = i;
     j["volume"] = p.volume;
     j["centroid"] = point_json(p.centroid);
+    const auto& I = p.inertia;
+    j["inertia"] = {{I[0], I[1], I[2]}, {I[3], I[4], I[5]}, {I[6], I[7], I[8]}};
     j["site"] = point_json(p.site);
     j["interior_area"] = p.interior_area;
     j["neighbors"] = p.neighbors;
@@ -71,6 +96,10 @@ nlohmann::json fracture_manifest(const FractureResult& r) {
     pieces.push_back(std::move(j));
   }
   nlohmann::json m;
+  m["mesh"] = mesh_report_json(r.report);
+  nlohmann::json repairs = nlohmann::json::array();
+  for (const auto& s : r.repairs) repairs.push_back({{"step", s.what}, {"count", s.count}, {"detail", s.detail}});
+  m["repairs"] = std::move(repairs);
   m["mesh_volume"] = r.mesh_volume;
   m["piece_volume_sum"] = sum;
   m["relative_volume_error"] = r.mesh_volume != 0 ? std::abs(sum - r.mesh_volume) / r.mesh_volume : 0.0;

@@ -2,8 +2,10 @@
 // Fracture output: pieces.obj (one group per piece, material "outer" for the mesh
 // surface and "cut" for interior faces, with pieces.mtl), exploded.obj (every piece
 // moved away from the mesh centre by `explode` times its centroid offset) and the
-// manifest.json (per piece volume, centroid, interior area, neighbours).
+// manifest.json (the input's mesh report and repairs; per piece volume, centroid,
+// inertia tensor, interior area, neighbours).
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +15,9 @@ namespace dtlab {
 
 void write_pieces_obj(const std::string& path, const FractureResult& r, double explode = 0);
 void write_pieces_mtl(const std::string& path);
+// --split: DIR/piece_0000.obj ... one closed piece per file, groups outer / cut with
+// materials from ../pieces.mtl (DIR is a subfolder of the output). Returns the file names.
+std::vector<std::string> write_piece_files(const std::string& dir, const FractureResult& r);
 nlohmann::json fracture_manifest(const FractureResult& r);
 
 }  // namespace dtlab

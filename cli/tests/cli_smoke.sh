@@ -18,11 +18,11 @@ expect() {  # expect CODE DESCRIPTION -- command...
     pass=$((pass + 1))
   fi
 }
-for sub in tetra check oracle fuzz sample voronoi fracture bench experiment demo; do
-  expect 0 "$sub --help" -- "$dtlab" "$sub" --help
+for sub in tetra check oracle fuzz sample voronoi fracture bench experiment demo mesh "mesh check" "mesh repair"; do
+  expect 0 "$sub --help" -- "$dtlab" $sub --help
 done
 # Every command that does work offers --json.
-for sub in tetra check oracle fuzz sample voronoi fracture bench demo "experiment thesis-failures" "experiment benchmark"; do
+for sub in tetra check oracle fuzz sample voronoi fracture bench demo "experiment thesis-failures" "experiment benchmark" "mesh check" "mesh repair"; do
   $dtlab $sub --help | grep -q -- "--json" || { echo "FAIL: $sub has no --json"; fails=$((fails + 1)); }
 done
 expect 2 "no subcommand" -- "$dtlab"
@@ -50,6 +50,18 @@ expect 0 "bigtet boundary" -- "$dtlab" tetra "$tmp/ok.xyz" --boundary bigtet:100
 printf 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n' > "$tmp/cube.off"
 expect 0 "tetra on a mesh file's vertices" -- "$dtlab" tetra "$tmp/cube.off" --out "$tmp/cube"
 expect 0 "check the cube" -- "$dtlab" check "$tmp/cube"
+expect 0 "mesh check a solid" -- "$dtlab" mesh check "$tmp/cube.off"
+printf 'OFF\n8 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n' > "$tmp/open.off"
+expect 1 "mesh check an open box" -- "$dtlab" mesh check "$tmp/open.off"
+grep -q "not closed: 4 boundary edges in 1 boundary loop" "$tmp/out" || { echo "FAIL: mesh check words"; fails=$((fails + 1)); }
+expect 2 "fracture refuses an open box" -- "$dtlab" fracture "$tmp/open.off" --pieces 4
+grep -q "not a solid: not closed: 4 boundary edges" "$tmp/err" || { echo "FAIL: fracture refusal words"; fails=$((fails + 1)); }
+expect 0 "mesh repair an open box" -- "$dtlab" mesh repair "$tmp/open.off" --out "$tmp/closed.off"
+expect 0 "mesh check the repaired box" -- "$dtlab" mesh check "$tmp/closed.off"
+expect 0 "fracture --repair --split" -- "$dtlab" fracture "$tmp/open.off" --repair --split --pieces 4 --out "$tmp/frac"
+[ -s "$tmp/frac/pieces/piece_0000.obj" ] || { echo "FAIL: --split wrote no piece file"; fails=$((fails + 1)); }
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$tmp/tri.off"
+expect 2 "mesh repair refuses a single triangle" -- "$dtlab" mesh repair "$tmp/tri.off" --out "$tmp/tri_fixed.off"
 expect 0 "demo (small)" -- "$dtlab" demo --out "$tmp/demo" --points 2000 --pieces 5 --no-oracles
 [ -s "$tmp/demo/fracture/exploded.png" ] || { echo "FAIL: demo wrote no PNG"; fails=$((fails + 1)); }
 

@@ -81,3 +81,38 @@ TEST_CASE("self-intersections: two interpenetrating tori are found, one torus is
   for (auto t : b.triangles) a.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
   CHECK(analyze_mesh(a).self_intersections > 0);
 }
+
+TEST_CASE("report: holes, duplicates and degenerate triangles with locations") {
+  // A tetrahedron with two faces removed: one boundary loop of four edges; two
+  // separate triangles: two loops.
+  TriangleMesh m = tetrahedron();
+  m.triangles.resize(2);
+  MeshReport r = analyze_mesh(m);
+  CHECK(r.boundary_edges == 4);
+  CHECK(r.boundary_loops == 1);
+  CHECK(r.boundary_at.size() == 3);
+  CHECK_FALSE(r.solid());
+  CHECK(r.why_not_solid().find("not closed: 4 boundary edges in 1 boundary loop, e.g. at (") == 0);
+
+  TriangleMesh two;
+  two.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}};
+  two.triangles = {{0, 1, 2}, {3, 4, 5}};
+  CHECK(analyze_mesh(two).boundary_loops == 2);
+
+  // Collinear corners, decided exactly: a corner 1e-15 off the line is not collinear.
+  TriangleMesh d;
+  d.vertices = {{0, 0, 0}, {1, 1, 1}, {3, 3, 3}, {1, 1, 1 + 1e-15}};
+  d.triangles = {{0, 1, 2}, {0, 3, 2}};
+  r = analyze_mesh(d);
+  CHECK(r.degenerate_triangles == 1);
+  CHECK(r.degenerate_at.size() == 1);
+
+  TriangleMesh dup = tetrahedron();
+  dup.vertices.push_back(dup.vertices[3]);
+  dup.triangles[3] = {1, 2, 4};
+  r = analyze_mesh(dup);
+  CHECK(r.duplicate_vertices == 1);
+  CHECK(r.solid());
+  CHECK(r.volume == Approx(1.0 / 6));
+  CHECK(r.summary().find("closed, manifold, oriented, 0 self-intersecting pairs") != std::string::npos);
+}
