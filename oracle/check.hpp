@@ -43,6 +43,10 @@ struct CheckOptions {
   std::span<const std::uint32_t> duplicates = {};
   bool delaunay = true;              // run the insphere test on every interior facet
   std::size_t witnesses_per_kind = 16;  // defects listed per kind (all are counted)
+  // Also compare the exact sum of tet volumes with the exact volume inside the
+  // boundary. Implied by stage 3 (interior facets cancel), so no extra proof: a
+  // cross-check of the checker's bookkeeping, a GMP sum over every tet (slow).
+  bool volume_identity = false;
 };
 
 struct CheckStats {
@@ -55,7 +59,7 @@ struct CheckStats {
   std::uint64_t cospherical_facets = 0;  // interior facets with insphere == 0
   bool degree_checked = false;      // the covering degree of the boundary was decided
   bool cover_proven = false;        // ... and it is 1: the tets tile the convex hull once
-  bool volume_checked = false;
+  bool volume_checked = false;     // the volume identity was computed (volume_identity)
   bool volume_equal = false;        // exact sum of tet volumes == exact hull volume
   double volume_tets = 0, volume_hull = 0;  // the exact values, rounded (meaningful only
                                             // as the hull's volume when cover_proven)

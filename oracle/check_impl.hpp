@@ -9,7 +9,8 @@
 //   6. global: one tet's vertices on the inner side of every boundary facet, and the
 //      boundary wraps once around a point of that tet (oracle/hull_degree.hpp);
 //   7. points: each input point a vertex or an exact duplicate of one;
-//   8. exact volumes: sum over tets == volume enclosed by the boundary.
+//   8. exact volume enclosed by the boundary; optionally (volume_identity) also the
+//      identity sum over tets == that volume, a cross-check implied by stage 3.
 // Stage 6 and 8 rely on stages 2-5 being clean and are skipped otherwise. A report
 // with no defect always has the single cover proven (else: `unproven`).
 #include <algorithm>
@@ -77,6 +78,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   // 1. indices
   std::vector<char> used(n, 0);
   if (T.size() >= (1u << 30)) throw std::length_error("check: more than 2^30 tets");
+  if (n >= (1u << 31)) throw std::length_error("check: more than 2^31 points");
   bool indices_ok = true;
   for (std::size_t i = 0; i < T.size(); ++i) {
     const Tet& k = T[i];
@@ -119,14 +121,15 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
 
   // 3. facet table, and 4. Delaunay: insphere on each facet shared by two positive
   // tets, as the table finds it (no adjacency array is kept).
-  auto delaunay = [&](std::uint32_t r1, std::uint32_t r2) {
-    const std::uint32_t t1 = r1 / 4, t2 = r2 / 4;
+  auto delaunay = [&](const FacetPair& f) {
+    const std::uint32_t t1 = f.r1 / 4, t2 = f.r2 / 4;
     if (!positive[t1] || !positive[t2]) return;
-    const Tet& k = T[t1];
-    const std::uint32_t e = T[t2][r2 % 4];
-    const int s = pred.insphere(P[k[0]], P[k[1]], P[k[2]], P[k[3]], P[e]);
+    // A positive order of tet t1 from the facet's own data (no tet lookup).
+    const std::uint32_t k0 = f.odd1 ? f.v[1] : f.v[0], k1 = f.odd1 ? f.v[0] : f.v[1];
+    const std::uint32_t k2 = f.v[2], k3 = f.apex1, e = f.apex2;
+    const int s = pred.insphere(P[k0], P[k1], P[k2], P[k3], P[e]);
     if (s > 0)
-      out.add(DefectKind::non_delaunay, {t1, t2}, {k[0], k[1], k[2], k[3], e}, s,
+      out.add(DefectKind::non_delaunay, {t1, t2}, {k0, k1, k2, k3, e}, s,
               "insphere(tet " + std::to_string(t1) + ", opposite vertex " + std::to_string(e) + ") > 0");
     else if (s == 0)
       report.cospherical_pairs.emplace_back(t1, t2);
@@ -253,16 +256,19 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   // 7. points
   check_points(t, used, opt.duplicates, out, st);
 
-  // 8. volumes
+  // 8. volumes: the exact volume inside the boundary (the hull's, once the cover is
+  // proven); with opt.volume_identity also the exact sum over the tets, compared.
   if (local_ok) {
-    const VolumeSums v = exact_volume_sums(P, T, bs.facets);
-    st.volume_checked = true;
-    st.volume_equal = v.equal;
-    st.volume_tets = v.tets;
+    const VolumeSums v = exact_volume_sums(P, opt.volume_identity ? T : std::span<const Tet>{}, bs.facets);
     st.volume_hull = v.hull;
-    if (!v.equal)
-      out.add(v.tets > v.hull ? DefectKind::overlap : DefectKind::gap, {}, {}, 0,
-              "exact sum of tet volumes differs from the exact volume inside the boundary");
+    if (opt.volume_identity) {
+      st.volume_checked = true;
+      st.volume_equal = v.equal;
+      st.volume_tets = v.tets;
+      if (!v.equal)
+        out.add(v.tets > v.hull ? DefectKind::overlap : DefectKind::gap, {}, {}, 0,
+                "exact sum of tet volumes differs from the exact volume inside the boundary");
+    }
   }
   // "valid" needs the single cover proven; no path may reach here without it.
   if (report.ok() && !st.cover_proven)

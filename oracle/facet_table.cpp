@@ -5,9 +5,12 @@
 namespace dtlab {
 namespace {
 
+// A facet (a, b, c), a < b < c, in the bucket of a: the apex of its tet, with the
+// parity of the ascending order relative to the outward one in bit 31.
 struct Entry {
-  std::uint32_t b, c, ref;
+  std::uint32_t b, c, apex_parity, ref;
 };
+constexpr std::uint32_t kOdd = 0x80000000u;
 
 // Sorts (x,y,z) ascending; returns the parity of the permutation (1 = odd).
 int sort3(std::array<std::uint32_t, 3>& v) {
@@ -72,15 +75,11 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
     count[s.m1] += 3;
     ++count[s.m2];
   }
-  const std::uint64_t budget = std::max<std::uint64_t>(tets.size(), 1u << 20);
+  // About 12 bytes per tet in one pass (an entry is 16 bytes).
+  const std::uint64_t budget = std::max<std::uint64_t>(3 * tets.size() / 4, 1u << 20);
   const std::vector<std::size_t> cut = ranges(count, budget);
   std::vector<Entry> entries;
   std::vector<std::uint64_t> off;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  auto parity_of = [&](std::uint32_t ref) {
-    auto v = facet_vertices(tets[ref / 4], static_cast<int>(ref % 4));
-    return sort3(v);
-  };
   for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
     const std::size_t lo = cut[part], hi = cut[part + 1];
     off.assign(hi - lo + 1, 0);
@@ -89,8 +88,8 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
     std::vector<std::uint64_t> pos(off.begin(), off.end() - 1);
     auto put = [&](std::size_t t, int f) {
       auto v = facet_vertices(tets[t], f);
-      sort3(v);
-      entries[pos[v[0] - lo]++] = {v[1], v[2], static_cast<std::uint32_t>(4 * t + f)};
+      const std::uint32_t odd = sort3(v) ? kOdd : 0;
+      entries[pos[v[0] - lo]++] = {v[1], v[2], tets[t][f] | odd, static_cast<std::uint32_t>(4 * t + f)};
     };
     for (std::size_t t = 0; t < tets.size(); ++t) {
       const TwoSmallest s = two_smallest(tets[t]);
@@ -107,8 +106,12 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
           out.boundary_refs.push_back(i->ref);
         } else if (n == 2) {
           ++out.interior;
-          if (parity_of(i->ref) == parity_of((i + 1)->ref)) out.same_side.emplace_back(i->ref, (i + 1)->ref);
-          if (on_pair) on_pair(i->ref, (i + 1)->ref);
+          const Entry& x = *i;
+          const Entry& y = *(i + 1);
+          if ((x.apex_parity & kOdd) == (y.apex_parity & kOdd)) out.same_side.emplace_back(x.ref, y.ref);
+          if (on_pair)
+            on_pair({x.ref, y.ref, {static_cast<std::uint32_t>(a), x.b, x.c}, x.apex_parity & ~kOdd,
+                     y.apex_parity & ~kOdd, (x.apex_parity & kOdd) != 0});
         } else {
           std::vector<std::uint32_t> refs;
           for (Entry* k = i; k != j; ++k) refs.push_back(k->ref);
@@ -122,13 +125,19 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
 
 std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count) {
   // An edge's smallest vertex is the tet's i-th smallest for 3 - i of its edges.
+  auto sorted = [](Tet s) {
+    auto cs = [&](int i, int j) {
+      if (s[i] > s[j]) std::swap(s[i], s[j]);
+    };
+    cs(0, 1), cs(2, 3), cs(0, 2), cs(1, 3), cs(1, 2);
+    return s;
+  };
   std::vector<std::uint32_t> count(point_count, 0);
   for (const Tet& k : tets) {
-    Tet s = k;
-    std::sort(s.begin(), s.end());
+    const Tet s = sorted(k);
     count[s[0]] += 3, count[s[1]] += 2, count[s[2]] += 1;
   }
-  const std::vector<std::size_t> cut = ranges(count, std::max<std::uint64_t>(tets.size(), 1u << 20));
+  const std::vector<std::size_t> cut = ranges(count, std::max<std::uint64_t>(3 * tets.size(), 1u << 20));
   std::vector<std::uint32_t> other;
   std::vector<std::uint64_t> off;
   std::uint64_t edges = 0;
@@ -139,8 +148,8 @@ std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count) {
     other.resize(off.back());
     std::vector<std::uint64_t> pos(off.begin(), off.end() - 1);
     for (const Tet& k : tets) {
-      Tet s = k;
-      std::sort(s.begin(), s.end());
+      const Tet s = sorted(k);
+      if (s[2] < lo || s[0] >= hi) continue;
       for (int i = 0; i < 3; ++i)
         if (s[i] >= lo && s[i] < hi)
           for (int j = i + 1; j < 4; ++j) other[pos[s[i] - lo]++] = s[j];

@@ -37,10 +37,20 @@ struct FacetTable {
   std::uint64_t interior = 0, boundary = 0;
 };
 
-// Called once for each facet in exactly two tets, with their refs (r1 < r2).
-using FacetPairVisitor = std::function<void(std::uint32_t r1, std::uint32_t r2)>;
+// A facet in exactly two tets, as the table finds it: the refs 4t+f of its two sides
+// (r1 < r2), its vertices ascending, and the apex of each side. When tet r1/4 has
+// orient3d > 0, so does (v[0], v[1], v[2], apex1), or (v[1], v[0], v[2], apex1) when
+// `odd1` (the ascending order is an odd permutation of the facet's outward order).
+struct FacetPair {
+  std::uint32_t r1, r2;
+  std::array<std::uint32_t, 3> v;
+  std::uint32_t apex1, apex2;
+  bool odd1;
+};
+using FacetPairVisitor = std::function<void(const FacetPair&)>;
 
-// Tets must have four distinct vertices below point_count, and tets.size() < 2^30.
+// Tets must have four distinct vertices below point_count, tets.size() < 2^30 and
+// point_count < 2^31.
 FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
                              const FacetPairVisitor& on_pair = {});
 

@@ -35,7 +35,7 @@ std::string format_stats(const CheckStats& s) {
   std::string out = buf;
   // A volume is only a property of the hull once the tets are proven to tile it once.
   if (s.cover_proven)
-    std::snprintf(buf, sizeof buf, "volume %.17g; ", s.volume_tets);
+    std::snprintf(buf, sizeof buf, "volume %.17g; ", s.volume_hull);
   else
     std::snprintf(buf, sizeof buf, "cover not proven, no volume; ");
   out += buf;
