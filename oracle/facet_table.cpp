@@ -1,6 +1,7 @@
 #include "oracle/facet_table.hpp"
 
 #include <algorithm>
+#include <memory>
 
 namespace dtlab {
 namespace {
@@ -12,16 +13,31 @@ struct Entry {
 };
 constexpr std::uint32_t kOdd = 0x80000000u;
 
-// Sorts (x,y,z) ascending; returns the parity of the permutation (1 = odd).
-int sort3(std::array<std::uint32_t, 3>& v) {
+// Vertices ranked by first appearance in the tets. Producers store tets in a spatially
+// coherent order (ours and CGAL's do), so consecutive tets have nearby ranks even
+// when the vertex ids are in random input order: bucketing by rank keeps the
+// counting sort's scattered writes and the point loads local.
+std::vector<std::uint32_t> first_appearance(std::span<const Tet> tets, std::size_t point_count) {
+  std::vector<std::uint32_t> rank(point_count, UINT32_MAX);
+  std::uint32_t next = 0;
+  for (const Tet& k : tets)
+    for (auto v : k)
+      if (rank[v] == UINT32_MAX) rank[v] = next++;
+  return rank;
+}
+
+// Sorts (x,y,z) by rank; returns the parity of the permutation (1 = odd).
+inline int sort3(std::array<std::uint32_t, 3>& v, const std::vector<std::uint32_t>& rank) {
   int parity = 0;
-  if (v[0] > v[1]) std::swap(v[0], v[1]), parity ^= 1;
-  if (v[1] > v[2]) std::swap(v[1], v[2]), parity ^= 1;
-  if (v[0] > v[1]) std::swap(v[0], v[1]), parity ^= 1;
+  std::array<std::uint32_t, 3> r = {rank[v[0]], rank[v[1]], rank[v[2]]};
+  auto cs = [&](int i, int j) {
+    if (r[i] > r[j]) std::swap(r[i], r[j]), std::swap(v[i], v[j]), parity ^= 1;
+  };
+  cs(0, 1), cs(1, 2), cs(0, 1);
   return parity;
 }
 
-// The vertex ranges [lo, hi) processed in one pass each, so that one pass holds
+// The rank ranges [lo, hi) processed in one pass each, so that one pass holds
 // about `budget` entries (a bucket is never split).
 std::vector<std::size_t> ranges(const std::vector<std::uint32_t>& count, std::uint64_t budget) {
   std::vector<std::size_t> cut{0};
@@ -48,58 +64,87 @@ void for_each_group(Entry* first, Entry* last, Group&& group) {
   }
 }
 
-// Smallest and second smallest vertex of a tet, and the slot of the smallest.
-struct TwoSmallest {
-  std::uint32_t m1, m2;
-  int slot1;
+// The two lowest ranks of a tet's vertices, and the slot of the lowest.
+struct TwoLowest {
+  std::uint32_t r0, r1;
+  int slot0;
 };
-TwoSmallest two_smallest(const Tet& k) {
-  int s = 0;
-  for (int i = 1; i < 4; ++i)
-    if (k[i] < k[s]) s = i;
-  std::uint32_t m2 = UINT32_MAX;
-  for (int i = 0; i < 4; ++i)
-    if (i != s) m2 = std::min(m2, k[i]);
-  return {k[s], m2, s};
+inline TwoLowest two_lowest(const Tet& k, const std::vector<std::uint32_t>& rank) {
+  const std::uint32_t a = rank[k[0]], b = rank[k[1]], c = rank[k[2]], d = rank[k[3]];
+  const std::uint32_t ab = std::min(a, b), AB = std::max(a, b), cd = std::min(c, d), CD = std::max(c, d);
+  const bool left = ab < cd;
+  const std::uint32_t r0 = left ? ab : cd, r1 = left ? std::min(AB, cd) : std::min(ab, CD);
+  const int slot0 = r0 == a ? 0 : r0 == b ? 1 : r0 == c ? 2 : 3;
+  return {r0, r1, slot0};
+}
+
+// The ranks of a tet's vertices, ascending.
+struct Ranked {
+  std::array<std::uint32_t, 4> r;
+};
+inline Ranked ranked(const Tet& k, const std::vector<std::uint32_t>& rank) {
+  Ranked out{{rank[k[0]], rank[k[1]], rank[k[2]], rank[k[3]]}};
+  auto cs = [&](int i, int j) {
+    if (out.r[i] > out.r[j]) std::swap(out.r[i], out.r[j]);
+  };
+  cs(0, 1), cs(2, 3), cs(0, 2), cs(1, 3), cs(1, 2);
+  return out;
 }
 
 }  // namespace
 
 FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count, const FacetPairVisitor& on_pair) {
   FacetTable out;
-  // A facet's smallest vertex is the tet's smallest (the three facets containing it)
-  // or, for the facet opposite it, the tet's second smallest.
+  const std::vector<std::uint32_t> rank = first_appearance(tets, point_count);
+  // Buckets by the facet's lowest-ranked vertex: the tet's lowest (the three facets
+  // containing it) or, for the facet opposite it, the tet's second lowest.
   std::vector<std::uint32_t> count(point_count, 0);
   for (const Tet& k : tets) {
-    const TwoSmallest s = two_smallest(k);
-    count[s.m1] += 3;
-    ++count[s.m2];
+    const TwoLowest s = two_lowest(k, rank);
+    count[s.r0] += 3;
+    ++count[s.r1];
   }
   // About 12 bytes per tet in one pass (an entry is 16 bytes).
   const std::uint64_t budget = std::max<std::uint64_t>(3 * tets.size() / 4, 1u << 20);
   const std::vector<std::size_t> cut = ranges(count, budget);
-  std::vector<Entry> entries;
+  std::uint64_t most = 0;
+  for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
+    std::uint64_t sum = 0;
+    for (std::size_t v = cut[part]; v < cut[part + 1]; ++v) sum += count[v];
+    most = std::max(most, sum);
+  }
+  const std::unique_ptr<Entry[]> entries(new Entry[most]);  // no zero fill
   std::vector<std::uint64_t> off;
+  std::array<std::uint32_t, 3> byrank;
   for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
     const std::size_t lo = cut[part], hi = cut[part + 1];
     off.assign(hi - lo + 1, 0);
     for (std::size_t v = lo; v < hi; ++v) off[v - lo + 1] = off[v - lo] + count[v];
-    entries.resize(off.back());
     std::vector<std::uint64_t> pos(off.begin(), off.end() - 1);
     auto put = [&](std::size_t t, int f) {
       auto v = facet_vertices(tets[t], f);
-      const std::uint32_t odd = sort3(v) ? kOdd : 0;
-      entries[pos[v[0] - lo]++] = {v[1], v[2], tets[t][f] | odd, static_cast<std::uint32_t>(4 * t + f)};
+      const std::uint32_t odd = sort3(v, rank) ? kOdd : 0;
+      entries[pos[rank[v[0]] - lo]++] = {v[1], v[2], tets[t][f] | odd, static_cast<std::uint32_t>(4 * t + f)};
     };
     for (std::size_t t = 0; t < tets.size(); ++t) {
-      const TwoSmallest s = two_smallest(tets[t]);
-      if (s.m1 >= lo && s.m1 < hi)
+      const TwoLowest s = two_lowest(tets[t], rank);
+      if (s.r1 < lo || s.r0 >= hi) continue;
+      if (s.r0 >= lo)
         for (int f = 0; f < 4; ++f)
-          if (f != s.slot1) put(t, f);
-      if (s.m2 >= lo && s.m2 < hi) put(t, s.slot1);
+          if (f != s.slot0) put(t, f);
+      if (s.r1 < hi) put(t, s.slot0);
     }
-    for (std::size_t a = lo; a < hi; ++a)
-      for_each_group(entries.data() + off[a - lo], entries.data() + off[a - lo + 1], [&](Entry* i, Entry* j) {
+    for (std::size_t a = lo; a < hi; ++a) {
+      if (off[a - lo] == off[a - lo + 1]) continue;
+      // The bucket's vertex: the first vertex of any of its facets, by rank.
+      const Entry& any = entries[off[a - lo]];
+      {
+        const Tet& k = tets[any.ref / 4];
+        byrank = facet_vertices(k, static_cast<int>(any.ref % 4));
+        sort3(byrank, rank);
+      }
+      const std::uint32_t va = byrank[0];
+      for_each_group(entries.get() + off[a - lo], entries.get() + off[a - lo + 1], [&](Entry* i, Entry* j) {
         const auto n = j - i;
         if (n == 1) {
           ++out.boundary;
@@ -110,32 +155,28 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
           const Entry& y = *(i + 1);
           if ((x.apex_parity & kOdd) == (y.apex_parity & kOdd)) out.same_side.emplace_back(x.ref, y.ref);
           if (on_pair)
-            on_pair({x.ref, y.ref, {static_cast<std::uint32_t>(a), x.b, x.c}, x.apex_parity & ~kOdd,
-                     y.apex_parity & ~kOdd, (x.apex_parity & kOdd) != 0});
+            on_pair({x.ref, y.ref, {va, x.b, x.c}, x.apex_parity & ~kOdd, y.apex_parity & ~kOdd,
+                     (x.apex_parity & kOdd) != 0});
         } else {
           std::vector<std::uint32_t> refs;
           for (Entry* k = i; k != j; ++k) refs.push_back(k->ref);
           out.overshared.push_back(std::move(refs));
         }
       });
+    }
   }
   std::sort(out.boundary_refs.begin(), out.boundary_refs.end());
   return out;
 }
 
 std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count) {
-  // An edge's smallest vertex is the tet's i-th smallest for 3 - i of its edges.
-  auto sorted = [](Tet s) {
-    auto cs = [&](int i, int j) {
-      if (s[i] > s[j]) std::swap(s[i], s[j]);
-    };
-    cs(0, 1), cs(2, 3), cs(0, 2), cs(1, 3), cs(1, 2);
-    return s;
-  };
+  // An edge's lowest-ranked vertex is the tet's i-th lowest for 3 - i of its edges;
+  // the edge is stored in that vertex's bucket as the other vertex's rank.
+  const std::vector<std::uint32_t> rank = first_appearance(tets, point_count);
   std::vector<std::uint32_t> count(point_count, 0);
   for (const Tet& k : tets) {
-    const Tet s = sorted(k);
-    count[s[0]] += 3, count[s[1]] += 2, count[s[2]] += 1;
+    const Ranked s = ranked(k, rank);
+    count[s.r[0]] += 3, count[s.r[1]] += 2, count[s.r[2]] += 1;
   }
   const std::vector<std::size_t> cut = ranges(count, std::max<std::uint64_t>(3 * tets.size(), 1u << 20));
   std::vector<std::uint32_t> other;
@@ -148,11 +189,11 @@ std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count) {
     other.resize(off.back());
     std::vector<std::uint64_t> pos(off.begin(), off.end() - 1);
     for (const Tet& k : tets) {
-      const Tet s = sorted(k);
-      if (s[2] < lo || s[0] >= hi) continue;
+      const Ranked s = ranked(k, rank);
+      if (s.r[2] < lo || s.r[0] >= hi) continue;
       for (int i = 0; i < 3; ++i)
-        if (s[i] >= lo && s[i] < hi)
-          for (int j = i + 1; j < 4; ++j) other[pos[s[i] - lo]++] = s[j];
+        if (s.r[i] >= lo && s.r[i] < hi)
+          for (int j = i + 1; j < 4; ++j) other[pos[s.r[i] - lo]++] = s.r[j];
     }
     for (std::size_t a = lo; a < hi; ++a) {
       auto first = other.begin() + static_cast<std::ptrdiff_t>(off[a - lo]);

@@ -1,9 +1,10 @@
 #pragma once
 // Facet adjacency rebuilt from the tets alone (the checker trusts no adjacency
-// given by a producer). Facets are matched by their sorted vertex triple, bucketed
-// by the smallest vertex (a counting sort) with the few facets of one bucket sorted.
-// To bound memory the vertices are processed in ranges, each one pass over the
-// tets: at most about 12 bytes per tet beyond the tets themselves.
+// given by a producer). Facets are matched by their vertex triple, bucketed by the
+// vertex that appears first in the tets (a counting sort; see facet_table.cpp for
+// why first appearance) with the few facets of one bucket sorted. To bound memory
+// the buckets are processed in ranges, each one pass over the tets: about 12 bytes
+// per tet beyond the tets themselves.
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -37,10 +38,10 @@ struct FacetTable {
   std::uint64_t interior = 0, boundary = 0;
 };
 
-// A facet in exactly two tets, as the table finds it: the refs 4t+f of its two sides
-// (r1 < r2), its vertices ascending, and the apex of each side. When tet r1/4 has
+// A facet in exactly two tets, as the table finds it: the refs 4t+f of its two sides,
+// its vertices in the table's canonical order, and the apex of each side. When tet r1/4 has
 // orient3d > 0, so does (v[0], v[1], v[2], apex1), or (v[1], v[0], v[2], apex1) when
-// `odd1` (the ascending order is an odd permutation of the facet's outward order).
+// `odd1` (the canonical order is an odd permutation of the facet's outward order).
 struct FacetPair {
   std::uint32_t r1, r2;
   std::array<std::uint32_t, 3> v;
