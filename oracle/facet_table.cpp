@@ -104,8 +104,9 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
     count[s.r0] += 3;
     ++count[s.r1];
   }
-  // About 12 bytes per tet in one pass (an entry is 16 bytes).
-  const std::uint64_t budget = std::max<std::uint64_t>(3 * tets.size() / 4, 1u << 20);
+  // About 10 bytes per tet in one pass (an entry is 16 bytes): with the tets' own 16,
+  // the checker stays below the builder's memory.
+  const std::uint64_t budget = std::max<std::uint64_t>(3 * tets.size() / 5, 1u << 20);
   const std::vector<std::size_t> cut = ranges(count, budget);
   std::uint64_t most = 0;
   for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
@@ -178,7 +179,7 @@ std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count) {
     const Ranked s = ranked(k, rank);
     count[s.r[0]] += 3, count[s.r[1]] += 2, count[s.r[2]] += 1;
   }
-  const std::vector<std::size_t> cut = ranges(count, std::max<std::uint64_t>(3 * tets.size(), 1u << 20));
+  const std::vector<std::size_t> cut = ranges(count, std::max<std::uint64_t>(12 * tets.size() / 5, 1u << 20));
   std::vector<std::uint32_t> other;
   std::vector<std::uint64_t> off;
   std::uint64_t edges = 0;

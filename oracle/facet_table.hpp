@@ -3,7 +3,7 @@
 // given by a producer). Facets are matched by their vertex triple, bucketed by the
 // vertex that appears first in the tets (a counting sort; see facet_table.cpp for
 // why first appearance) with the few facets of one bucket sorted. To bound memory
-// the buckets are processed in ranges, each one pass over the tets: about 12 bytes
+// the buckets are processed in ranges, each one pass over the tets: about 10 bytes
 // per tet beyond the tets themselves.
 #include <array>
 #include <cstdint>
