@@ -1,6 +1,9 @@
-// dtlab tetra INPUT: the Delaunay tetrahedralization of a point file.
+// dtlab tetra INPUT: the Delaunay tetrahedralization of a point file. With --check the
+// result is verified by the exact checker (exit 1 on a defect); without it, a build
+// with a non-robust backend (naive, epsilon) says that it is unverified.
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +13,8 @@
 #include "cli/tetra_report.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
+#include "oracle/check.hpp"
+#include "oracle/report_json.hpp"
 
 namespace dtlab::cli {
 
@@ -19,8 +24,11 @@ struct TetraArgs {
   std::string out;
   bool vtu = false;
   bool json = false;
+  bool check = false;
   KernelArgs kernel;
 };
+
+bool robust_backend(const std::string& predicates) { return predicates == "adaptive" || predicates == "exact"; }
 
 int run_tetra(const TetraArgs& a) {
   const BuildOptions options = a.kernel.build_options();
@@ -30,20 +38,38 @@ int run_tetra(const TetraArgs& a) {
     write_tetgen(a.out, r.mesh);
     if (a.vtu) write_vtu(a.out + ".vtu", r.mesh);
   }
+  // The exact check of a finished build (a failed one is already reported as such).
+  std::optional<CheckReport> check;
+  if (a.check && !r.failure) {
+    CheckOptions co;
+    co.duplicates = r.duplicates;
+    co.witnesses_per_kind = 3;
+    check = check_tetrahedralization(r.mesh, co);
+  }
   nlohmann::json j = tetra_summary(r, a.kernel);
   j["input"] = a.input;
   if (!a.out.empty()) j["output"] = a.out;
+  j["check"] = check ? to_json(*check) : nlohmann::json(nullptr);
+  const bool unverified = !r.failure && !check && !robust_backend(a.kernel.predicates);
+  j["verified"] = check ? nlohmann::json(check->ok()) : nlohmann::json(nullptr);
   if (a.json) {
     std::printf("%s\n", j.dump(2).c_str());
   } else {
     print_tetra_summary(stdout, r, a.input);
+    if (check) print_tetra_check(stdout, *check);
     if (!a.out.empty()) std::printf("wrote %s.node, %s.ele%s\n", a.out.c_str(), a.out.c_str(), a.vtu ? ", .vtu" : "");
   }
+  if (unverified)
+    std::fprintf(stderr,
+                 "dtlab tetra: UNVERIFIED: the %s predicates can give a wrong tetrahedralization; "
+                 "verify with --check (or `dtlab check PREFIX` on the --out files)\n",
+                 a.kernel.predicates.c_str());
   if (r.failure && r.failure->kind == FailureKind::lower_dimensional) {
     std::fprintf(stderr, "dtlab tetra: %s: %s\n", a.input.c_str(), r.failure->detail.c_str());
     return kBadInput;
   }
-  return r.failure ? kDefect : kOk;
+  if (r.failure || (check && !check->ok())) return kDefect;
+  return kOk;
 }
 }  // namespace
 
@@ -54,6 +80,8 @@ void add_tetra_command(CLI::App& app, int& rc) {
   sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)");
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu for ParaView");
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
+  sub->add_flag("--check", args->check,
+                "verify the result with the exact checker (as `dtlab check`); exit 1 on a defect");
   args->kernel.add_to(*sub);
   sub->callback([args, &rc] { rc = run_tetra(*args); });
 }

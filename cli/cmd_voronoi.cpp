@@ -1,11 +1,15 @@
-// dtlab voronoi INPUT: Voronoi cells of a point file, clipped to a box.
+// dtlab voronoi INPUT: Voronoi cells of a point file, clipped to a box. A failed
+// Delaunay build exits 1 with its named failure (e.g. walk-cycle).
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
 #include "cli/input_points.hpp"
+#include "kernel/build.hpp"
 #include "kernel/point_io.hpp"
 #include "voronoi/cell_check.hpp"
 #include "voronoi/voronoi_io.hpp"
@@ -38,7 +42,21 @@ int run_voronoi(const VoronoiArgs& a) {
     }
     o.box = vor::Box{{a.box[0], a.box[1], a.box[2]}, {a.box[3], a.box[4], a.box[5]}};
   }
-  const VoronoiDiagram vd = compute_voronoi(in.points, o);
+  std::optional<VoronoiDiagram> built;
+  try {
+    built = compute_voronoi(in.points, o);
+  } catch (const std::runtime_error&) {
+    // compute_voronoi reports a failed Delaunay build as an error without its kind;
+    // the same build (deterministic, default options, as compute_voronoi runs it)
+    // names it, and a failed build is a defect (exit 1), as in `dtlab tetra`.
+    const BuildResult r = build_delaunay(in.points, o.predicates);
+    if (!r.failure || r.failure->kind == FailureKind::lower_dimensional) throw;
+    std::fprintf(stderr, "dtlab voronoi: %s: Delaunay build failed: %s while inserting point %lld: %s\n",
+                 a.input.c_str(), failure_name(r.failure->kind), static_cast<long long>(r.failure->point),
+                 r.failure->detail.c_str());
+    return kDefect;
+  }
+  const VoronoiDiagram& vd = *built;
   nlohmann::json m = cells_manifest(vd);
   m["input"] = a.input;
   m["timing"] = {{"seconds_delaunay", vd.seconds_dt}, {"seconds_cells", vd.seconds_cells},

@@ -1,5 +1,7 @@
 #include "cli/tetra_report.hpp"
 
+#include "oracle/report_json.hpp"
+
 namespace dtlab::cli {
 
 nlohmann::json tetra_summary(const BuildResult& r, const KernelArgs& k) {
@@ -48,6 +50,19 @@ void print_tetra_summary(std::FILE* out, const BuildResult& r, const std::string
   if (r.failure)
     std::fprintf(out, "FAILURE %s while inserting point %lld: %s\n", failure_name(r.failure->kind),
                  (long long)r.failure->point, r.failure->detail.c_str());
+}
+
+void print_tetra_check(std::FILE* out, const CheckReport& r) {
+  if (r.ok()) {
+    std::fprintf(out, "check: valid Delaunay tetrahedralization (exact checker, %.3f s)\n", r.stats.seconds);
+    return;
+  }
+  std::fprintf(out, "check: DEFECTS FOUND (exact checker, %.3f s):", r.stats.seconds);
+  for (int k = 0; k < kDefectKinds; ++k)
+    if (r.counts[k])
+      std::fprintf(out, " %llu x %s", static_cast<unsigned long long>(r.counts[k]), defect_name(static_cast<DefectKind>(k)));
+  std::fprintf(out, "\n");
+  for (const Defect& d : r.defects) std::fprintf(out, "  %s\n", format_defect(d).c_str());
 }
 
 }  // namespace dtlab::cli

@@ -7,10 +7,13 @@
 
 #include "cli/build_options.hpp"
 #include "kernel/build.hpp"
+#include "oracle/check.hpp"
 
 namespace dtlab::cli {
 
 nlohmann::json tetra_summary(const BuildResult& r, const KernelArgs& k);
 void print_tetra_summary(std::FILE* out, const BuildResult& r, const std::string& input);
+// `tetra --check`: the verdict, the defect counts per kind and a few witnesses.
+void print_tetra_check(std::FILE* out, const CheckReport& r);
 
 }  // namespace dtlab::cli

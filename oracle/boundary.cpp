@@ -123,11 +123,12 @@ void label_components(BoundarySurface& s) {
 BoundarySurface build_boundary(std::span<const Tet> tets, const FacetTable& table,
                                std::size_t point_count) {
   BoundarySurface s;
-  for (std::size_t r = 0; r < table.adj.size(); ++r)
-    if (table.adj[r] == FacetTable::kBoundary) {
-      s.facets.push_back(facet_vertices(tets[r / 4], static_cast<int>(r % 4)));
-      s.tet_of.push_back(static_cast<std::uint32_t>(r / 4));
-    }
+  s.facets.reserve(table.boundary_refs.size());
+  s.tet_of.reserve(table.boundary_refs.size());
+  for (const std::uint32_t r : table.boundary_refs) {
+    s.facets.push_back(facet_vertices(tets[r / 4], static_cast<int>(r % 4)));
+    s.tet_of.push_back(r / 4);
+  }
   match_edges(s, point_count);
   check_links(s, point_count);
   label_components(s);

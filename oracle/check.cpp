@@ -22,6 +22,7 @@ const char* defect_name(DefectKind k) {
     case DefectKind::missing_point: return "missing-point";
     case DefectKind::duplicate_vertex: return "duplicate-vertex";
     case DefectKind::euler: return "euler";
+    case DefectKind::unproven: return "unproven";
   }
   return "?";
 }

@@ -24,8 +24,9 @@ enum class DefectKind {
   missing_point,     // an input point (not an exact duplicate of a vertex) that is no vertex
   duplicate_vertex,  // two vertices with identical coordinates
   euler,             // Euler characteristics inconsistent with a ball
+  unproven,          // a stage could not decide: the mesh is not proven valid
 };
-inline constexpr int kDefectKinds = 10;
+inline constexpr int kDefectKinds = 11;
 const char* defect_name(DefectKind k);
 
 struct Defect {
@@ -42,6 +43,10 @@ struct CheckOptions {
   std::span<const std::uint32_t> duplicates = {};
   bool delaunay = true;              // run the insphere test on every interior facet
   std::size_t witnesses_per_kind = 16;  // defects listed per kind (all are counted)
+  // Also compare the exact sum of tet volumes with the exact volume inside the
+  // boundary. Implied by stage 3 (interior facets cancel), so no extra proof: a
+  // cross-check of the checker's bookkeeping, a GMP sum over every tet (slow).
+  bool volume_identity = false;
 };
 
 struct CheckStats {
@@ -52,10 +57,12 @@ struct CheckStats {
   std::int64_t boundary_euler = 0;  // V - E + F of the boundary (2 for a sphere)
   std::uint64_t duplicates = 0;     // input points equal to a vertex but not one
   std::uint64_t cospherical_facets = 0;  // interior facets with insphere == 0
-  bool degree_checked = false;      // the hull was proven covered exactly once
-  bool volume_checked = false;
+  bool degree_checked = false;      // the covering degree of the boundary was decided
+  bool cover_proven = false;        // ... and it is 1: the tets tile the convex hull once
+  bool volume_checked = false;     // the volume identity was computed (volume_identity)
   bool volume_equal = false;        // exact sum of tet volumes == exact hull volume
-  double volume_tets = 0, volume_hull = 0;  // the exact values, rounded
+  double volume_tets = 0, volume_hull = 0;  // the exact values, rounded (meaningful only
+                                            // as the hull's volume when cover_proven)
   double seconds = 0;
 };
 

@@ -9,8 +9,10 @@
 //   6. global: one tet's vertices on the inner side of every boundary facet, and the
 //      boundary wraps once around a point of that tet (oracle/hull_degree.hpp);
 //   7. points: each input point a vertex or an exact duplicate of one;
-//   8. exact volumes: sum over tets == volume enclosed by the boundary.
-// Stage 6 and 8 rely on stages 2-5 being clean and are skipped otherwise.
+//   8. exact volume enclosed by the boundary; optionally (volume_identity) also the
+//      identity sum over tets == that volume, a cross-check implied by stage 3.
+// Stage 6 and 8 rely on stages 2-5 being clean and are skipped otherwise. A report
+// with no defect always has the single cover proven (else: `unproven`).
 #include <algorithm>
 #include <chrono>
 #include <numeric>
@@ -76,6 +78,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   // 1. indices
   std::vector<char> used(n, 0);
   if (T.size() >= (1u << 30)) throw std::length_error("check: more than 2^30 tets");
+  if (n >= (1u << 31)) throw std::length_error("check: more than 2^31 points");
   bool indices_ok = true;
   for (std::size_t i = 0; i < T.size(); ++i) {
     const Tet& k = T[i];
@@ -116,8 +119,24 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
       out.add(DefectKind::flat, {static_cast<std::uint32_t>(i)}, tet_vertices(k), 0, "orient3d == 0");
   }
 
-  // 3. facet table
-  const FacetTable table = build_facet_table(T, n);
+  // 3. facet table, and 4. Delaunay: insphere on each facet shared by two positive
+  // tets, as the table finds it (no adjacency array is kept).
+  auto delaunay = [&](const FacetPair& f) {
+    const std::uint32_t t1 = f.r1 / 4, t2 = f.r2 / 4;
+    if (!positive[t1] || !positive[t2]) return;
+    // A positive order of tet t1 from the facet's own data (no tet lookup).
+    const std::uint32_t k0 = f.odd1 ? f.v[1] : f.v[0], k1 = f.odd1 ? f.v[0] : f.v[1];
+    const std::uint32_t k2 = f.v[2], k3 = f.apex1, e = f.apex2;
+    const int s = pred.insphere(P[k0], P[k1], P[k2], P[k3], P[e]);
+    if (s > 0)
+      out.add(DefectKind::non_delaunay, {t1, t2}, {k0, k1, k2, k3, e}, s,
+              "insphere(tet " + std::to_string(t1) + ", opposite vertex " + std::to_string(e) + ") > 0");
+    else if (s == 0)
+      report.cospherical_pairs.emplace_back(t1, t2);
+  };
+  const FacetTable table =
+      opt.delaunay ? build_facet_table(T, n, delaunay) : build_facet_table(T, n);
+  st.cospherical_facets = report.cospherical_pairs.size();
   st.interior_facets = table.interior;
   st.boundary_facets = table.boundary;
   for (const auto& refs : table.overshared) {
@@ -131,25 +150,6 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     const auto f = facet_vertices(T[r1 / 4], static_cast<int>(r1 % 4));
     out.add(DefectKind::overlap, {r1 / 4, r2 / 4}, {f[0], f[1], f[2], T[r1 / 4][r1 % 4], T[r2 / 4][r2 % 4]},
             0, "both tets lie on the same side of their shared facet");
-  }
-
-  // 4. Delaunay
-  if (opt.delaunay) {
-    for (std::size_t r = 0; r < table.adj.size(); ++r) {
-      const std::uint32_t r2 = table.adj[r];
-      if (r2 >= FacetTable::kOvershared || r2 < r) continue;
-      const std::uint32_t t1 = static_cast<std::uint32_t>(r / 4), t2 = r2 / 4;
-      if (!positive[t1] || !positive[t2]) continue;
-      const Tet& k = T[t1];
-      const std::uint32_t e = T[t2][r2 % 4];
-      const int s = pred.insphere(P[k[0]], P[k[1]], P[k[2]], P[k[3]], P[e]);
-      if (s > 0)
-        out.add(DefectKind::non_delaunay, {t1, t2}, {k[0], k[1], k[2], k[3], e}, s,
-                "insphere(tet " + std::to_string(t1) + ", opposite vertex " + std::to_string(e) + ") > 0");
-      else if (s == 0)
-        report.cospherical_pairs.emplace_back(t1, t2);
-    }
-    st.cospherical_facets = report.cospherical_pairs.size();
   }
 
   // 5. boundary surface
@@ -212,8 +212,13 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
       out.add(DefectKind::euler, {}, {}, 0, "V-E+F-T = " + std::to_string(st.euler) + ", expected 1 (a ball)");
   }
 
-  // 6. global convexity and single covering
-  if (local_ok && report.ok()) {
+  // 6. global convexity and single covering. Runs whenever the surface is a closed,
+  // connected, locally convex 2-manifold (non-Delaunay facets do not matter here).
+  const bool surface_ok = local_ok && bs.components == 1 && out.count(DefectKind::hull_not_convex) == 0 &&
+                          out.count(DefectKind::gap) == 0 && out.count(DefectKind::euler) == 0;
+  if (surface_ok && bs.facets.empty()) {
+    out.add(DefectKind::unproven, {}, {}, 0, "no boundary facets: the covering cannot be decided");
+  } else if (surface_ok) {
     const std::uint32_t f0 = 0, t0 = bs.tet_of[f0];
     const Tet& k0 = T[t0];
     bool inside = true;
@@ -231,7 +236,11 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     if (inside) {
       const HullDegree deg = hull_degree(P, bs.facets, k0, f0);
       st.degree_checked = deg.decided;
-      if (deg.decided && deg.crossed.size() != 1) {
+      st.cover_proven = deg.decided && deg.crossed.size() == 1;
+      if (!deg.decided) {
+        out.add(DefectKind::unproven, {t0}, tet_vertices(k0), 0,
+                "the covering degree of the boundary around tet " + std::to_string(t0) + " was not decided");
+      } else if (deg.crossed.size() != 1) {
         std::vector<std::uint32_t> tets, verts;
         for (auto f : deg.crossed) {
           tets.push_back(bs.tet_of[f]);
@@ -247,17 +256,23 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   // 7. points
   check_points(t, used, opt.duplicates, out, st);
 
-  // 8. volumes
+  // 8. volumes: the exact volume inside the boundary (the hull's, once the cover is
+  // proven); with opt.volume_identity also the exact sum over the tets, compared.
   if (local_ok) {
-    const VolumeSums v = exact_volume_sums(P, T, bs.facets);
-    st.volume_checked = true;
-    st.volume_equal = v.equal;
-    st.volume_tets = v.tets;
+    const VolumeSums v = exact_volume_sums(P, opt.volume_identity ? T : std::span<const Tet>{}, bs.facets);
     st.volume_hull = v.hull;
-    if (!v.equal)
-      out.add(v.tets > v.hull ? DefectKind::overlap : DefectKind::gap, {}, {}, 0,
-              "exact sum of tet volumes differs from the exact volume inside the boundary");
+    if (opt.volume_identity) {
+      st.volume_checked = true;
+      st.volume_equal = v.equal;
+      st.volume_tets = v.tets;
+      if (!v.equal)
+        out.add(v.tets > v.hull ? DefectKind::overlap : DefectKind::gap, {}, {}, 0,
+                "exact sum of tet volumes differs from the exact volume inside the boundary");
+    }
   }
+  // "valid" needs the single cover proven; no path may reach here without it.
+  if (report.ok() && !st.cover_proven)
+    out.add(DefectKind::unproven, {}, {}, 0, "the single cover of the hull was not proven");
   return finish();
 }
 

@@ -98,7 +98,7 @@ VolumeSums exact_volume_sums(std::span<const Point3> points, std::span<const Tet
     add_det3(sum_h.v, r, t0.v, t1.v);
   }
   VolumeSums out;
-  out.equal = mpz_cmp(sum_t.v, sum_h.v) == 0;
+  out.equal = !tets.empty() && mpz_cmp(sum_t.v, sum_h.v) == 0;
   out.tets = to_volume(sum_t.v, sc.kmin());
   out.hull = to_volume(sum_h.v, sc.kmin());
   return out;

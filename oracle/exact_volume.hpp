@@ -17,6 +17,7 @@ struct VolumeSums {
 
 // tets: sum of orient3d over tets. hull: sum over outward boundary facets (x,y,z)
 // of orient3d(x,y,z,origin), the volume they enclose by the divergence theorem.
+// With no tets, only the hull sum is computed (`equal` is then false).
 VolumeSums exact_volume_sums(std::span<const Point3> points, std::span<const Tet> tets,
                              std::span<const std::array<std::uint32_t, 3>> boundary);
 

@@ -1,114 +1,207 @@
 #include "oracle/facet_table.hpp"
 
 #include <algorithm>
+#include <memory>
 
 namespace dtlab {
 namespace {
 
+// A facet (a, b, c), a < b < c, in the bucket of a: the apex of its tet, with the
+// parity of the ascending order relative to the outward one in bit 31.
 struct Entry {
-  std::uint32_t b, c, ref;
+  std::uint32_t b, c, apex_parity, ref;
 };
+constexpr std::uint32_t kOdd = 0x80000000u;
 
-// Sorts (x,y,z) ascending; returns the parity of the permutation (1 = odd).
-int sort3(std::array<std::uint32_t, 3>& v) {
+// Vertices ranked by first appearance in the tets. Producers store tets in a spatially
+// coherent order (ours and CGAL's do), so consecutive tets have nearby ranks even
+// when the vertex ids are in random input order: bucketing by rank keeps the
+// counting sort's scattered writes and the point loads local.
+std::vector<std::uint32_t> first_appearance(std::span<const Tet> tets, std::size_t point_count) {
+  std::vector<std::uint32_t> rank(point_count, UINT32_MAX);
+  std::uint32_t next = 0;
+  for (const Tet& k : tets)
+    for (auto v : k)
+      if (rank[v] == UINT32_MAX) rank[v] = next++;
+  return rank;
+}
+
+// Sorts (x,y,z) by rank; returns the parity of the permutation (1 = odd).
+inline int sort3(std::array<std::uint32_t, 3>& v, const std::vector<std::uint32_t>& rank) {
   int parity = 0;
-  if (v[0] > v[1]) std::swap(v[0], v[1]), parity ^= 1;
-  if (v[1] > v[2]) std::swap(v[1], v[2]), parity ^= 1;
-  if (v[0] > v[1]) std::swap(v[0], v[1]), parity ^= 1;
+  std::array<std::uint32_t, 3> r = {rank[v[0]], rank[v[1]], rank[v[2]]};
+  auto cs = [&](int i, int j) {
+    if (r[i] > r[j]) std::swap(r[i], r[j]), std::swap(v[i], v[j]), parity ^= 1;
+  };
+  cs(0, 1), cs(1, 2), cs(0, 1);
   return parity;
 }
 
-// Offsets of a counting sort by key (CSR).
-std::vector<std::uint64_t> offsets_from_counts(std::vector<std::uint64_t> counts) {
+// The rank ranges [lo, hi) processed in one pass each, so that one pass holds
+// about `budget` entries (a bucket is never split).
+std::vector<std::size_t> ranges(const std::vector<std::uint32_t>& count, std::uint64_t budget) {
+  std::vector<std::size_t> cut{0};
   std::uint64_t sum = 0;
-  for (auto& c : counts) {
-    const std::uint64_t n = c;
-    c = sum;
-    sum += n;
+  for (std::size_t v = 0; v < count.size(); ++v) {
+    if (sum > 0 && sum + count[v] > budget) cut.push_back(v), sum = 0;
+    sum += count[v];
   }
-  counts.push_back(sum);
-  return counts;
+  cut.push_back(count.size());
+  return cut;
+}
+
+// Bucket-local sort by (b, c, ref), then groups of equal (b, c).
+template <class Group>
+void for_each_group(Entry* first, Entry* last, Group&& group) {
+  std::sort(first, last, [](const Entry& x, const Entry& y) {
+    return x.b != y.b ? x.b < y.b : (x.c != y.c ? x.c < y.c : x.ref < y.ref);
+  });
+  for (Entry* i = first; i != last;) {
+    Entry* j = i + 1;
+    while (j != last && j->b == i->b && j->c == i->c) ++j;
+    group(i, j);
+    i = j;
+  }
+}
+
+// The two lowest ranks of a tet's vertices, and the slot of the lowest.
+struct TwoLowest {
+  std::uint32_t r0, r1;
+  int slot0;
+};
+inline TwoLowest two_lowest(const Tet& k, const std::vector<std::uint32_t>& rank) {
+  const std::uint32_t a = rank[k[0]], b = rank[k[1]], c = rank[k[2]], d = rank[k[3]];
+  const std::uint32_t ab = std::min(a, b), AB = std::max(a, b), cd = std::min(c, d), CD = std::max(c, d);
+  const bool left = ab < cd;
+  const std::uint32_t r0 = left ? ab : cd, r1 = left ? std::min(AB, cd) : std::min(ab, CD);
+  const int slot0 = r0 == a ? 0 : r0 == b ? 1 : r0 == c ? 2 : 3;
+  return {r0, r1, slot0};
+}
+
+// The ranks of a tet's vertices, ascending.
+struct Ranked {
+  std::array<std::uint32_t, 4> r;
+};
+inline Ranked ranked(const Tet& k, const std::vector<std::uint32_t>& rank) {
+  Ranked out{{rank[k[0]], rank[k[1]], rank[k[2]], rank[k[3]]}};
+  auto cs = [&](int i, int j) {
+    if (out.r[i] > out.r[j]) std::swap(out.r[i], out.r[j]);
+  };
+  cs(0, 1), cs(2, 3), cs(0, 2), cs(1, 3), cs(1, 2);
+  return out;
 }
 
 }  // namespace
 
-FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count) {
+FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count, const FacetPairVisitor& on_pair) {
   FacetTable out;
-  const std::size_t nf = 4 * tets.size();
-  out.adj.assign(nf, FacetTable::kBoundary);
-  std::vector<std::uint64_t> counts(point_count, 0);
-  for (const Tet& k : tets)
-    for (int f = 0; f < 4; ++f) {
-      auto v = facet_vertices(k, f);
-      ++counts[std::min({v[0], v[1], v[2]})];
-    }
-  std::vector<std::uint64_t> off = offsets_from_counts(std::move(counts));
-  std::vector<Entry> entries(nf);
-  {
+  const std::vector<std::uint32_t> rank = first_appearance(tets, point_count);
+  // Buckets by the facet's lowest-ranked vertex: the tet's lowest (the three facets
+  // containing it) or, for the facet opposite it, the tet's second lowest.
+  std::vector<std::uint32_t> count(point_count, 0);
+  for (const Tet& k : tets) {
+    const TwoLowest s = two_lowest(k, rank);
+    count[s.r0] += 3;
+    ++count[s.r1];
+  }
+  // About 10 bytes per tet in one pass (an entry is 16 bytes): with the tets' own 16,
+  // the checker stays below the builder's memory.
+  const std::uint64_t budget = std::max<std::uint64_t>(3 * tets.size() / 5, 1u << 20);
+  const std::vector<std::size_t> cut = ranges(count, budget);
+  std::uint64_t most = 0;
+  for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
+    std::uint64_t sum = 0;
+    for (std::size_t v = cut[part]; v < cut[part + 1]; ++v) sum += count[v];
+    most = std::max(most, sum);
+  }
+  const std::unique_ptr<Entry[]> entries(new Entry[most]);  // no zero fill
+  std::vector<std::uint64_t> off;
+  std::array<std::uint32_t, 3> byrank;
+  for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
+    const std::size_t lo = cut[part], hi = cut[part + 1];
+    off.assign(hi - lo + 1, 0);
+    for (std::size_t v = lo; v < hi; ++v) off[v - lo + 1] = off[v - lo] + count[v];
     std::vector<std::uint64_t> pos(off.begin(), off.end() - 1);
-    for (std::size_t t = 0; t < tets.size(); ++t)
-      for (int f = 0; f < 4; ++f) {
-        auto v = facet_vertices(tets[t], f);
-        sort3(v);
-        entries[pos[v[0]]++] = {v[1], v[2], static_cast<std::uint32_t>(4 * t + f)};
+    auto put = [&](std::size_t t, int f) {
+      auto v = facet_vertices(tets[t], f);
+      const std::uint32_t odd = sort3(v, rank) ? kOdd : 0;
+      entries[pos[rank[v[0]] - lo]++] = {v[1], v[2], tets[t][f] | odd, static_cast<std::uint32_t>(4 * t + f)};
+    };
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+      const TwoLowest s = two_lowest(tets[t], rank);
+      if (s.r1 < lo || s.r0 >= hi) continue;
+      if (s.r0 >= lo)
+        for (int f = 0; f < 4; ++f)
+          if (f != s.slot0) put(t, f);
+      if (s.r1 < hi) put(t, s.slot0);
+    }
+    for (std::size_t a = lo; a < hi; ++a) {
+      if (off[a - lo] == off[a - lo + 1]) continue;
+      // The bucket's vertex: the first vertex of any of its facets, by rank.
+      const Entry& any = entries[off[a - lo]];
+      {
+        const Tet& k = tets[any.ref / 4];
+        byrank = facet_vertices(k, static_cast<int>(any.ref % 4));
+        sort3(byrank, rank);
       }
-  }
-  auto parity_of = [&](std::uint32_t ref) {
-    auto v = facet_vertices(tets[ref / 4], static_cast<int>(ref % 4));
-    return sort3(v);
-  };
-  for (std::size_t a = 0; a < point_count; ++a) {
-    Entry* first = entries.data() + off[a];
-    Entry* last = entries.data() + off[a + 1];
-    std::sort(first, last, [](const Entry& x, const Entry& y) {
-      return x.b != y.b ? x.b < y.b : (x.c != y.c ? x.c < y.c : x.ref < y.ref);
-    });
-    for (Entry* i = first; i != last;) {
-      Entry* j = i + 1;
-      while (j != last && j->b == i->b && j->c == i->c) ++j;
-      const auto n = j - i;
-      if (n == 1) {
-        ++out.boundary;
-      } else if (n == 2) {
-        ++out.interior;
-        out.adj[i->ref] = (i + 1)->ref;
-        out.adj[(i + 1)->ref] = i->ref;
-        if (parity_of(i->ref) == parity_of((i + 1)->ref)) out.same_side.emplace_back(i->ref, (i + 1)->ref);
-      } else {
-        std::vector<std::uint32_t> refs;
-        for (Entry* k = i; k != j; ++k) {
-          out.adj[k->ref] = FacetTable::kOvershared;
-          refs.push_back(k->ref);
+      const std::uint32_t va = byrank[0];
+      for_each_group(entries.get() + off[a - lo], entries.get() + off[a - lo + 1], [&](Entry* i, Entry* j) {
+        const auto n = j - i;
+        if (n == 1) {
+          ++out.boundary;
+          out.boundary_refs.push_back(i->ref);
+        } else if (n == 2) {
+          ++out.interior;
+          const Entry& x = *i;
+          const Entry& y = *(i + 1);
+          if ((x.apex_parity & kOdd) == (y.apex_parity & kOdd)) out.same_side.emplace_back(x.ref, y.ref);
+          if (on_pair)
+            on_pair({x.ref, y.ref, {va, x.b, x.c}, x.apex_parity & ~kOdd, y.apex_parity & ~kOdd,
+                     (x.apex_parity & kOdd) != 0});
+        } else {
+          std::vector<std::uint32_t> refs;
+          for (Entry* k = i; k != j; ++k) refs.push_back(k->ref);
+          out.overshared.push_back(std::move(refs));
         }
-        out.overshared.push_back(std::move(refs));
-      }
-      i = j;
+      });
     }
   }
+  std::sort(out.boundary_refs.begin(), out.boundary_refs.end());
   return out;
 }
 
 std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count) {
-  static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-  std::vector<std::uint64_t> counts(point_count, 0);
-  for (const Tet& k : tets)
-    for (const auto& e : kEdge) ++counts[std::min(k[e[0]], k[e[1]])];
-  std::vector<std::uint64_t> off = offsets_from_counts(std::move(counts));
-  std::vector<std::uint32_t> other(off.back());
-  {
-    std::vector<std::uint64_t> pos(off.begin(), off.end() - 1);
-    for (const Tet& k : tets)
-      for (const auto& e : kEdge) {
-        const auto [lo, hi] = std::minmax(k[e[0]], k[e[1]]);
-        other[pos[lo]++] = hi;
-      }
+  // An edge's lowest-ranked vertex is the tet's i-th lowest for 3 - i of its edges;
+  // the edge is stored in that vertex's bucket as the other vertex's rank.
+  const std::vector<std::uint32_t> rank = first_appearance(tets, point_count);
+  std::vector<std::uint32_t> count(point_count, 0);
+  for (const Tet& k : tets) {
+    const Ranked s = ranked(k, rank);
+    count[s.r[0]] += 3, count[s.r[1]] += 2, count[s.r[2]] += 1;
   }
+  const std::vector<std::size_t> cut = ranges(count, std::max<std::uint64_t>(12 * tets.size() / 5, 1u << 20));
+  std::vector<std::uint32_t> other;
+  std::vector<std::uint64_t> off;
   std::uint64_t edges = 0;
-  for (std::size_t a = 0; a < point_count; ++a) {
-    auto first = other.begin() + static_cast<std::ptrdiff_t>(off[a]);
-    auto last = other.begin() + static_cast<std::ptrdiff_t>(off[a + 1]);
-    std::sort(first, last);
-    edges += static_cast<std::uint64_t>(std::unique(first, last) - first);
+  for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
+    const std::size_t lo = cut[part], hi = cut[part + 1];
+    off.assign(hi - lo + 1, 0);
+    for (std::size_t v = lo; v < hi; ++v) off[v - lo + 1] = off[v - lo] + count[v];
+    other.resize(off.back());
+    std::vector<std::uint64_t> pos(off.begin(), off.end() - 1);
+    for (const Tet& k : tets) {
+      const Ranked s = ranked(k, rank);
+      if (s.r[2] < lo || s.r[0] >= hi) continue;
+      for (int i = 0; i < 3; ++i)
+        if (s.r[i] >= lo && s.r[i] < hi)
+          for (int j = i + 1; j < 4; ++j) other[pos[s.r[i] - lo]++] = s.r[j];
+    }
+    for (std::size_t a = lo; a < hi; ++a) {
+      auto first = other.begin() + static_cast<std::ptrdiff_t>(off[a - lo]);
+      auto last = other.begin() + static_cast<std::ptrdiff_t>(off[a - lo + 1]);
+      std::sort(first, last);
+      edges += static_cast<std::uint64_t>(std::unique(first, last) - first);
+    }
   }
   return edges;
 }

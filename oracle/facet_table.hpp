@@ -1,10 +1,13 @@
 #pragma once
 // Facet adjacency rebuilt from the tets alone (the checker trusts no adjacency
-// given by a producer). Facets are matched by their sorted vertex triple, bucketed
-// by the smallest vertex: a hash map whose hash is that vertex, with the few
-// facets of one bucket sorted.
+// given by a producer). Facets are matched by their vertex triple, bucketed by the
+// vertex that appears first in the tets (a counting sort; see facet_table.cpp for
+// why first appearance) with the few facets of one bucket sorted. To bound memory
+// the buckets are processed in ranges, each one pass over the tets: about 10 bytes
+// per tet beyond the tets themselves.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -26,20 +29,31 @@ inline std::array<std::uint32_t, 3> facet_vertices(const Tet& k, int f) {
 }
 
 struct FacetTable {
-  static constexpr std::uint32_t kBoundary = 0xFFFFFFFFu;
-  static constexpr std::uint32_t kOvershared = 0xFFFFFFFEu;
-  // adj[4t+f] = 4t'+f' (the same facet seen from tet t'), kBoundary, or
-  // kOvershared when the facet belongs to three tets or more.
-  std::vector<std::uint32_t> adj;
-  std::vector<std::vector<std::uint32_t>> overshared;  // the 4t+f refs of each such facet
+  // Facets in one tet only, as refs 4t+f, ascending.
+  std::vector<std::uint32_t> boundary_refs;
+  std::vector<std::vector<std::uint32_t>> overshared;  // the 4t+f refs of each facet in 3+ tets
   // Pairs (4t+f, 4t'+f') sharing a facet with the same orientation: both tets lie
   // on the same side of it.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> same_side;
   std::uint64_t interior = 0, boundary = 0;
 };
 
-// Tets must have four distinct vertices below point_count, and tets.size() < 2^30.
-FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count);
+// A facet in exactly two tets, as the table finds it: the refs 4t+f of its two sides,
+// its vertices in the table's canonical order, and the apex of each side. When tet r1/4 has
+// orient3d > 0, so does (v[0], v[1], v[2], apex1), or (v[1], v[0], v[2], apex1) when
+// `odd1` (the canonical order is an odd permutation of the facet's outward order).
+struct FacetPair {
+  std::uint32_t r1, r2;
+  std::array<std::uint32_t, 3> v;
+  std::uint32_t apex1, apex2;
+  bool odd1;
+};
+using FacetPairVisitor = std::function<void(const FacetPair&)>;
+
+// Tets must have four distinct vertices below point_count, tets.size() < 2^30 and
+// point_count < 2^31.
+FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
+                             const FacetPairVisitor& on_pair = {});
 
 // Number of distinct edges of the tets.
 std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count);

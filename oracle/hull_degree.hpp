@@ -3,19 +3,20 @@
 //
 // Let o be a point strictly on the inner side of every boundary facet (the caller
 // proves it: o is a positive combination of the vertices of one tet, each on the
-// inner side or on the plane of every boundary facet). Central projection from o
-// then maps the closed boundary surface onto the unit sphere with positive
-// orientation on every facet, a branched covering of some degree k, and k is the
-// number of facets crossed by any ray from o that misses all edges. k == 1 makes
-// the surface star-shaped around o, hence embedded; with every edge convex it is
-// then the boundary of a convex polytope (Tietze-Nakajima), and since the tets
-// cover each point with multiplicity equal to the surface's winding number, they
-// tile it exactly once. k > 1 means the tets cover part of the hull twice.
+// inner side or on the plane of every boundary facet, and a positive tet has a
+// vertex strictly off every plane). Central projection from o then maps the closed
+// boundary surface onto the unit sphere with positive orientation on every facet, a
+// branched covering of some degree k, and k is the number of facets crossed by any
+// ray from o that misses all edges. k == 1 makes the surface star-shaped around o,
+// hence embedded; with every edge convex it is then the boundary of a convex
+// polytope (Tietze-Nakajima), and since the tets cover each point with multiplicity
+// equal to the surface's winding number, they tile it exactly once. k > 1 means the
+// tets cover part of the hull k times.
 //
-// The ray runs from o through a point q inside facet f0; o and q are rational
-// (weighted vertex averages), the crossing tests are exact rational orient3d
-// behind a float filter with a generous margin. When the ray grazes an edge the
-// weights change and the test is repeated.
+// The ray runs from o (the centroid of the tet) towards q_e = q + e*x + e^2*y + e^3*z,
+// q the centroid of facet f0 and e > 0 infinitesimal (a symbolic perturbation), so it
+// never meets an edge and the count is always decided (see hull_degree.cpp). All
+// crossing tests are exact rational arithmetic behind a float filter with a range guard.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -26,6 +27,8 @@
 namespace dtlab {
 
 struct HullDegree {
+  // False only if the precondition fails (o on the plane of a boundary facet's edge
+  // and o, i.e. o collinear with an edge): the caller reports `unproven`.
   bool decided = false;
   std::vector<std::uint32_t> crossed;  // boundary facets the ray crosses (f0 first)
 };

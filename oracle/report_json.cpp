@@ -28,11 +28,19 @@ std::string format_stats(const CheckStats& s) {
   char buf[512];
   std::snprintf(buf, sizeof buf,
                 "%llu points, %llu vertices, %llu duplicates, %llu tets, %llu boundary facets, "
-                "%llu cospherical facets, Euler %lld, volume %.17g; checked in %.3f s",
+                "%llu cospherical facets, Euler %lld, ",
                 (unsigned long long)s.points, (unsigned long long)s.vertices, (unsigned long long)s.duplicates,
                 (unsigned long long)s.tets, (unsigned long long)s.boundary_facets,
-                (unsigned long long)s.cospherical_facets, (long long)s.euler, s.volume_tets, s.seconds);
-  return buf;
+                (unsigned long long)s.cospherical_facets, (long long)s.euler);
+  std::string out = buf;
+  // A volume is only a property of the hull once the tets are proven to tile it once.
+  if (s.cover_proven)
+    std::snprintf(buf, sizeof buf, "volume %.17g; ", s.volume_hull);
+  else
+    std::snprintf(buf, sizeof buf, "cover not proven, no volume; ");
+  out += buf;
+  std::snprintf(buf, sizeof buf, "checked in %.3f s", s.seconds);
+  return out + buf;
 }
 
 nlohmann::json to_json(const Defect& d) {
@@ -63,10 +71,10 @@ nlohmann::json to_json(const CheckReport& r) {
           {"boundary_euler", s.boundary_euler},
           {"cospherical_facets", s.cospherical_facets},
           {"covering_checked", s.degree_checked},
+          {"cover_proven", s.cover_proven},
           {"volume_checked", s.volume_checked},
           {"volume_equal", s.volume_equal},
-          {"volume_tets", s.volume_tets},
-          {"volume_hull", s.volume_hull},
+          {"volume", s.cover_proven ? nlohmann::json(s.volume_hull) : nlohmann::json(nullptr)},
           {"seconds", s.seconds}};
 }
 

@@ -51,15 +51,17 @@ TEST_CASE("valid small meshes pass", "[check]") {
   one.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   one.tets = {{1, 0, 2, 3}};
   for (const auto& t : {one, star(), bipyramid({1, 1, 5}, {1, 1, -5})}) {
-    const CheckReport r = check_tetrahedralization(t);
+    const CheckReport r = check_tetrahedralization(t, {.volume_identity = true});
     INFO(summary(r));
     CHECK(r.ok());
+    CHECK(r.stats.cover_proven);
     CHECK(r.stats.euler == 1);
     CHECK(r.stats.boundary_euler == 2);
     CHECK(r.stats.degree_checked);
     CHECK(r.stats.volume_equal);
   }
-  CHECK(check_tetrahedralization(star()).stats.volume_tets == Approx(32.0 / 3.0));
+  CHECK(check_tetrahedralization(star()).stats.volume_hull == Approx(32.0 / 3.0));
+  CHECK(check_tetrahedralization(star(), {.volume_identity = true}).stats.volume_tets == Approx(32.0 / 3.0));
 }
 
 TEST_CASE("inverted and flat tets", "[check]") {

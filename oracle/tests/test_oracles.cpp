@@ -75,5 +75,5 @@ TEST_CASE("checker passes a 10^5-point CGAL result", "[oracle][slow]") {
   const auto pts = test::uniform_points(100000, 11);
   const CheckReport r = checked(cgal_delaunay(pts));
   CHECK(r.stats.degree_checked);
-  CHECK(r.stats.volume_equal);
+  CHECK(r.stats.cover_proven);
 }

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Verdicts that can be published: `tetra --check` verifies the build exactly (exit 1
+# on a defect), a non-robust build without it says that it is unverified, `check`
+# prints a volume only for a proven cover, and `voronoi` names a failed build (exit 1).
+set -u
+dtlab="$1"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+pass=0
+expect() {  # expect CODE DESCRIPTION -- command...
+  local want=$1 what=$2
+  shift 3
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    echo "FAIL: $what: exit $got, expected $want"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1))
+  else
+    pass=$((pass + 1))
+  fi
+}
+has() {  # has FILE PATTERN DESCRIPTION
+  if grep -q -- "$2" "$tmp/$1"; then pass=$((pass + 1)); else echo "FAIL: $3 (no '$2' in $1)"; sed 's/^/  | /' "$tmp/$1" | head -5; fails=$((fails + 1)); fi
+}
+hasnt() {
+  if grep -q -- "$2" "$tmp/$1"; then echo "FAIL: $3 ('$2' in $1)"; fails=$((fails + 1)); else pass=$((pass + 1)); fi
+}
+
+# A valid build, verified.
+awk 'BEGIN { for (i = 0; i < 300; i++) { z = 1 - 2 * (i + 0.5) / 300; r = sqrt(1 - z * z); t = 2.399963 * i;
+             printf "%.6f %.6f %.6f\n", r * cos(t), r * sin(t), z } }' > "$tmp/sphere.xyz"
+expect 0 "tetra --check (adaptive)" -- "$dtlab" tetra "$tmp/sphere.xyz" --check
+has out "check: valid Delaunay tetrahedralization" "tetra --check prints the verdict"
+hasnt err "UNVERIFIED" "a robust build needs no notice"
+expect 0 "tetra --check --json" -- "$dtlab" tetra "$tmp/sphere.xyz" --check --json
+has out '"verified": true' "tetra --check --json says verified"
+
+# Points on a cylinder: the naive predicates finish with a wrong mesh, or fail by name.
+defects=0
+for m in 35 40 50; do
+  awk -v m=$m 'BEGIN { for (k = 0; k < m; k++) for (z = 0; z < 5; z++)
+                 printf "%.17g %.17g %d\n", 5 * cos(k * 6.283185307179586 / m), 5 * sin(k * 6.283185307179586 / m), z }' > "$tmp/g$m.xyz"
+  expect 1 "tetra --predicates naive --check on a $m-gon cylinder" -- "$dtlab" tetra "$tmp/g$m.xyz" --predicates naive --check
+  if grep -q "^check: DEFECTS FOUND.* x non-delaunay" "$tmp/out"; then defects=$((defects + 1)); fi
+  hasnt err "UNVERIFIED" "no notice with --check"
+done
+if [ "$defects" -gt 0 ]; then pass=$((pass + 1)); else echo "FAIL: no naive build finished with its defects counted"; fails=$((fails + 1)); fi
+awk 'BEGIN { for (i = 0; i < 2000; i++) { t = (i % 97) * 6.283185307179586 / 97; z = int(i / 97) % 7;
+             printf "%.4f %.4f %d\n", 5 * cos(t), 5 * sin(t), z } }' > "$tmp/cyl.xyz"
+"$dtlab" tetra "$tmp/sphere.xyz" --predicates naive >"$tmp/out" 2>"$tmp/err"
+has err "UNVERIFIED: the naive predicates" "naive without --check says unverified"
+has err "verify with --check" "the notice says how to verify"
+"$dtlab" tetra "$tmp/sphere.xyz" --predicates epsilon --json >"$tmp/out" 2>"$tmp/err"
+has err "UNVERIFIED: the epsilon predicates" "epsilon without --check says unverified"
+has out '"verified": null' "unchecked JSON says verified null"
+
+# A double cover: consistent adjacency, every edge convex, Euler numbers right.
+printf '8 3 0 0\n0 0 0 10\n1 0 0 -10\n2 20 0 0\n3 -10 17 0\n4 -10 -17 0\n5 8 0 0\n6 -4 7 0\n7 -4 -7 0\n' > "$tmp/dc.node"
+printf '6 4 0\n0 1 0 5 6\n1 1 0 6 7\n2 1 0 7 2\n3 1 0 2 3\n4 1 0 3 4\n5 1 0 4 5\n' > "$tmp/dc.ele"
+expect 1 "check a double cover" -- "$dtlab" check "$tmp/dc"
+has out "overlap" "the double cover is an overlap"
+has out "cover not proven, no volume" "no volume without the cover proven"
+hasnt out "volume [0-9]" "no volume printed"
+expect 1 "check --json a double cover" -- "$dtlab" check "$tmp/dc" --json
+has out '"volume": null' "JSON volume null without the cover proven"
+"$dtlab" tetra "$tmp/sphere.xyz" --out "$tmp/s" >/dev/null 2>&1
+expect 0 "check a valid mesh" -- "$dtlab" check "$tmp/s"
+has out "volume [0-9]" "a proven cover prints its volume"
+
+# voronoi: a failed Delaunay build is exit 1 with its name, as in tetra.
+found=""
+for n in 300 600 900 1200 1500 2000; do
+  head -n "$n" "$tmp/cyl.xyz" > "$tmp/c$n.xyz"
+  "$dtlab" tetra "$tmp/c$n.xyz" --predicates naive --order brio >"$tmp/out" 2>&1
+  if grep -q "^FAILURE" "$tmp/out"; then found=$n; break; fi
+done
+if [ -n "$found" ]; then
+  name=$(sed -n 's/^FAILURE \([a-z-]*\) .*/\1/p' "$tmp/out")
+  expect 1 "voronoi with a failed build" -- "$dtlab" voronoi "$tmp/c$found.xyz" --predicates naive --no-obj
+  has err "Delaunay build failed: $name" "voronoi names the failure ($name)"
+else
+  echo "FAIL: no naive build failure found for the voronoi test"; fails=$((fails + 1))
+fi
+
+echo "$pass passed, $fails failed"
+[ "$fails" -eq 0 ]
