@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "kernel/output_file.hpp"
+
 namespace dtlab {
 
 namespace {
@@ -16,8 +18,8 @@ Point3 volume_centroid(const FractureResult& r) {
 }  // namespace
 
 void write_pieces_obj(const std::string& path, const FractureResult& r, double explode) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) throw std::runtime_error("cannot write " + path);
+  OutputFile file(path);
+  std::FILE* f = file.get();
   std::fprintf(f, "# dtlab fracture: %zu pieces\nmtllib pieces.mtl\n", r.pieces.size());
   const Point3 centre = volume_centroid(r);
   std::size_t base = 1;
@@ -39,14 +41,11 @@ void write_pieces_obj(const std::string& path, const FractureResult& r, double e
     }
     base += p.geometry.mesh.vertices.size();
   }
-  std::fclose(f);
+  file.close();
 }
 
 void write_pieces_mtl(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) throw std::runtime_error("cannot write " + path);
-  std::fprintf(f, "newmtl outer\nKd 0.70 0.72 0.78\n\nnewmtl cut\nKd 0.85 0.35 0.20\n");
-  std::fclose(f);
+  write_text_file(path, "newmtl outer\nKd 0.70 0.72 0.78\n\nnewmtl cut\nKd 0.85 0.35 0.20\n");
 }
 
 nlohmann::json fracture_manifest(const FractureResult& r) {

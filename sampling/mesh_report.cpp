@@ -1,7 +1,9 @@
 #include "sampling/mesh_report.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include "predicates/adaptive.hpp"
 #include "predicates/naive.hpp"
 #include "sampling/bvh.hpp"
 #include "sampling/self_intersection.hpp"
@@ -46,8 +48,14 @@ MeshReport analyze_mesh(const TriangleMesh& mesh) {
   r.area = surface_area(mesh);
   r.volume = signed_volume(mesh);
   r.box = bounding_box(mesh);
+  const Point3 ext = r.box.hi - r.box.lo;
+  r.overflow = !std::isfinite(r.area) || !std::isfinite(r.volume) || !std::isfinite(ext.x) ||
+               !std::isfinite(ext.y) || !std::isfinite(ext.z);
+  const double big = std::max({std::abs(r.box.lo.x), std::abs(r.box.lo.y), std::abs(r.box.lo.z),
+                               std::abs(r.box.hi.x), std::abs(r.box.hi.y), std::abs(r.box.hi.z)});
   const Bvh bvh(mesh);
-  r.self_intersections = count_self_intersections(bvh, NaivePredicates{});
+  r.self_intersections = big < 1e60 ? count_self_intersections(bvh, NaivePredicates{})
+                                    : count_self_intersections(bvh, AdaptivePredicates{});
   return r;
 }
 

@@ -17,11 +17,13 @@ struct MeshReport {
   bool closed = false;       // every edge used exactly twice
   bool manifold = false;     // no edge used more than twice
   bool oriented = false;     // every interior edge used once in each direction
+  bool overflow = false;     // area, volume or extent beyond a double: no sampler can work
   double area = 0, volume = 0;
   Box3 box;
 };
 
-// The self-intersection count uses naive orient3d (exact enough on generic meshes).
+// The self-intersection count uses naive orient3d (exact enough on generic meshes)
+// while coordinates stay below 1e60; beyond, where its products overflow, adaptive.
 MeshReport analyze_mesh(const TriangleMesh& mesh);
 
 }  // namespace dtlab
