@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "kernel/tet_io.hpp"
 #include "oracle/check.hpp"
 #include "oracle/report_json.hpp"
@@ -21,7 +22,7 @@ void add_check_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<Args>();
   sub->add_option("PREFIX", args->prefix, "reads PREFIX.node and PREFIX.ele")->required();
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
-  sub->add_option("--witnesses", args->witnesses, "defects listed per kind (all are counted)");
+  sub->add_option("--witnesses", args->witnesses, "defects listed per kind (all are counted)")->check(count_in(0, 1e9));
   sub->callback([args, &rc] {
     const Tetrahedralization t = read_tetgen(args->prefix);
     CheckOptions opt;

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "oracle/cgal_oracle.hpp"
 #include "oracle/check.hpp"
 #include "oracle/compare.hpp"
@@ -173,6 +175,7 @@ int run_fuzz(const FuzzArgs& a) {
   if (!a.replay.empty()) return run_replay(a);
   if (a.out.empty()) usage_error("--out DIR is required (or --replay, --list)");
   if (a.summarize_only) {
+    if (!std::filesystem::is_directory(a.out)) usage_error("--summarize: no campaign folder '" + a.out + "'");
     const auto records = fuzz::read_records(a.out);
     print_summary(records, a.json, 0, records.size());
     for (const auto& r : records)
@@ -225,24 +228,24 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<FuzzArgs>();
   CLI::App* sub = app.add_subcommand("fuzz", "degeneracy fuzz campaigns: generate, build, check, shrink");
   sub->add_option("--family", args->families, "all, or a comma-separated list (see --list)");
-  sub->add_option("--cases", args->cases, "cases per family")->capture_default_str();
-  sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)");
+  sub->add_option("--cases", args->cases, "cases per family")->check(count_in(1, 1e12))->capture_default_str();
+  sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)")->check(count_in(0, 1e15));
   sub->add_option("--seed", args->seed, "campaign seed")->capture_default_str();
-  sub->add_option("--points", args->max_points, "largest number of points per case")->capture_default_str();
-  sub->add_option("--min-points", args->min_points, "smallest number of points per case")->capture_default_str();
+  sub->add_option("--points", args->max_points, "largest number of points per case")->check(count_in(1, 1e7))->capture_default_str();
+  sub->add_option("--min-points", args->min_points, "smallest number of points per case")->check(count_in(1, 1e7))->capture_default_str();
   auto* pred = sub->add_option("--predicates", args->predicates, "comma list of naive, epsilon, adaptive, exact")
                    ->capture_default_str();
   sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();
-  sub->add_option("--eps", args->eps, "epsilon backend: the band")->capture_default_str();
+  sub->add_option("--eps", args->eps, "epsilon backend: the band")->check(number_in(0, 1e300))->capture_default_str();
   sub->add_flag("--relative-eps", args->relative_eps, "epsilon backend: relative band");
   sub->add_option("--boundary", args->boundary, "infinite or bigtet[:FACTOR]")->capture_default_str();
   sub->add_option("--oracle", args->oracle, "none, or a comma list of cgal, tetgen")->capture_default_str();
-  sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->capture_default_str();
+  sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->check(count_in(0, 1024))->capture_default_str();
   sub->add_option("--out", args->out, "campaign folder: results*.jsonl and corpus/");
   sub->add_option("--shard", args->shard, "K/N: run only the cases with ordinal % N == K");
   sub->add_option("--replay", args->replay, "re-run a corpus: a .node file, a corpus or campaign folder");
   sub->add_flag("--no-shrink", args->no_shrink, "do not shrink failing cases");
-  sub->add_option("--shrink-budget", args->shrink_budget, "builds per shrunk case")->capture_default_str();
+  sub->add_option("--shrink-budget", args->shrink_budget, "builds per shrunk case")->check(count_in(0, 1e9))->capture_default_str();
   sub->add_flag("--list", args->list, "list the point-set families and what each targets");
   sub->add_flag("--summarize", args->summarize_only, "print the summary of --out DIR without running");
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
