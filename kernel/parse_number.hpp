@@ -10,8 +10,11 @@ namespace dtlab {
 
 // The token as quoted in a message: at most 32 characters.
 inline std::string quote_token(std::string_view tok) {
-  if (tok.size() <= 32) return "'" + std::string(tok) + "'";
-  return "'" + std::string(tok.substr(0, 24)) + "...' (" + std::to_string(tok.size()) + " characters)";
+  // Built by append: GCC 12's -Wrestrict misfires on chains of operator+ here.
+  std::string out(1, '\'');
+  out.append(tok.substr(0, tok.size() <= 32 ? tok.size() : 24));
+  if (tok.size() <= 32) return out.append(1, '\'');
+  return out.append("...' (").append(std::to_string(tok.size())).append(" characters)");
 }
 
 // Empty string on success, else the reason.
