@@ -71,7 +71,7 @@ TEST_CASE(".ele: trailing records and extreme ids are refused") {
         prefix + ".ele:3: unexpected data after the last tetrahedron (the header says 1)");
   write_text(scratch("trail.ele"), "1 4 9223372036854775807\n0 1 0 2 3\n");
   CHECK(error_of([&] { read_tetgen(prefix); }) == prefix + ".ele:1: attribute count too large: 9223372036854775807");
-  write_text(scratch("trail.ele"), "1 4 0\n0 1 0 2 -9223372036854775808\n");
+  write_text(scratch("trail.ele"), "1 4 0\n1 1 2 3 -9223372036854775808\n");
   CHECK(error_of([&] { read_ele(prefix + ".ele", 1, 4); }) ==
         prefix + ".ele:2: vertex index -9223372036854775808 out of range");
 }
