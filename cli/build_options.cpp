@@ -1,12 +1,14 @@
 #include "cli/build_options.hpp"
 
+#include "cli/number_options.hpp"
+
 namespace dtlab::cli {
 
 void KernelArgs::add_to(CLI::App& app) {
   app.add_option("--predicates", predicates, "predicate backend")
       ->check(CLI::IsMember({"naive", "epsilon", "adaptive", "exact"}))
       ->capture_default_str();
-  app.add_option("--eps", eps, "tolerance of the epsilon backend")->capture_default_str();
+  app.add_option("--eps", eps, "tolerance of the epsilon backend")->check(number_in(0, 1e300))->capture_default_str();
   app.add_option("--eps-mode", eps_mode, "epsilon band: absolute or relative to the input magnitudes")
       ->check(CLI::IsMember({"absolute", "relative"}))
       ->capture_default_str();
@@ -35,12 +37,10 @@ BuildOptions KernelArgs::build_options() const {
     o.boundary = Boundary::bigtet;
     if (boundary.size() > 6) {
       if (boundary[6] != ':') throw CLI::ValidationError("--boundary", "expected bigtet[:FACTOR]");
-      try {
-        o.bigtet_factor = std::stod(boundary.substr(7));
-      } catch (const std::exception&) {
-        throw CLI::ValidationError("--boundary", "bad FACTOR in '" + boundary + "'");
-      }
-      if (!(o.bigtet_factor > 0)) throw CLI::ValidationError("--boundary", "FACTOR must be positive");
+      // FACTOR 1 is the smallest tet holding the bounding box: less cannot hold the points.
+      const std::string why = number_options_detail::check_number(boundary.substr(7), 1, 1e300, false);
+      if (!why.empty()) throw CLI::ValidationError("--boundary", "bigtet FACTOR " + why);
+      o.bigtet_factor = std::stod(boundary.substr(7));
     }
   } else {
     throw CLI::ValidationError("--boundary", "expected infinite or bigtet[:FACTOR], got '" + boundary + "'");

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/stdout_to_stderr.hpp"
 
@@ -116,8 +117,8 @@ void add_demo_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<DemoArgs>();
   CLI::App* sub = app.add_subcommand("demo", "the whole pipeline on the built-in bumpy torus");
   sub->add_option("--out", args->out, "output folder")->capture_default_str();
-  sub->add_option("--points", args->points, "points sampled inside the torus")->capture_default_str();
-  sub->add_option("--pieces", args->pieces, "fracture pieces")->capture_default_str();
+  sub->add_option("--points", args->points, "points sampled inside the torus")->check(count_in(4, 1e8))->capture_default_str();
+  sub->add_option("--pieces", args->pieces, "fracture pieces")->check(count_in(1, 100000))->capture_default_str();
   sub->add_flag("--no-oracles", args->no_oracles, "skip the CGAL and TetGen comparison");
   sub->add_flag("--json", args->json, "print a JSON summary on stdout (the steps' reports go to stderr)");
   sub->callback([args, &rc] { rc = run_demo(*args); });

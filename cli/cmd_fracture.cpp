@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "kernel/output_file.hpp"
+#include "cli/number_options.hpp"
 #include "fracture/piece_io.hpp"
 #include "fracture/render_png.hpp"
 #include "sampling/bumpy_torus.hpp"
@@ -33,6 +35,11 @@ int run_fracture(const FractureArgs& a) {
     return kBadInput;
   }
   const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
+  if (const Box3 box = bounding_box(mesh); !(a.margin < norm(box.hi - box.lo))) {
+    std::fprintf(stderr, "dtlab fracture: --margin %g is not smaller than the mesh (bounding box diagonal %g)\n",
+                 a.margin, norm(box.hi - box.lo));
+    return kBadInput;
+  }
   FractureOptions o;
   o.pieces = a.pieces;
   o.sampler = *method;
@@ -70,19 +77,16 @@ int run_fracture(const FractureArgs& a) {
       std::filesystem::create_directories(a.out + "/pieces");
       m["split_files"] = write_piece_files(a.out + "/pieces", r);
     }
-    std::FILE* f = std::fopen((a.out + "/manifest.json").c_str(), "w");
-    if (!f) throw std::runtime_error("cannot write " + a.out + "/manifest.json");
-    std::fprintf(f, "%s\n", m.dump(1).c_str());
-    std::fclose(f);
+    write_text_file(a.out + "/manifest.json", m.dump(1) + "\n");
     // Adjacency list, one line per piece: "i: j k l" (for breakable constraints).
-    f = std::fopen((a.out + "/adjacency.txt").c_str(), "w");
-    if (!f) throw std::runtime_error("cannot write " + a.out + "/adjacency.txt");
+    OutputFile adjacency(a.out + "/adjacency.txt");
+    std::FILE* f = adjacency.get();
     for (std::size_t i = 0; i < r.pieces.size(); ++i) {
       std::fprintf(f, "%zu:", i);
       for (auto j : r.pieces[i].neighbors) std::fprintf(f, " %u", j);
       std::fputc('\n', f);
     }
-    std::fclose(f);
+    adjacency.close();
   }
   if (!a.png.empty()) write_exploded_png(a.png, r, a.explode);
   const double rel = m["relative_volume_error"].get<double>();
@@ -115,13 +119,13 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_flag("--blue-noise", args->blue_noise, "blue-noise sites (weighted sample elimination)");
   sub->add_option("--seed", args->seed, "random seed")->capture_default_str();
   sub->add_option("--margin", args->margin, "gap between neighbouring pieces (mesh units)")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
+      ->check(number_in(0, 1e300))->capture_default_str();
   sub->add_option("--explode", args->explode, "exploded.obj: move pieces by this times their centroid offset")
-      ->capture_default_str();
+      ->check(number_in(0, 1000))->capture_default_str();
   sub->add_option("--recurse", args->recurse, "pieces to fracture again (ids of the first level)")->delimiter(',');
   sub->add_option("--recurse-pieces", args->recurse_pieces, "pieces each --recurse piece is split into")
       ->check(CLI::Range(1ul, 10000ul))->capture_default_str();
-  sub->add_option("--threads", args->threads, "threads for the booleans (0: all)")->capture_default_str();
+  sub->add_option("--threads", args->threads, "threads for the booleans (0: all)")->check(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--repair", args->repair,
                 "repair the mesh first (merge, drop degenerate, orient, stitch, fill holes, resolve self-intersections)");
   sub->add_flag("--split", args->split, "also write one OBJ per piece to OUT/pieces/");

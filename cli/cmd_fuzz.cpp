@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "oracle/cgal_oracle.hpp"
 #include "oracle/check.hpp"
 #include "oracle/compare.hpp"
@@ -24,6 +25,7 @@
 #include "fuzz/families.hpp"
 #include "fuzz/summary.hpp"
 #include "kernel/input_error.hpp"
+#include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
 
 namespace dtlab::cli {
@@ -239,7 +241,7 @@ int run_summarize(const FuzzArgs& a) {
   fuzz::write_summary_files(out, fuzz::summarize(records));
   if (std::find(dirs.begin(), dirs.end(), out) == dirs.end()) {
     const nlohmann::json env = {{"merged_from", dirs}, {"environments", fuzz::read_environments(dirs)}};
-    std::ofstream(std::filesystem::path(out) / "environment.json") << env.dump(2) << "\n";
+    write_text_file(out + "/environment.json", env.dump(2) + "\n");
   }
   print_summary(records, a.json, 0, records.size());
   if (!a.json) std::printf("wrote %s/summary.md and summary.json\n", out.c_str());
@@ -300,24 +302,24 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<FuzzArgs>();
   CLI::App* sub = app.add_subcommand("fuzz", "degeneracy fuzz campaigns: generate, build, check, shrink");
   sub->add_option("--family", args->families, "all, or a comma-separated list (see --list)");
-  sub->add_option("--cases", args->cases, "cases per family")->capture_default_str();
-  sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)");
+  sub->add_option("--cases", args->cases, "cases per family")->check(count_in(1, 1e12))->capture_default_str();
+  sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)")->check(count_in(0, 1e15));
   sub->add_option("--seed", args->seed, "campaign seed")->capture_default_str();
-  sub->add_option("--points", args->max_points, "largest number of points per case")->capture_default_str();
-  sub->add_option("--min-points", args->min_points, "smallest number of points per case")->capture_default_str();
+  sub->add_option("--points", args->max_points, "largest number of points per case")->check(count_in(1, 1e7))->capture_default_str();
+  sub->add_option("--min-points", args->min_points, "smallest number of points per case")->check(count_in(1, 1e7))->capture_default_str();
   auto* pred = sub->add_option("--predicates", args->predicates, "comma list of naive, epsilon, adaptive, exact")
                    ->capture_default_str();
   sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();
-  sub->add_option("--eps", args->eps, "epsilon backend: the band")->capture_default_str();
+  sub->add_option("--eps", args->eps, "epsilon backend: the band")->check(number_in(0, 1e300))->capture_default_str();
   sub->add_flag("--relative-eps", args->relative_eps, "epsilon backend: relative band");
   sub->add_option("--boundary", args->boundary, "infinite or bigtet[:FACTOR]")->capture_default_str();
   sub->add_option("--oracle", args->oracle, "none, or a comma list of cgal, tetgen")->capture_default_str();
-  sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->capture_default_str();
+  sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->check(count_in(0, 1024))->capture_default_str();
   sub->add_option("--out", args->out, "campaign folder: results*.jsonl and corpus/");
   sub->add_option("--shard", args->shard, "K/N: run only the cases with ordinal % N == K");
   sub->add_option("--replay", args->replay, "re-run a corpus: a .node file, a corpus or campaign folder");
   sub->add_flag("--no-shrink", args->no_shrink, "do not shrink failing cases");
-  sub->add_option("--shrink-budget", args->shrink_budget, "builds per shrunk case")->capture_default_str();
+  sub->add_option("--shrink-budget", args->shrink_budget, "builds per shrunk case")->check(count_in(0, 1e9))->capture_default_str();
   sub->add_flag("--list", args->list, "list the point-set families and what each targets");
   auto* summarize = sub->add_option("--summarize", args->summarize_dirs,
                                     "[DIR...] merge the results of campaign folders (shards; default --out) into "

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "cli/input_points.hpp"
 #include "kernel/build.hpp"
 #include "kernel/point_io.hpp"
@@ -69,6 +70,12 @@ void run_oracle(const Args& a, int& rc) {
   spec.backend = a.predicates;
   spec.perturb = a.perturb == "sos";
   const BuildResult built = build_delaunay(pts, spec, BuildOptions{});
+  if (built.failure && built.failure->kind == FailureKind::lower_dimensional) {
+    // No 3D triangulation to compare (fewer than 4 points, coplanar...): bad input, as for tetra.
+    std::fprintf(stderr, "dtlab oracle: %s: %s\n", a.input.c_str(), built.failure->detail.c_str());
+    rc = kBadInput;
+    return;
+  }
   OracleRun ours;
   ours.name = "dtlab";
   ours.mesh = built.mesh;
@@ -161,7 +168,7 @@ void add_oracle_command(CLI::App& app, int& rc) {
   sub->add_option("--perturb", a->perturb, "symbolic perturbation: sos|none")
       ->check(CLI::IsMember({"sos", "none"}));
   sub->add_option("--tetgen", a->tetgen, "the tetgen binary");
-  sub->add_option("--timeout", a->timeout, "seconds before TetGen counts as no answer");
+  sub->add_option("--timeout", a->timeout, "seconds before TetGen counts as no answer")->check(number_in(0.001, 1e6));
   sub->add_flag("--json", a->json, "print a JSON summary on stdout");
   sub->callback([a, &rc] { run_oracle(*a, rc); });
 }

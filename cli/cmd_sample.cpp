@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "kernel/point_io.hpp"
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/mesh_io.hpp"
@@ -42,6 +43,8 @@ int run_sample(const SampleArgs& a) {
   const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
   if (mesh.triangles.empty()) throw InputError(a.mesh, 0, "mesh has no triangles");
   const MeshReport report = analyze_mesh(mesh);
+  if (report.overflow)
+    throw InputError(a.mesh, 0, "coordinates too large: the mesh's area or volume overflows a double");
   const auto t1 = std::chrono::steady_clock::now();
   const MeshSampler sampler(mesh);
   SampleRequest req;
@@ -106,11 +109,11 @@ void add_sample_command(CLI::App& app, int& rc) {
   sub->add_option("--method", args->method, "surface | rays | sdf | winding")
       ->check(CLI::IsMember({"surface", "rays", "sdf", "winding"}))
       ->capture_default_str();
-  sub->add_option("--count", args->count, "number of points")->check(CLI::Range(1ul, 1ul << 30))->capture_default_str();
+  sub->add_option("--count", args->count, "number of points")->check(count_in(1, 1 << 30))->capture_default_str();
   sub->add_option("--seed", args->seed, "random seed")->capture_default_str();
   sub->add_flag("--blue-noise", args->blue_noise, "weighted sample elimination (Yuksel 2015) over the method");
   sub->add_option("--blue-noise-ratio", args->ratio, "candidates per kept point for --blue-noise")
-      ->check(CLI::Range(1.0, 100.0))
+      ->check(number_in(1, 100))
       ->capture_default_str();
   sub->add_option("--out", args->out, "output points (.xyz or .node)")->required();
   sub->add_flag("--no-check", args->no_check, "skip the winding-number check of the volume samples");

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "kernel/output_file.hpp"
+#include "cli/number_options.hpp"
 #include "cli/input_points.hpp"
 #include "kernel/build.hpp"
 #include "kernel/point_io.hpp"
@@ -71,16 +73,13 @@ int run_voronoi(const VoronoiArgs& a) {
       if (!why.empty()) bad.push_back({{"cell", i}, {"defect", why}}), ++defects;
     }
     const double rel = std::abs(m["cell_volume_sum"].get<double>() - vd.box.volume()) / vd.box.volume();
-    if (rel > 1e-12) ++defects;
+    if (!(rel <= 1e-12)) ++defects;  // a NaN error (overflowing volumes) is a defect too
     m["check"] = {{"defects", bad}, {"relative_volume_error", rel}};
   }
   if (!a.out.empty()) {
     if (a.obj) write_cells_obj(a.out + ".obj", vd);
     if (a.vtu) write_cells_vtu(a.out + ".vtu", vd);
-    std::FILE* f = std::fopen((a.out + ".json").c_str(), "w");
-    if (!f) throw std::runtime_error("cannot write " + a.out + ".json");
-    std::fprintf(f, "%s\n", m.dump(1).c_str());
-    std::fclose(f);
+    write_text_file(a.out + ".json", m.dump(1) + "\n");
   }
   if (a.json) {
     std::printf("%s\n", m.dump(2).c_str());
@@ -109,11 +108,11 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   sub->add_option("INPUT", args->input, "points: .node, .xyz, or the vertices of a mesh (.off .obj .ply .stl)")->required();
   sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)");
   sub->add_option("--box", args->box, "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
-      ->expected(6);
-  sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->capture_default_str();
+      ->expected(6)->check(number_in(-1e300, 1e300));
+  sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->check(number_in(0, 1e6))->capture_default_str();
   sub->add_option("--predicates", args->predicates, "Delaunay predicates: naive|epsilon|adaptive|exact")
       ->capture_default_str();
-  sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->capture_default_str();
+  sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->check(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
   sub->add_flag("!--no-obj", args->obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "sampling/mesh_report_json.hpp"
+#include "kernel/output_file.hpp"
 
 namespace dtlab {
 
@@ -53,8 +54,8 @@ std::vector<std::string> write_piece_files(const std::string& dir, const Fractur
 }
 
 void write_pieces_obj(const std::string& path, const FractureResult& r, double explode) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) throw std::runtime_error("cannot write " + path);
+  OutputFile file(path);
+  std::FILE* f = file.get();
   std::fprintf(f, "# dtlab fracture: %zu pieces\nmtllib pieces.mtl\n", r.pieces.size());
   const Point3 centre = volume_centroid(r);
   std::size_t base = 1;
@@ -62,14 +63,11 @@ void write_pieces_obj(const std::string& path, const FractureResult& r, double e
     const Piece& p = r.pieces[i];
     base = write_piece(f, i, p, explode * (p.centroid - centre), base);
   }
-  std::fclose(f);
+  file.close();
 }
 
 void write_pieces_mtl(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) throw std::runtime_error("cannot write " + path);
-  std::fprintf(f, "newmtl outer\nKd 0.70 0.72 0.78\n\nnewmtl cut\nKd 0.85 0.35 0.20\n");
-  std::fclose(f);
+  write_text_file(path, "newmtl outer\nKd 0.70 0.72 0.78\n\nnewmtl cut\nKd 0.85 0.35 0.20\n");
 }
 
 nlohmann::json fracture_manifest(const FractureResult& r) {

@@ -100,13 +100,15 @@ CampaignResult run_campaign(const CampaignOptions& o) {
 
   const std::string boundary = boundary_label(o.build);
   std::vector<WorkItem> work;
-  std::size_t ordinal = 0;
-  for (const auto& name : o.families) {
-    const Family* f = find_family(name);
-    if (!f) throw std::invalid_argument("unknown family '" + name + "'");
-    for (std::size_t i = 0; i < o.cases; ++i, ++ordinal) {
+  for (std::size_t fi = 0; fi < o.families.size(); ++fi) {
+    const Family* f = find_family(o.families[fi]);
+    if (!f) throw std::invalid_argument("unknown family '" + o.families[fi] + "'");
+    // --case N jumps straight to case N (no walk over the indices before it).
+    const std::size_t lo = o.only_case ? std::min(*o.only_case, o.cases) : 0;
+    const std::size_t hi = o.only_case ? std::min(*o.only_case + 1, o.cases) : o.cases;
+    for (std::size_t i = lo; i < hi; ++i) {
+      const std::size_t ordinal = fi * o.cases + i;
       if (ordinal % o.shards != o.shard) continue;
-      if (o.only_case && *o.only_case != i) continue;
       const std::string id = case_id(f->name, o.seed, i);
       bool all_done = true;
       for (const auto& spec : o.backends)
@@ -177,6 +179,7 @@ CampaignResult run_campaign(const CampaignOptions& o) {
       result.records.push_back(std::move(r));
     }
     out.flush();
+    if (!out) throw std::runtime_error("write failed: " + (fs::path(o.out_dir) / results_name).string());
     ++finished;
     ++result.ran;
     if (o.progress) o.progress(finished, work.size(), failing);

@@ -1,12 +1,14 @@
 #include "fuzz/corpus.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "kernel/input_error.hpp"
+#include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
 
 namespace dtlab::fuzz {
@@ -36,7 +38,8 @@ bool parse_boundary(const std::string& text, BuildOptions& options) {
   try {
     std::size_t used = 0;
     const double f = std::stod(text.substr(7), &used);
-    if (used != text.size() - 7 || !(f > 0)) return false;
+    // Finite, and at least 1 (the smallest tet holding the bounding box).
+    if (used != text.size() - 7 || !(std::isfinite(f) && f >= 1)) return false;
     options.bigtet_factor = f;
   } catch (const std::exception&) {
     return false;
@@ -69,7 +72,7 @@ std::string write_corpus_entry(const std::string& out_dir, const CaseRecord& rec
       {"reproduce", "dtlab fuzz --replay " + (fs::path(out_dir) / relative).string()},
       {"reproduce_original", info.original_command},
   };
-  std::ofstream((dir / (stem + ".json")).string()) << j.dump(2) << "\n";
+  write_text_file((dir / (stem + ".json")).string(), j.dump(2) + "\n");
   return relative;
 }
 

@@ -1,5 +1,6 @@
 // The single runtime dispatch of the kernel: one instantiation of the inserter per
 // predicate backend, with and without symbolic perturbation.
+#include <cmath>
 #include <stdexcept>
 
 #include "kernel/build_impl.hpp"
@@ -20,6 +21,14 @@ const char* failure_name(FailureKind k) {
 
 BuildResult build_delaunay(std::span<const Point3> points, const PredicateSpec& spec,
                            const BuildOptions& options) {
+  // No predicate has a sign for a NaN or an infinity: such input is refused.
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point3& p = points[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw std::invalid_argument("build_delaunay: point " + std::to_string(i) + " has a non-finite coordinate");
+  }
+  if (options.boundary == Boundary::bigtet && !(std::isfinite(options.bigtet_factor) && options.bigtet_factor > 0))
+    throw std::invalid_argument("build_delaunay: bigtet FACTOR must be finite and positive");
   std::optional<BackendChoice> choice = parse_backend(spec.backend, spec.eps, spec.relative_eps);
   if (!choice)
     throw std::invalid_argument("unknown predicate backend '" + spec.backend +

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "kernel/build.hpp"
+#include "kernel/enclosing_tet.hpp"
 #include "kernel/inserter.hpp"
 #include "kernel/spatial_order.hpp"
 
@@ -62,47 +63,43 @@ BuildResult build_with(std::span<const Point3> input, const B& pred, const Build
   pts.assign(input.begin(), input.end());
   std::uint32_t inf = Inserter<B>::kNoVertex;
   std::uint32_t first[4];
+  // The first four affinely independent points in insertion order (either boundary:
+  // a lower-dimensional input has no Delaunay tetrahedralization).
+  std::size_t k = 0;
+  const auto next = [&](auto accept) {
+    for (; k < order.size(); ++k)
+      if (accept(input[order[k]])) return true;
+    return false;
+  };
+  if (n < 4) return lower_dimensional("fewer than 4 points");
+  first[0] = order[0];
+  k = 1;
+  const Point3 a = input[first[0]];
+  if (!next([&](const Point3& q) { return !(q == a); })) return lower_dimensional("all points coincide");
+  first[1] = order[k++];
+  const Point3 b = input[first[1]];
+  if (!next([&](const Point3& q) { return !detail::collinear(pred, a, b, q); }))
+    return lower_dimensional("all points are collinear");
+  first[2] = order[k++];
+  const Point3 c = input[first[2]];
+  if (!next([&](const Point3& q) { return pred.orient3d(a, b, c, q) != 0; }))
+    return lower_dimensional("all points are coplanar");
+  first[3] = order[k];
   if (opt.boundary == Boundary::infinite) {
-    // The first four affinely independent points in insertion order.
-    std::size_t k = 0;
-    const auto next = [&](auto accept) {
-      for (; k < order.size(); ++k)
-        if (accept(input[order[k]])) return true;
-      return false;
-    };
-    if (n < 4) return lower_dimensional("fewer than 4 points");
-    first[0] = order[0];
-    k = 1;
-    const Point3 a = input[first[0]];
-    if (!next([&](const Point3& q) { return !(q == a); })) return lower_dimensional("all points coincide");
-    first[1] = order[k++];
-    const Point3 b = input[first[1]];
-    if (!next([&](const Point3& q) { return !detail::collinear(pred, a, b, q); }))
-      return lower_dimensional("all points are collinear");
-    first[2] = order[k++];
-    const Point3 c = input[first[2]];
-    if (!next([&](const Point3& q) { return pred.orient3d(a, b, c, q) != 0; }))
-      return lower_dimensional("all points are coplanar");
-    first[3] = order[k];
     if (pred.orient3d(a, b, c, input[first[3]]) < 0) std::swap(first[0], first[1]);
     pts.push_back(a);  // the infinite vertex's slot: its coordinates are never read
     inf = n;
   } else {
-    // The thesis's big enclosing tetrahedron: a regular tet around the bounding box.
-    Point3 lo = input.empty() ? Point3{0, 0, 0} : input[0], hi = lo;
-    for (const Point3& p : input) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    // The thesis's big enclosing tetrahedron, proven to hold every point (exactly).
+    const EnclosingTet big = enclosing_tet(input, opt.bigtet_factor);
+    if (!big.valid()) {
+      res.failure = BuildFailure{FailureKind::outside_boundary, -1, big.defect};
+      res.skipped = order;
+      std::sort(res.skipped.begin(), res.skipped.end());
+      res.mesh.points.assign(input.begin(), input.end());
+      return res;
     }
-    const Point3 c{lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2, lo.z / 2 + hi.z / 2};
-    const double size = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-300});
-    // The face x+y+z = -r of this tet touches the box corner (-h,-h,-h) when r = 3h
-    // (h half the largest extent): factor 1 is the smallest tet containing the box.
-    const double r = opt.bigtet_factor * 1.5 * size;
-    pts.push_back({c.x + r, c.y + r, c.z + r});
-    pts.push_back({c.x + r, c.y - r, c.z - r});
-    pts.push_back({c.x - r, c.y + r, c.z - r});
-    pts.push_back({c.x - r, c.y - r, c.z + r});
+    for (const Point3& q : big.corners) pts.push_back(q);
     first[0] = n, first[1] = n + 1, first[2] = n + 2, first[3] = n + 3;
     if (pred.orient3d(pts[n], pts[n + 1], pts[n + 2], pts[n + 3]) < 0) std::swap(first[0], first[1]);
   }

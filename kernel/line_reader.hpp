@@ -9,12 +9,14 @@
 #include <vector>
 
 #include "kernel/input_error.hpp"
+#include "kernel/input_file.hpp"
+#include "kernel/parse_number.hpp"
 
 namespace dtlab {
 
 class LineReader {
  public:
-  explicit LineReader(std::string path) : path_(std::move(path)), in_(path_) {
+  explicit LineReader(std::string path) : path_(std::move(path)), bytes_(input_file_size(path_)), in_(path_) {
     if (!in_) throw InputError(path_, 0, "cannot open file");
   }
 
@@ -40,21 +42,25 @@ class LineReader {
 
   double to_double(std::string_view tok) const {
     double v = 0;
-    const char* b = tok.data();
-    const char* e = b + tok.size();
-    if (b != e && *b == '+') ++b;
-    auto [p, ec] = std::from_chars(b, e, v);
-    if (ec != std::errc() || p != e) fail("not a number: '" + std::string(tok) + "'");
-    if (!std::isfinite(v)) fail("non-finite coordinate: '" + std::string(tok) + "'");
+    if (std::string why = parse_double(tok, v); !why.empty()) fail(why);
     return v;
   }
 
   long to_long(std::string_view tok) const {
     long v = 0;
-    auto [p, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
-    if (ec != std::errc() || p != tok.data() + tok.size())
-      fail("not an integer: '" + std::string(tok) + "'");
+    if (std::string why = parse_long(tok, v); !why.empty()) fail(why);
     return v;
+  }
+
+  // A record count from a header: at least 0, and no more records of `min_tokens`
+  // tokens than the file's size can hold (so no reservation of what is not there).
+  long to_count(std::string_view tok, int min_tokens, const char* what) const {
+    const long n = to_long(tok);
+    if (n < 0) fail(std::string("negative ") + what + " count");
+    if (!count_fits(n, min_tokens, bytes_))
+      fail(std::string(what) + " count too large: " + quote_token(tok) + " in a file of " +
+           std::to_string(*bytes_) + " bytes");
+    return n;
   }
 
   [[noreturn]] void fail(const std::string& reason) const {
@@ -66,6 +72,7 @@ class LineReader {
  private:
   static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == ','; }
   std::string path_;
+  std::optional<std::uintmax_t> bytes_;
   std::ifstream in_;
   std::string line_;
   long line_no_ = 0;

@@ -1,9 +1,11 @@
 #include "kernel/point_io.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
 #include "kernel/line_reader.hpp"
+#include "kernel/output_file.hpp"
 
 namespace dtlab {
 
@@ -11,17 +13,6 @@ namespace {
 
 bool ends_with(const std::string& s, std::string_view suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-using File = std::unique_ptr<std::FILE, FileCloser>;
-
-File open_for_writing(const std::string& path) {
-  File f(std::fopen(path.c_str(), "w"));
-  if (!f) throw InputError(path, 0, "cannot open file for writing");
-  return f;
 }
 
 }  // namespace
@@ -37,15 +28,15 @@ PointFile read_node(const std::string& path) {
   std::vector<std::string_view> tok;
   if (!r.next(tok)) r.fail("empty .node file: missing header");
   if (tok.size() < 1 || tok.size() > 4) r.fail("header must be: <#points> [dim] [#attributes] [#markers]");
-  const long n = r.to_long(tok[0]);
+  const long n = r.to_count(tok[0], 4, "point");
   const long dim = tok.size() > 1 ? r.to_long(tok[1]) : 3;
   const long attrs = tok.size() > 2 ? r.to_long(tok[2]) : 0;
   const long markers = tok.size() > 3 ? r.to_long(tok[3]) : 0;
-  if (n < 0) r.fail("negative point count");
   if (dim != 3) r.fail("dimension must be 3, got " + std::to_string(dim));
   if (attrs < 0 || markers < 0 || markers > 1) r.fail("bad attribute or marker count");
+  if (attrs > kMaxAttributes) r.fail("attribute count too large: " + std::to_string(attrs));
   PointFile out;
-  out.points.reserve(static_cast<std::size_t>(n));
+  out.points.reserve(std::min(static_cast<std::size_t>(n), kMaxReserve));
   const std::size_t want = 4 + static_cast<std::size_t>(attrs + markers);
   for (long i = 0; i < n; ++i) {
     if (!r.next(tok)) r.fail("expected " + std::to_string(n) + " points, file ends after " + std::to_string(i));
@@ -77,15 +68,17 @@ PointFile read_xyz(const std::string& path) {
 }
 
 void write_node(const std::string& path, const std::vector<Point3>& points) {
-  File f = open_for_writing(path);
+  OutputFile f(path);
   std::fprintf(f.get(), "%zu 3 0 0\n", points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     std::fprintf(f.get(), "%zu %.17g %.17g %.17g\n", i, points[i].x, points[i].y, points[i].z);
+  f.close();
 }
 
 void write_xyz(const std::string& path, const std::vector<Point3>& points) {
-  File f = open_for_writing(path);
+  OutputFile f(path);
   for (const Point3& p : points) std::fprintf(f.get(), "%.17g %.17g %.17g\n", p.x, p.y, p.z);
+  f.close();
 }
 
 }  // namespace dtlab

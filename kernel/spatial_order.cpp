@@ -73,7 +73,9 @@ class HilbertGrid {
   }
   std::uint32_t cell(int a, double v) const {
     const double u = ((half_[a] ? v / 2 : v) - low_[a]) * scale_[a];
-    return static_cast<std::uint32_t>(std::clamp(u, 0.0, kMax));
+    // An extent below kMax / DBL_MAX makes scale_ infinite and u = 0 * inf a NaN:
+    // NaN goes to cell 0 (the cast of a NaN is undefined).
+    return static_cast<std::uint32_t>(u > 0 ? std::min(u, kMax) : 0.0);
   }
 
   Point3 lo_{0, 0, 0}, hi_{0, 0, 0};

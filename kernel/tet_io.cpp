@@ -1,28 +1,24 @@
 #include "kernel/tet_io.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
 #include "kernel/line_reader.hpp"
+#include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
 
 namespace dtlab {
 
-namespace {
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-}  // namespace
-
 void write_tetgen(const std::string& prefix, const Tetrahedralization& t) {
   write_node(prefix + ".node", t.points);
-  std::unique_ptr<std::FILE, FileCloser> f(std::fopen((prefix + ".ele").c_str(), "w"));
-  if (!f) throw InputError(prefix + ".ele", 0, "cannot open file for writing");
+  OutputFile f(prefix + ".ele");
   std::fprintf(f.get(), "%zu 4 0\n", t.tets.size());
   for (std::size_t i = 0; i < t.tets.size(); ++i) {
     const Tet& k = t.tets[i];
     std::fprintf(f.get(), "%zu %u %u %u %u\n", i, k[1], k[0], k[2], k[3]);
   }
+  f.close();
 }
 
 std::vector<Tet> read_ele(const std::string& path, int first_index, std::size_t point_count) {
@@ -30,28 +26,31 @@ std::vector<Tet> read_ele(const std::string& path, int first_index, std::size_t 
   std::vector<std::string_view> tok;
   if (!r.next(tok)) r.fail("empty .ele file: missing header");
   if (tok.size() < 1 || tok.size() > 3) r.fail("header must be: <#tets> [nodes per tet] [#attributes]");
-  const long n = r.to_long(tok[0]);
+  const long n = r.to_count(tok[0], 5, "tetrahedron");
   const long per = tok.size() > 1 ? r.to_long(tok[1]) : 4;
   const long attrs = tok.size() > 2 ? r.to_long(tok[2]) : 0;
-  if (n < 0) r.fail("negative tetrahedron count");
   if (per != 4) r.fail("only linear tetrahedra (4 nodes) are supported, got " + std::to_string(per));
   if (attrs < 0) r.fail("negative attribute count");
+  if (attrs > kMaxAttributes) r.fail("attribute count too large: " + std::to_string(attrs));
   std::vector<Tet> tets;
-  tets.reserve(static_cast<std::size_t>(n));
+  tets.reserve(std::min(static_cast<std::size_t>(n), kMaxReserve));
   for (long i = 0; i < n; ++i) {
     if (!r.next(tok)) r.fail("expected " + std::to_string(n) + " tetrahedra, file ends after " + std::to_string(i));
     if (tok.size() != static_cast<std::size_t>(5 + attrs))
       r.fail("expected " + std::to_string(5 + attrs) + " fields, got " + std::to_string(tok.size()));
     Tet k{};
     for (int j = 0; j < 4; ++j) {
-      const long v = r.to_long(tok[1 + j]) - first_index;
-      if (v < 0 || static_cast<std::size_t>(v) >= point_count)
-        r.fail("vertex index " + std::string(tok[1 + j]) + " out of range");
-      k[j] = static_cast<std::uint32_t>(v);
+      const long id = r.to_long(tok[1 + j]);
+      // Compared before subtracting: an id near LONG_MIN must not overflow.
+      if (id < first_index || static_cast<std::size_t>(id - first_index) >= point_count)
+        r.fail("vertex index " + (tok[1 + j].size() <= 32 ? std::string(tok[1 + j]) : quote_token(tok[1 + j])) +
+               " out of range");
+      k[j] = static_cast<std::uint32_t>(id - first_index);
     }
     std::swap(k[0], k[1]);
     tets.push_back(k);
   }
+  if (r.next(tok)) r.fail("unexpected data after the last tetrahedron (the header says " + std::to_string(n) + ")");
   return tets;
 }
 
@@ -64,8 +63,7 @@ Tetrahedralization read_tetgen(const std::string& prefix) {
 }
 
 void write_vtu(const std::string& path, const Tetrahedralization& t) {
-  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(path.c_str(), "w"));
-  if (!f) throw InputError(path, 0, "cannot open file for writing");
+  OutputFile f(path);
   std::FILE* o = f.get();
   std::fprintf(o, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
   std::fprintf(o, " <UnstructuredGrid>\n  <Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n", t.points.size(), t.tets.size());
@@ -80,6 +78,7 @@ void write_vtu(const std::string& path, const Tetrahedralization& t) {
   std::fprintf(o, "    </DataArray>\n    <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
   for (std::size_t i = 0; i < t.tets.size(); ++i) std::fprintf(o, "10\n");
   std::fprintf(o, "    </DataArray>\n   </Cells>\n  </Piece>\n </UnstructuredGrid>\n</VTKFile>\n");
+  f.close();
 }
 
 }  // namespace dtlab

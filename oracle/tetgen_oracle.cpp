@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
 #include <cstring>
 #include <fcntl.h>
 #include <cstdlib>
@@ -56,6 +58,8 @@ std::string describe_status(int status) {
 }  // namespace
 
 OracleRun tetgen_delaunay(std::span<const Point3> points, const TetgenOptions& options) {
+  if (!(options.timeout_s > 0 && std::isfinite(options.timeout_s)))
+    throw std::invalid_argument("tetgen: the time-out must be finite and positive");
   OracleRun run;
   run.name = "tetgen";
   TempDir dir;
@@ -70,10 +74,16 @@ OracleRun tetgen_delaunay(std::span<const Point3> points, const TetgenOptions& o
   std::string flags = "-QzJNF";
   std::vector<char*> argv = {const_cast<char*>(options.binary.c_str()), flags.data(),
                              const_cast<char*>(node.c_str()), nullptr};
+  // The child leads its own process group, so a time-out kills whatever it started too.
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attr, 0);
   pid_t pid = 0;
   const auto start = std::chrono::steady_clock::now();
-  const int err = posix_spawnp(&pid, options.binary.c_str(), &fa, nullptr, argv.data(), environ);
+  const int err = posix_spawnp(&pid, options.binary.c_str(), &fa, &attr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
+  posix_spawnattr_destroy(&attr);
   if (err != 0) {
     run.note = "cannot start '" + options.binary + "': " + std::strerror(err);
     return run;
@@ -88,7 +98,7 @@ OracleRun tetgen_delaunay(std::span<const Point3> points, const TetgenOptions& o
       return run;
     }
     if (run.seconds > options.timeout_s) {
-      kill(pid, SIGKILL);
+      kill(-pid, SIGKILL);  // the whole group
       waitpid(pid, &status, 0);
       run.note = "tetgen timed out after " + std::to_string(options.timeout_s) + " s";
       return run;

@@ -4,6 +4,7 @@
 
 #include <climits>
 #include <cmath>
+#include <stdexcept>
 #include <cstdint>
 
 namespace dtlab {
@@ -41,11 +42,11 @@ Split split_double(double x) {
   return {static_cast<std::int64_t>(std::ldexp(f, 53)), e - 53};
 }
 
-// Loads n doubles as integers scaled by one common power of two. False when some
-// input is not finite (the predicates then answer 0: such input has no sign).
+// Loads n doubles as integers scaled by one common power of two. A NaN or an infinity
+// has no sign to give: std::domain_error (never a silent 0).
 bool load_scaled(const double* xs, int n, mpz_t* out) {
   for (int i = 0; i < n; ++i)
-    if (!std::isfinite(xs[i])) return false;
+    if (!std::isfinite(xs[i])) throw std::domain_error("exact predicate: non-finite coordinate");
   Split s[15];
   int kmin = INT_MAX;
   for (int i = 0; i < n; ++i) {

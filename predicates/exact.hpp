@@ -7,7 +7,7 @@
 // the sign of either determinant (both are homogeneous, of degree 3 and 5, and the
 // scale is positive). The determinants are then evaluated in GMP integers, so the
 // answer is exact for every finite input: subnormals, 1e+-300 and mixtures of them.
-// Inputs must be finite: with a NaN or an infinity the answer is 0 (no sign to give).
+// Inputs must be finite: a NaN or an infinity throws std::domain_error (no sign to give).
 #include <string_view>
 
 #include "predicates/backend.hpp"

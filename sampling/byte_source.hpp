@@ -12,15 +12,19 @@
 #include <string_view>
 
 #include "kernel/input_error.hpp"
+#include "kernel/input_file.hpp"
+#include "kernel/parse_number.hpp"
 
 namespace dtlab::detail {
 
 class ByteSource {
  public:
   explicit ByteSource(std::string path) : path_(std::move(path)) {
+    input_file_size(path_);  // names a missing file or a directory
     std::ifstream in(path_, std::ios::binary);
     if (!in) throw InputError(path_, 0, "cannot open file");
     data_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (in.bad()) throw InputError(path_, 0, "read error");
   }
   const std::string& path() const { return path_; }
   std::size_t size() const { return data_.size(); }
@@ -66,12 +70,7 @@ class ByteSource {
 
   double parse_double(std::string_view tok, long line) const {
     double v = 0;
-    const char* b = tok.data();
-    const char* e = b + tok.size();
-    if (b != e && *b == '+') ++b;
-    auto [p, ec] = std::from_chars(b, e, v);
-    if (ec != std::errc() || p != e) throw InputError(path_, line, "not a number: '" + std::string(tok) + "'");
-    if (!std::isfinite(v)) throw InputError(path_, line, "non-finite coordinate: '" + std::string(tok) + "'");
+    if (std::string why = dtlab::parse_double(tok, v); !why.empty()) throw InputError(path_, line, why);
     return v;
   }
 

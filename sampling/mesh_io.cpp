@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <memory>
 
+#include "kernel/output_file.hpp"
+
 namespace dtlab {
 
 TriangleMesh read_mesh(const std::string& path) {
@@ -19,11 +21,11 @@ TriangleMesh read_mesh(const std::string& path) {
 }
 
 void write_off(const std::string& path, const TriangleMesh& mesh) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "w"), &std::fclose);
-  if (!f) throw InputError(path, 0, "cannot open file for writing");
+  OutputFile f(path);
   std::fprintf(f.get(), "OFF\n%zu %zu 0\n", mesh.vertices.size(), mesh.triangles.size());
   for (const Point3& p : mesh.vertices) std::fprintf(f.get(), "%.17g %.17g %.17g\n", p.x, p.y, p.z);
   for (const auto& t : mesh.triangles) std::fprintf(f.get(), "3 %u %u %u\n", t[0], t[1], t[2]);
+  f.close();
 }
 
 }  // namespace dtlab

@@ -1,6 +1,7 @@
 #include "sampling/mesh_report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 
@@ -183,6 +184,9 @@ MeshReport analyze_mesh(const TriangleMesh& input, std::size_t locations, std::u
   r.area = surface_area(mesh);
   r.volume = signed_volume(mesh);
   r.box = bounding_box(mesh);
+  const Point3 ext = r.box.hi - r.box.lo;
+  r.overflow = !std::isfinite(r.area) || !std::isfinite(r.volume) || !std::isfinite(ext.x) ||
+               !std::isfinite(ext.y) || !std::isfinite(ext.z);
   const Bvh bvh(mesh);
   const std::uint64_t limit = self_intersection_limit == 0 ? UINT64_MAX : self_intersection_limit;
   bvh.for_each_overlapping_pair([&](std::uint32_t s, std::uint32_t t) {

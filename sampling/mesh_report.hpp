@@ -24,6 +24,7 @@ struct MeshReport {
   bool closed = false;    // every edge used exactly twice
   bool manifold = false;  // no edge used more than twice, one fan around every vertex
   bool oriented = false;  // every edge used twice is used once in each direction
+  bool overflow = false;  // area, volume or extent beyond a double: no sampler can work
   double area = 0, volume = 0;  // volume: signed (negative: oriented inward)
   Box3 box;
   // Up to `locations` points per problem (an edge's midpoint, a vertex, a triangle's centroid).

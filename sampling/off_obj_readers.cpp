@@ -24,23 +24,22 @@ TriangleMesh read_off(const std::string& path) {
   tok.erase(tok.begin());
   if (tok.empty() && !r.next(tok)) r.fail("missing vertex and face counts");
   if (tok.size() < 2 || tok.size() > 3) r.fail("expected '<#vertices> <#faces> [#edges]'");
-  const long nv = r.to_long(tok[0]), nf = r.to_long(tok[1]);
-  if (nv < 0 || nf < 0) r.fail("negative count");
+  const long nv = r.to_count(tok[0], 3, "vertex"), nf = r.to_count(tok[1], 4, "face");
   TriangleMesh mesh;
   // Counts come from the file: reserve no more than a sane amount up front.
-  mesh.vertices.reserve(static_cast<std::size_t>(std::min(nv, 1L << 20)));
+  mesh.vertices.reserve(std::min(static_cast<std::size_t>(nv), kMaxReserve));
   for (long i = 0; i < nv; ++i) {
     if (!r.next(tok)) r.fail("file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
     if (tok.size() < 3) r.fail("vertex needs 3 coordinates, got " + std::to_string(tok.size()));
     mesh.vertices.push_back({r.to_double(tok[0]), r.to_double(tok[1]), r.to_double(tok[2])});
   }
-  mesh.triangles.reserve(static_cast<std::size_t>(std::min(nf, 1L << 20)));
+  mesh.triangles.reserve(std::min(static_cast<std::size_t>(nf), kMaxReserve));
   std::vector<long> poly;
   for (long i = 0; i < nf; ++i) {
     if (!r.next(tok)) r.fail("file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces");
     const long k = r.to_long(tok[0]);
     if (k < 3) r.fail("face with " + std::to_string(k) + " corner(s), need 3");
-    if (static_cast<long>(tok.size()) < k + 1)
+    if (k > static_cast<long>(tok.size()) - 1)  // not k + 1: k may be LONG_MAX
       r.fail("face announces " + std::to_string(k) + " corners, lists " + std::to_string(tok.size() - 1));
     poly.clear();
     for (long j = 1; j <= k; ++j) poly.push_back(r.to_long(tok[j]));  // extra tokens: colour

@@ -1,6 +1,7 @@
 // PLY (Stanford polygon format): ASCII, binary_little_endian and binary_big_endian.
 // Reads the x, y, z properties of "vertex" and the index list of "face"; every
 // other element and property is parsed only to be skipped.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -43,6 +44,22 @@ bool parse_scalar(std::string_view s, Scalar& out) {
 
 bool is_integer(Scalar t) { return t != Scalar::f32 && t != Scalar::f64; }
 
+// An ASCII value of an integer property: a whole number within the type's range
+// (checked before any cast: 1e30 has no integer to be cast to).
+bool fits_integer_type(Scalar t, double v) {
+  double lo = 0, hi = 0;
+  switch (t) {
+    case Scalar::i8: lo = -128, hi = 127; break;
+    case Scalar::u8: hi = 255; break;
+    case Scalar::i16: lo = -32768, hi = 32767; break;
+    case Scalar::u16: hi = 65535; break;
+    case Scalar::i32: lo = -2147483648.0, hi = 2147483647.0; break;
+    case Scalar::u32: hi = 4294967295.0; break;
+    default: return true;
+  }
+  return v >= lo && v <= hi && v == std::trunc(v);
+}
+
 std::vector<std::string_view> split(std::string_view s) {
   std::vector<std::string_view> out;
   std::size_t i = 0;
@@ -66,8 +83,10 @@ class PlyData {
       std::string_view tok;
       if (!src_.next_token(tok)) throw InputError(src_.path(), src_.line() + 1, "file ends inside the element data");
       const double v = src_.parse_double(tok, src_.token_line());
-      if (is_integer(t) && v != static_cast<double>(static_cast<long long>(v)))
-        throw InputError(src_.path(), src_.token_line(), "not an integer: '" + std::string(tok) + "'");
+      if (is_integer(t) && v != std::trunc(v))
+        throw InputError(src_.path(), src_.token_line(), "not an integer: " + quote_token(tok));
+      if (!fits_integer_type(t, v))
+        throw InputError(src_.path(), src_.token_line(), "integer out of range of its type: " + quote_token(tok));
       return v;
     }
     switch (t) {
@@ -121,8 +140,9 @@ TriangleMesh read_ply(const std::string& path) {
       Element e;
       e.name = tok[1];
       const double count = src.parse_double(tok[2], src.line());
-      if (count < 0 || count > 1e12 || count != static_cast<double>(static_cast<long>(count)))
-        throw fail("bad element count '" + std::string(tok[2]) + "'");
+      if (count < 0 || count != std::trunc(count)) throw fail("bad element count " + quote_token(tok[2]));
+      // Each element takes at least one byte of the file (ASCII: a digit and a separator).
+      if (count > static_cast<double>(src.size())) throw fail("element count too large: " + quote_token(tok[2]));
       e.count = static_cast<long>(count);
       elements.push_back(std::move(e));
     } else if (tok[0] == "property") {
@@ -168,7 +188,7 @@ TriangleMesh read_ply(const std::string& path) {
       throw InputError(path, 0, "face element comes before the vertex element");
     if (is_vertex) {
       seen_vertex = true;
-      mesh.vertices.reserve(static_cast<std::size_t>(std::min(e.count, 1L << 20)));  // count from the file
+      mesh.vertices.reserve(std::min(static_cast<std::size_t>(e.count), kMaxReserve));  // count from the file
     }
     if (e.props.empty()) continue;  // nothing to read, however large the count
     for (long i = 0; i < e.count; ++i) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <memory>
 #include <numeric>
@@ -198,9 +199,19 @@ constexpr double kMaxCondition = 1e4;
 
 VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptions& o) {
   if (sites.empty()) throw std::invalid_argument("no sites");
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    if (!std::isfinite(sites[i].x) || !std::isfinite(sites[i].y) || !std::isfinite(sites[i].z))
+      throw std::invalid_argument("voronoi: site " + std::to_string(i) + " has a non-finite coordinate");
+  if (!(std::isfinite(o.margin) && o.margin >= 0)) throw std::invalid_argument("voronoi: margin must be finite and >= 0");
+  if (o.box && !(std::isfinite(o.box->lo.x) && std::isfinite(o.box->lo.y) && std::isfinite(o.box->lo.z) &&
+                 std::isfinite(o.box->hi.x) && std::isfinite(o.box->hi.y) && std::isfinite(o.box->hi.z)))
+    throw std::invalid_argument("voronoi: the box has a non-finite coordinate");
   VoronoiDiagram vd;
   vd.sites.assign(sites.begin(), sites.end());
   vd.box = o.box ? *o.box : default_box(sites, o.margin);
+  if (!(std::isfinite(vd.box.lo.x) && std::isfinite(vd.box.lo.y) && std::isfinite(vd.box.lo.z) &&
+        std::isfinite(vd.box.hi.x) && std::isfinite(vd.box.hi.y) && std::isfinite(vd.box.hi.z)))
+    throw std::invalid_argument("voronoi: the box overflows (coordinates or margin too large)");
   vd.cells.resize(sites.size());
   const auto dup = find_duplicates(sites);
   const unsigned threads = thread_count(o.threads);

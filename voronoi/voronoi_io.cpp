@@ -4,15 +4,15 @@
 #include <memory>
 #include <stdexcept>
 
+#include "kernel/output_file.hpp"
+
 namespace dtlab {
 
 namespace {
 struct File {
+  OutputFile file;  // checked writes: close() throws on a failed write
   std::FILE* f;
-  explicit File(const std::string& path) : f(std::fopen(path.c_str(), "w")) {
-    if (!f) throw std::runtime_error("cannot write " + path);
-  }
-  ~File() { std::fclose(f); }
+  explicit File(const std::string& path) : file(path), f(file.get()) {}
 };
 nlohmann::json point_json(const Point3& p) { return {p.x, p.y, p.z}; }
 }  // namespace
@@ -34,6 +34,7 @@ void write_cells_obj(const std::string& path, const VoronoiDiagram& vd) {
     }
     base += c.vertices.size();
   }
+  out.file.close();
 }
 
 void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd) {
@@ -87,6 +88,7 @@ void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd) {
   for (std::size_t i = 0; i < vd.cells.size(); ++i)
     if (!vd.cells[i].vertices.empty()) std::fprintf(out.f, "%zu\n", i);
   std::fprintf(out.f, "</DataArray>\n</CellData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n");
+  out.file.close();
 }
 
 nlohmann::json cells_manifest(const VoronoiDiagram& vd) {

@@ -1,0 +1,55 @@
+#pragma once
+// Validators for every numeric command-line option: the value must be a finite number
+// (no nan, inf or 1e999) within a stated range, and whole where a count is meant.
+// A violation is a CLI11 validation error, so exit code 2 with a one-line message.
+// Usage: sub->add_option("--margin", m)->check(number_in(0, 100));
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace dtlab::cli {
+
+namespace number_options_detail {
+
+inline std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// Empty when `text` is a number in [lo, hi] (whole if `whole`), else the reason.
+inline std::string check_number(const std::string& text, double lo, double hi, bool whole) {
+  const char* b = text.data();
+  const char* e = b + text.size();
+  if (b != e && *b == '+') ++b;
+  double v = 0;
+  auto [p, ec] = std::from_chars(b, e, v);
+  const std::string shown = text.size() <= 32 ? text : text.substr(0, 24) + "...";
+  if (ec == std::errc::result_out_of_range) return "'" + shown + "' is out of range of a double";
+  if (ec != std::errc() || p != e) return "'" + shown + "' is not a number";
+  if (!std::isfinite(v)) return "'" + shown + "' is not finite";
+  if (whole && v != std::trunc(v)) return "'" + shown + "' is not a whole number";
+  if (v < lo || v > hi) return "'" + shown + "' is not in [" + fmt(lo) + ", " + fmt(hi) + "]";
+  return {};
+}
+
+}  // namespace number_options_detail
+
+// A finite real number in [lo, hi].
+inline CLI::Validator number_in(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& s) { return number_options_detail::check_number(s, lo, hi, false); },
+      "NUMBER in [" + number_options_detail::fmt(lo) + ", " + number_options_detail::fmt(hi) + "]");
+}
+
+// A whole number in [lo, hi] (counts, sizes, thread numbers, seconds of budget).
+inline CLI::Validator count_in(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& s) { return number_options_detail::check_number(s, lo, hi, true); },
+      "INTEGER in [" + number_options_detail::fmt(lo) + ", " + number_options_detail::fmt(hi) + "]");
+}
+
+}  // namespace dtlab::cli
