@@ -122,12 +122,46 @@ inline int adaptive_insphere(const Point3& a, const Point3& b, const Point3& c, 
                              const Point3& e, AdaptiveStats* stats) {
   using namespace adaptive_detail;
   // naive.hpp's evaluation order (the bound above counts its roundings).
-  const auto [det, lift] = insphere_eval(a, b, c, d, e);
+  const InsphereEval v = insphere_eval(a, b, c, d, e);
+  const double det = v.det, lift = v.max_lift;
   const double lift2 = lift * lift;
   const double bound = kIspSemiStaticSquared * (lift2 * lift2 * lift);
   if ((lift >= kIspLiftLow) & (det * det > bound))
     return counted(stats, true, AdaptiveStage::kSemiStatic, det > 0 ? 1 : -1);
   return adaptive_insphere_stages(a, b, c, d, e, stats);
+}
+
+// The insphere filter of adaptive_insphere, fused with the orientation tests a flip
+// classification asks next. It evaluates insphere(a,b,c,d,e) once and returns the
+// signs that the semi-static bounds decide, kUndecided for the others (the caller then
+// asks the full predicates):
+//   insphere  as adaptive_insphere's filter;
+//   side[k]   orient3d(a,b,c,d with its k-th point replaced by e): insphere_eval's
+//             minor[k], with orient3d's semi-static bound. That bound (above) holds for
+//             this evaluation: each minor has orient3d_value's rounding count along every
+//             monomial (3 differences, a 2x2 minor, a product, two additions), and the
+//             largest differences over all four rows per axis bound those of its three.
+inline constexpr int kUndecided = 2;
+struct InsphereSides {
+  int insphere;
+  int side[4];
+};
+
+inline InsphereSides adaptive_insphere_sides(const Point3& a, const Point3& b, const Point3& c,
+                                             const Point3& d, const Point3& e, AdaptiveStats* stats) {
+  using namespace adaptive_detail;
+  const InsphereEval v = insphere_eval(a, b, c, d, e);
+  InsphereSides r{kUndecided, {kUndecided, kUndecided, kUndecided, kUndecided}};
+  const double lift2 = v.max_lift * v.max_lift;
+  if ((v.max_lift >= kIspLiftLow) & (v.det * v.det > kIspSemiStaticSquared * (lift2 * lift2 * v.max_lift)))
+    r.insphere = counted(stats, true, AdaptiveStage::kSemiStatic, v.det > 0 ? 1 : -1);
+  const double mx = v.max_diff[0], my = v.max_diff[1], mz = v.max_diff[2];
+  if (std::min(std::min(mx, my), mz) >= kO3dLow && std::max(std::max(mx, my), mz) <= kO3dHigh) {
+    const double bound = kO3dSemiStatic * (mx * my * mz);
+    for (int k = 0; k < 4; ++k)
+      if (std::fabs(v.minor[k]) > bound) r.side[k] = v.minor[k] > 0 ? 1 : -1;
+  }
+  return r;
 }
 
 struct AdaptivePredicates {
@@ -142,6 +176,10 @@ struct AdaptivePredicates {
   int insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                const Point3& e) const {
     return adaptive_insphere(a, b, c, d, e, stats);
+  }
+  InsphereSides insphere_sides(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                               const Point3& e) const {
+    return adaptive_insphere_sides(a, b, c, d, e, stats);
   }
 };
 
