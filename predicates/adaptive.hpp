@@ -133,34 +133,45 @@ inline int adaptive_insphere(const Point3& a, const Point3& b, const Point3& c, 
 
 // The insphere filter of adaptive_insphere, fused with the orientation tests a flip
 // classification asks next. It evaluates insphere(a,b,c,d,e) once and returns the
-// signs that the semi-static bounds decide, kUndecided for the others (the caller then
+// signs that semi-static bounds decide, kUndecided for the others (the caller then
 // asks the full predicates):
 //   insphere  as adaptive_insphere's filter;
 //   side[k]   orient3d(a,b,c,d with its k-th point replaced by e): insphere_eval's
-//             minor[k], with orient3d's semi-static bound. That bound (above) holds for
-//             this evaluation: each minor has orient3d_value's rounding count along every
-//             monomial (3 differences, a 2x2 minor, a product, two additions), and the
-//             largest differences over all four rows per axis bound those of its three.
+//             minor[k]. Each minor has orient3d_value's rounding count along every
+//             monomial (3 differences, a 2x2 minor, a product, two additions), so the
+//             orient3d bound above holds: error <= 43 eps mx my mz over its rows'
+//             rounded differences. Each rounded difference is at most sqrt of the
+//             exact lift of its row's rounded differences, which exceeds the computed
+//             L by at most a factor (1 - eps)^-3 (a square and two additions):
+//             mx my mz <= L^1.5 (1 - eps)^-4.5. The test |minor| > 44 eps L^1.5 is
+//             therefore safe, with a relative slack of 1/43 for the roundings of the
+//             test itself, evaluated squared: minor^2 > (44 eps)^2 L^3 (5 roundings).
+//             Range: L >= 2^-180 as for insphere; then an underflowing product errs by
+//             <= 2^-1075 times at most a factor sqrt(L), far inside the slack. If L^3
+//             overflows the test is false; a NaN minor fails it; a minor^2 overflowing
+//             alone means |minor| > 2^512 > L^1.5: correctly decided.
 inline constexpr int kUndecided = 2;
 struct InsphereSides {
   int insphere;
   int side[4];
 };
 
+namespace adaptive_detail {
+inline constexpr double kSideSemiStaticSquared = (44 * kEps) * (44 * kEps);
+}  // namespace adaptive_detail
+
 inline InsphereSides adaptive_insphere_sides(const Point3& a, const Point3& b, const Point3& c,
                                              const Point3& d, const Point3& e, AdaptiveStats* stats) {
   using namespace adaptive_detail;
   const InsphereEval v = insphere_eval(a, b, c, d, e);
   InsphereSides r{kUndecided, {kUndecided, kUndecided, kUndecided, kUndecided}};
+  if (!(v.max_lift >= kIspLiftLow)) return r;
   const double lift2 = v.max_lift * v.max_lift;
-  if ((v.max_lift >= kIspLiftLow) & (v.det * v.det > kIspSemiStaticSquared * (lift2 * lift2 * v.max_lift)))
+  if (v.det * v.det > kIspSemiStaticSquared * (lift2 * lift2 * v.max_lift))
     r.insphere = counted(stats, true, AdaptiveStage::kSemiStatic, v.det > 0 ? 1 : -1);
-  const double mx = v.max_diff[0], my = v.max_diff[1], mz = v.max_diff[2];
-  if (std::min(std::min(mx, my), mz) >= kO3dLow && std::max(std::max(mx, my), mz) <= kO3dHigh) {
-    const double bound = kO3dSemiStatic * (mx * my * mz);
-    for (int k = 0; k < 4; ++k)
-      if (std::fabs(v.minor[k]) > bound) r.side[k] = v.minor[k] > 0 ? 1 : -1;
-  }
+  const double side_bound = kSideSemiStaticSquared * (lift2 * v.max_lift);
+  for (int k = 0; k < 4; ++k)
+    if (v.minor[k] * v.minor[k] > side_bound) r.side[k] = v.minor[k] > 0 ? 1 : -1;
   return r;
 }
 

@@ -3,7 +3,6 @@
 // Each is the textbook cofactor expansion after translating by the last point,
 // evaluated in floating point with no error control.
 #include <algorithm>
-#include <cmath>
 #include <string_view>
 
 #include "predicates/backend.hpp"
@@ -21,17 +20,16 @@ inline double orient3d_value(const Point3& a, const Point3& b, const Point3& c, 
 // The insphere determinant and the largest lift |q - e|^2 of a,b,c,d (which the
 // adaptive backend's semi-static filter bounds its error with). On the way the
 // expansion along the lift column forms the four orientation minors: minor[k] is
-// orient3d(a,b,c,d with its k-th point replaced by e), evaluated like orient3d_value
-// (same rounding count), and max_diff the largest |coordinate difference to e| per
-// axis, which bounds their error (the kernel's flip classification reads them).
+// orient3d(a,b,c,d with its k-th point replaced by e), evaluated with orient3d_value's
+// rounding count (the kernel's flip classification reads them). Always inlined: the
+// callers are hot loops, and a call would return the struct through memory.
 struct InsphereEval {
   double det;
   double max_lift;
   double minor[4];
-  double max_diff[3];
 };
 
-inline InsphereEval insphere_eval(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+[[gnu::always_inline]] inline InsphereEval insphere_eval(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                                   const Point3& e) {
   const double aex = a.x - e.x, aey = a.y - e.y, aez = a.z - e.z;
   const double bex = b.x - e.x, bey = b.y - e.y, bez = b.z - e.z;
@@ -50,13 +48,7 @@ inline InsphereEval insphere_eval(const Point3& a, const Point3& b, const Point3
   const double dlift = dex * dex + dey * dey + dez * dez;
   const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
   const double max_lift = std::max(std::max(alift, blift), std::max(clift, dlift));
-  const auto max4 = [](double p, double q, double r, double s) {
-    return std::max(std::max(std::fabs(p), std::fabs(q)), std::max(std::fabs(r), std::fabs(s)));
-  };
-  return {det,
-          max_lift,
-          {-bcd, cda, -dab, abc},
-          {max4(aex, bex, cex, dex), max4(aey, bey, cey, dey), max4(aez, bez, cez, dez)}};
+  return {det, max_lift, {-bcd, cda, -dab, abc}};
 }
 
 inline double insphere_value(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
