@@ -67,8 +67,8 @@ class TetMesh {
 
   void reserve(std::size_t tets) { tets_.reserve(tets); }
 
-  // The records, for the final compaction (kernel/compact.hpp), which releases them
-  // page by page as it reads them.
+  // The records, for the final compaction (detail::compact in build_impl.hpp),
+  // which releases them page by page as it reads them.
   std::vector<TetRecord>& records() { return tets_; }
 
  private:
