@@ -21,7 +21,6 @@ struct ChildReport {
   double peak_mb_self;
   double peak_mb_children;
   std::uint64_t tets;
-  double bytes_per_tet;
   char note[200];
 };
 
@@ -29,12 +28,13 @@ ChildReport run_in_child(const std::string& tool, std::span<const Point3> points
                          const PredicateSpec& spec, const BuildOptions& options) {
   ChildReport rep{};
   if (tool == "dtlab") {
+    BuildOptions timed = options;
+    timed.count_stages = false;  // no per-call counting in timed runs
     const auto t0 = std::chrono::steady_clock::now();
-    BuildResult r = build_delaunay(points, spec, options);
+    BuildResult r = build_delaunay(points, spec, timed);
     rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     rep.ok = !r.failure;
     rep.tets = r.mesh.tets.size();
-    rep.bytes_per_tet = r.mesh.tets.empty() ? 0 : 32.0 * double(r.peak_tets) / double(r.mesh.tets.size());
     if (r.failure) std::snprintf(rep.note, sizeof rep.note, "%s", failure_name(r.failure->kind));
   } else if (tool == "cgal") {
     OracleRun r = cgal_delaunay(points);
@@ -91,10 +91,10 @@ RunMeasure measure_run(const std::string& tool, std::span<const Point3> points,
   m.ok = rep.ok;
   m.seconds = rep.seconds;
   m.tets = rep.tets;
-  m.bytes_per_tet = rep.bytes_per_tet;
   m.note = rep.note;
   // TetGen's memory is its own process's, not the parent's that waited for it.
   m.peak_mb = tool == "tetgen" ? rep.peak_mb_children : double(usage.ru_maxrss) / 1024.0;
+  m.bytes_per_tet = m.tets ? m.peak_mb * 1024.0 * 1024.0 / double(m.tets) : 0;
   return m;
 }
 

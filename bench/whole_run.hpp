@@ -2,6 +2,8 @@
 // Whole-run benchmarks: dtlab, CGAL and TetGen on the same points, in one process
 // tree. Each run happens in a forked child so that its peak memory (ru_maxrss) is
 // its own; TetGen runs as a grandchild process and its peak is read the same way.
+// A forked child's peak includes the pages it shares with the parent (the points),
+// so bytes per tet counts the input as well.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -15,9 +17,9 @@ struct RunMeasure {
   std::string tool;         // "dtlab", "cgal", "tetgen"
   bool ok = false;          // false: the tool gave no answer (crash, missing, timeout)
   double seconds = 0;       // triangulation wall time (TetGen: its whole process)
-  double peak_mb = 0;       // peak resident memory of the process that built it
+  double peak_mb = 0;       // peak resident memory (MiB) of the process that built it
   std::uint64_t tets = 0;
-  double bytes_per_tet = 0; // dtlab only: tet arrays / live tets
+  double bytes_per_tet = 0; // measured: peak resident memory / finite tets
   std::string note;
 };
 

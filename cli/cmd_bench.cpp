@@ -45,10 +45,13 @@ int run_bench(const BenchArgs& a) {
         for (int r = 0; r < a.runs; ++r) row.runs.push_back(measure_run(tool, points, spec, options));
         const bool any = row.median_seconds() > 0;
         const RunMeasure& last = row.runs.back();
+        // Measured: the child's peak resident memory over the finite tets.
+        const double bytes_per_tet = last.tets ? row.median_peak_mb() * 1048576.0 / double(last.tets) : 0.0;
         nlohmann::json j = {{"distribution", dist}, {"n", n}, {"tool", tool},
                             {"median_s", row.median_seconds()}, {"min_s", row.min_seconds()},
                             {"max_s", row.max_seconds()}, {"peak_mb", row.median_peak_mb()},
-                            {"tets", last.tets}, {"bytes_per_tet", last.bytes_per_tet},
+                            {"tets", last.tets},
+                            {"bytes_per_tet", bytes_per_tet},
                             {"runs", a.runs}, {"note", last.note}};
         all.push_back(j);
         if (a.json) continue;
@@ -59,7 +62,7 @@ int run_bench(const BenchArgs& a) {
                       tool.c_str(), row.median_seconds(), row.min_seconds(), row.max_seconds(),
                       double(n) / row.median_seconds() / 1e6, row.median_peak_mb(),
                       (unsigned long long)last.tets,
-                      tool == "dtlab" ? std::to_string(int(last.bytes_per_tet + 0.5)).c_str() : "");
+                      std::to_string(int(bytes_per_tet + 0.5)).c_str());
         }
         std::fflush(stdout);
       }

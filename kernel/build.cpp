@@ -34,7 +34,8 @@ BuildResult build_delaunay(std::span<const Point3> points, const PredicateSpec& 
     throw std::invalid_argument("unknown predicate backend '" + spec.backend +
                                 "' (expected naive, epsilon, adaptive or exact)");
   AdaptiveStats stages;
-  if (auto* adaptive = std::get_if<AdaptivePredicates>(&*choice)) adaptive->stats = &stages;
+  if (auto* adaptive = std::get_if<AdaptivePredicates>(&*choice); adaptive && options.count_stages)
+    adaptive->stats = &stages;
   BuildResult r = visit_backend(*choice, spec.perturb,
                                 [&](const auto& preds) { return build_with(points, preds, options); });
   for (int s = 0; s < static_cast<int>(AdaptiveStage::kCount); ++s) {

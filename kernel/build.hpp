@@ -21,6 +21,9 @@ struct BuildOptions {
   double bigtet_factor = 10.0;  // bigtet size; 1 = the smallest one holding the bounding box
   InsertionOrder order = InsertionOrder::brio;
   std::uint64_t seed = 1;       // walk randomisation and BRIO rounds
+  // Count which adaptive stage decided each predicate call (BuildStats::stages): an
+  // increment through a pointer on every call, so benchmarks turn it off.
+  bool count_stages = true;
 };
 
 // The runtime predicate choice: backend name (naive|epsilon|adaptive|exact),

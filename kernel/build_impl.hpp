@@ -5,10 +5,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 #include "kernel/build.hpp"
 #include "kernel/enclosing_tet.hpp"
+#include "kernel/ids.hpp"
 #include "kernel/inserter.hpp"
 #include "kernel/spatial_order.hpp"
 
@@ -27,14 +33,55 @@ bool collinear(const B& pred, const Point3& a, const Point3& b, const Point3& c)
          proj([](const Point3& p) { return Point3{p.z, p.x, 0}; }) == 0;
 }
 
-inline void compact(const TetMesh& m, std::uint32_t n, Tetrahedralization& out) {
-  out.tets.clear();
-  for (std::uint32_t t = 0; t < m.size(); ++t) {
-    if (m.dead(t)) continue;
-    const std::uint32_t* v = m.verts(t);
-    if (v[0] >= n || v[1] >= n || v[2] >= n || v[3] >= n) continue;
-    out.tets.push_back({v[0], v[1], v[2], v[3]});
+// Page-aligned ranges of a buffer already read can be handed back to the system, so
+// that the compaction's output grows while the mesh it reads shrinks (peak memory is
+// the mesh's, not the mesh's plus the output's).
+// Releases the whole pages in [begin, end); returns where the next release starts
+// (the page holding `end`, not yet released).
+inline const char* release_pages(const char* begin, const char* end) {
+  constexpr std::uintptr_t kPage = 4096;
+  const std::uintptr_t b = (reinterpret_cast<std::uintptr_t>(begin) + kPage - 1) & ~(kPage - 1);
+  const std::uintptr_t e = reinterpret_cast<std::uintptr_t>(end) & ~(kPage - 1);
+#ifdef __linux__
+  if (e > b) madvise(reinterpret_cast<void*>(b), e - b, MADV_DONTNEED);
+#endif
+  return e > b ? reinterpret_cast<const char*>(e) : begin;
+}
+
+// The finite live tets, vertex ids translated back to input indices (vertex v is
+// input point order[v]). The records are released as they are read and freed at the
+// end: the mesh cannot be used afterwards.
+inline void compact(std::vector<TetRecord>& records, std::uint32_t n, const std::vector<std::uint32_t>& order,
+                    std::vector<Tet>& out) {
+  const auto finite = [n](const TetRecord& r) {
+    return r.v[0] < n && r.v[1] < n && r.v[2] < n && r.v[3] < n;  // dead tets have v[0] == kNone
+  };
+  std::size_t count = 0;
+  for (const TetRecord& r : records) count += finite(r);
+  out.clear();
+  out.reserve(count);
+  constexpr std::size_t kChunk = 1 << 15;  // records between two releases (1 MiB)
+  const char* unreleased = reinterpret_cast<const char*>(records.data());
+  for (std::size_t start = 0; start < records.size(); start += kChunk) {
+    const std::size_t stop = std::min(records.size(), start + kChunk);
+    for (std::size_t t = start; t < stop; ++t) {
+      const TetRecord& r = records[t];
+      if (finite(r)) out.push_back({order[r.v[0]], order[r.v[1]], order[r.v[2]], order[r.v[3]]});
+    }
+    unreleased = release_pages(unreleased, reinterpret_cast<const char*>(records.data() + stop));
   }
+  std::vector<TetRecord>().swap(records);
+}
+
+// Moves points[k] to position order[k] in place (order is consumed: it ends as the
+// identity): the inverse of the renumbering, with no second copy of the points.
+inline void restore_input_order(std::vector<Point3>& points, std::vector<std::uint32_t>& order) {
+  for (std::size_t s = 0; s < order.size(); ++s)
+    while (order[s] != s) {
+      const std::uint32_t j = order[s];
+      std::swap(points[s], points[j]);
+      std::swap(order[s], order[j]);
+    }
 }
 
 }  // namespace detail
@@ -43,6 +90,9 @@ template <PredicateBackend B>
 BuildResult build_with(std::span<const Point3> input, const B& pred, const BuildOptions& opt) {
   BuildResult res;
   const auto n = static_cast<std::uint32_t>(input.size());
+  // Vertex ids are insertion ranks: vertex k is input point order[k], stored at
+  // pts[k], so consecutive insertions read neighbouring coordinates. The output is
+  // translated back to input indices.
   std::vector<std::uint32_t> order;
   if (opt.order == InsertionOrder::brio) {
     order = brio_order(input, opt.seed);
@@ -50,43 +100,44 @@ BuildResult build_with(std::span<const Point3> input, const B& pred, const Build
     order.resize(n);
     std::iota(order.begin(), order.end(), 0u);
   }
+  std::vector<Point3> pts;
+  pts.reserve(std::size_t(n) + 4);  // room for the infinite vertex or the bigtet corners
+  for (std::uint32_t k = 0; k < n; ++k) pts.push_back(input[order[k]]);
+
   auto lower_dimensional = [&](const char* why) {
     res.failure = BuildFailure{FailureKind::lower_dimensional, -1, why};
-    res.skipped = order;
-    std::sort(res.skipped.begin(), res.skipped.end());
+    res.skipped.resize(n);
+    std::iota(res.skipped.begin(), res.skipped.end(), 0u);
     res.mesh.points.assign(input.begin(), input.end());
     return res;
   };
 
-  std::vector<Point3> pts;
-  pts.reserve(input.size() + 4);  // room for the infinite vertex or the bigtet corners
-  pts.assign(input.begin(), input.end());
-  std::uint32_t inf = Inserter<B>::kNoVertex;
+  std::uint32_t inf = kNone;
   std::uint32_t first[4];
   // The first four affinely independent points in insertion order (either boundary:
-  // a lower-dimensional input has no Delaunay tetrahedralization).
-  std::size_t k = 0;
+  // a lower-dimensional input has no Delaunay tetrahedralization). Positions in pts.
+  std::uint32_t k = 0;
   const auto next = [&](auto accept) {
-    for (; k < order.size(); ++k)
-      if (accept(input[order[k]])) return true;
+    for (; k < n; ++k)
+      if (accept(pts[k])) return true;
     return false;
   };
   if (n < 4) return lower_dimensional("fewer than 4 points");
-  first[0] = order[0];
+  first[0] = 0;
   k = 1;
-  const Point3 a = input[first[0]];
+  const Point3 a = pts[0];
   if (!next([&](const Point3& q) { return !(q == a); })) return lower_dimensional("all points coincide");
-  first[1] = order[k++];
-  const Point3 b = input[first[1]];
+  first[1] = k++;
+  const Point3 b = pts[first[1]];
   if (!next([&](const Point3& q) { return !detail::collinear(pred, a, b, q); }))
     return lower_dimensional("all points are collinear");
-  first[2] = order[k++];
-  const Point3 c = input[first[2]];
+  first[2] = k++;
+  const Point3 c = pts[first[2]];
   if (!next([&](const Point3& q) { return pred.orient3d(a, b, c, q) != 0; }))
     return lower_dimensional("all points are coplanar");
-  first[3] = order[k];
+  first[3] = k;
   if (opt.boundary == Boundary::infinite) {
-    if (pred.orient3d(a, b, c, input[first[3]]) < 0) std::swap(first[0], first[1]);
+    if (pred.orient3d(a, b, c, pts[first[3]]) < 0) std::swap(first[0], first[1]);
     pts.push_back(a);  // the infinite vertex's slot: its coordinates are never read
     inf = n;
   } else {
@@ -104,25 +155,28 @@ BuildResult build_with(std::span<const Point3> input, const B& pred, const Build
     if (pred.orient3d(pts[n], pts[n + 1], pts[n + 2], pts[n + 3]) < 0) std::swap(first[0], first[1]);
   }
 
-  Inserter<B> ins(pts, pred, inf, opt.seed);
+  Inserter<B> ins(pts.data(), pred, inf, opt.seed);
   ins.reserve(n);
   ins.start(first[0], first[1], first[2], first[3]);
   const auto t0 = std::chrono::steady_clock::now();
   const bool infinite = opt.boundary == Boundary::infinite;
+  const auto is_first = [&](std::uint32_t k) {
+    return infinite && (k == first[0] || k == first[1] || k == first[2] || k == first[3]);
+  };
   if (infinite) ins.stats().inserted = 4;
-  std::vector<char> is_first(infinite ? n : 0, 0);
-  if (infinite)
-    for (std::uint32_t v : first) is_first[v] = 1;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const std::uint32_t p = order[k];
-    if (infinite && is_first[p]) continue;
-    const auto outcome = ins.insert(p);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (is_first(k)) continue;
+    const auto outcome = ins.insert(k);
     if (outcome == Inserter<B>::Outcome::duplicate) {
-      res.duplicates.push_back(p);
+      // The vertex stands for the first occurrence in input order, the others are
+      // its duplicates (their coordinates are equal: nothing else changes).
+      const std::uint32_t v = ins.found();
+      if (order[k] < order[v]) std::swap(order[k], order[v]);
+      res.duplicates.push_back(order[k]);
     } else if (outcome == Inserter<B>::Outcome::failed) {
-      res.failure = BuildFailure{ins.failure(), p, ins.failure_detail()};
-      for (std::size_t j = k; j < order.size(); ++j)
-        if (!(infinite && is_first[order[j]])) res.skipped.push_back(order[j]);
+      res.failure = BuildFailure{ins.failure(), order[k], ins.failure_detail()};
+      for (std::uint32_t j = k; j < n; ++j)
+        if (!is_first(j)) res.skipped.push_back(order[j]);
       std::sort(res.skipped.begin(), res.skipped.end());
       break;
     }
@@ -133,9 +187,9 @@ BuildResult build_with(std::span<const Point3> input, const B& pred, const Build
   res.stats.insphere_calls = ins.geometry().insphere_calls;
   res.peak_tets = ins.mesh().size();
   std::sort(res.duplicates.begin(), res.duplicates.end());
-  ins.release_adjacency();  // the output needs only the vertices: lower the peak memory
-  detail::compact(ins.mesh(), n, res.mesh);
+  detail::compact(ins.mesh().records(), n, order, res.mesh.tets);
   pts.resize(n);
+  detail::restore_input_order(pts, order);
   res.mesh.points = std::move(pts);
   return res;
 }

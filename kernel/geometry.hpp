@@ -27,14 +27,21 @@
 // 0); an infinite tet (x,y,z,inf) conflicts iff p is strictly outside the hull facet
 // xyz, or on its plane and inside its circumcircle. The circle test is
 // insphere(x,y,z,w,p) for any point w off the plane (the first of a,b,c,d that is):
-// the sphere through x,y,z,w cuts the plane in the circumcircle of xyz. Cocircular
-// ties follow Devillers & Teillaud's perturbation (the rule CGAL uses for its
-// coplanar_side_of_bounded_circle): the lexicographically largest of x,y,z,p
+// the sphere through x,y,z,w cuts the plane in the circumcircle of xyz. It is asked
+// of the unperturbed predicate: w is only a device to turn a circle into a sphere, so
+// a perturbed answer would depend on w's lexicographic rank, which has nothing to do
+// with the triangle and p, and it would never return the zero that sends cocircular
+// ties to their own rule: Devillers & Teillaud's perturbation (the rule CGAL uses for
+// its coplanar_side_of_bounded_circle): the lexicographically largest of x,y,z,p
 // decides; if it is p, p is outside; otherwise replace it by p and ask whether the
 // triangle keeps its orientation in the plane (inside) or flips (outside).
+//
+// Counters: calls to orient3d and insphere are counted in plain members (one add in
+// a line the caller already holds; kernel/README.md has the measured cost).
 #include <cstdint>
-#include <vector>
 
+#include "kernel/ids.hpp"
+#include "predicates/adaptive.hpp"
 #include "predicates/backend.hpp"
 
 namespace dtlab {
@@ -42,11 +49,17 @@ namespace dtlab {
 template <class B>
 concept PerturbingBackend = PredicateBackend<B> && requires { B::perturbs; };
 
+// A backend with the fused insphere-and-sides filter (predicates/adaptive.hpp).
+template <class B>
+concept FusedSidesBackend = requires(const B& b, const Point3& p) {
+  { b.insphere_sides(p, p, p, p, p) } -> std::same_as<InsphereSides>;
+};
+
 template <PredicateBackend B>
 class Geometry {
  public:
-  Geometry(const std::vector<Point3>& points, const B& pred, std::uint32_t inf)
-      : p_(points), pred_(pred), inf_(inf) {}
+  // points: indexed by vertex id; inf the infinite vertex's id, or kNone (bigtet).
+  Geometry(const Point3* points, const B& pred, std::uint32_t inf) : p_(points), pred_(pred), inf_(inf) {}
 
   // The first tet, positively oriented: it defines the symbolic inner point O.
   void set_first_tet(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
@@ -55,7 +68,6 @@ class Geometry {
 
   std::uint32_t infinite() const { return inf_; }
   const Point3& point(std::uint32_t v) const { return p_[v]; }
-  const B& predicates() const { return pred_; }
 
   std::uint64_t orient_calls = 0, insphere_calls = 0;
 
@@ -74,6 +86,7 @@ class Geometry {
     if (d == inf_) return -orient_from_inside(a, b, c);
     return orient3d(a, b, c, d);
   }
+  int orientation(const std::uint32_t* v) { return orientation(v[0], v[1], v[2], v[3]); }
 
   // orient3d(x, y, z, O) for the symbolic inner point O.
   int orient_from_inside(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
@@ -82,11 +95,19 @@ class Geometry {
     return 0;
   }
 
-  // Does p conflict with the tet (a,b,c,d) (which does not contain p)?
-  bool conflict(const std::uint32_t* v, std::uint32_t p) {
-    int k = v[0] == inf_ ? 0 : v[1] == inf_ ? 1 : v[2] == inf_ ? 2 : v[3] == inf_ ? 3 : -1;
+  // Does p conflict with the tet v (positively oriented, not containing p)?
+  // side[k] receives the sign of orientation(v with v[k] replaced by p) where the
+  // backend's fused filter decided it on the way, kUndecided elsewhere.
+  bool conflict(const std::uint32_t* v, std::uint32_t p, int side[4]) {
+    side[0] = side[1] = side[2] = side[3] = kUndecided;
+    const int k = v[0] == inf_ ? 0 : v[1] == inf_ ? 1 : v[2] == inf_ ? 2 : v[3] == inf_ ? 3 : -1;
     if (k < 0) {
       ++insphere_calls;
+      if constexpr (FusedSidesBackend<B>) {
+        const InsphereSides r = pred_.insphere_sides(p_[v[0]], p_[v[1]], p_[v[2]], p_[v[3]], p_[p]);
+        side[0] = r.side[0], side[1] = r.side[1], side[2] = r.side[2], side[3] = r.side[3];
+        if (r.insphere != kUndecided) return r.insphere > 0;
+      }
       return pred_.insphere(p_[v[0]], p_[v[1]], p_[v[2]], p_[v[3]], p_[p]) > 0;
     }
     std::uint32_t x, y, z;  // (x,y,z,inf) an even permutation of v
@@ -96,19 +117,28 @@ class Geometry {
       case 2: x = v[1], y = v[0], z = v[3]; break;
       default: x = v[0], y = v[1], z = v[2]; break;
     }
-    const int side = orient3d(x, y, z, p);
-    if (side != 0) return side > 0;
+    const int side_of_hull = orient3d(x, y, z, p);
+    if (side_of_hull != 0) return side_of_hull > 0;
     return in_hull_circle(x, y, z, p);
+  }
+  bool conflict(const std::uint32_t* v, std::uint32_t p) {
+    int side[4];
+    return conflict(v, p, side);
   }
 
  private:
+  int raw_insphere(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, std::uint32_t e) {
+    if constexpr (PerturbingBackend<B>) return pred_.base.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]);
+    else return pred_.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]);
+  }
+
   // p on the plane of the hull facet (x,y,z), whose O side is negative.
   bool in_hull_circle(std::uint32_t x, std::uint32_t y, std::uint32_t z, std::uint32_t p) {
     ++insphere_calls;
     int in = 0;
     for (std::uint32_t w : first_)
       if (const int side = orient3d(x, y, z, w)) {
-        in = side * pred_.insphere(p_[x], p_[y], p_[z], p_[w], p_[p]);
+        in = side * raw_insphere(x, y, z, w, p);
         break;
       }
     if (in != 0) return in > 0;
@@ -120,7 +150,7 @@ class Geometry {
       for (int round = 0; round < 3; ++round) {
         int best = -1;
         for (int i = 0; i < 4; ++i) {
-          if (q[i] == TetMesh_none) continue;
+          if (q[i] == kNone) continue;
           if (best < 0 || lex_less(p_[q[best]], p_[q[i]])) best = i;
         }
         if (best == 3) return false;
@@ -129,15 +159,13 @@ class Geometry {
         // Same orientation seen from O as (x,y,z), which is negative: inside.
         const int o = orient_from_inside(t[0], t[1], t[2]);
         if (o != 0) return o < 0;
-        q[best] = TetMesh_none;
+        q[best] = kNone;
       }
       return false;
     }
   }
 
-  static constexpr std::uint32_t TetMesh_none = 0xFFFFFFFFu;
-
-  const std::vector<Point3>& p_;
+  const Point3* p_;
   B pred_;
   std::uint32_t inf_;
   std::uint32_t first_[4] = {0, 0, 0, 0};

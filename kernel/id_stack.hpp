@@ -1,7 +1,7 @@
 #pragma once
 // A stack of 32-bit ids whose push stays inline (std::vector::push_back is often
 // not inlined because of its reallocation path): the free list of dead tets and
-// the inserter's flip stack both push and pop tens of times per point.
+// the inserter's flip stack of facets both push and pop tens of times per point.
 #include <cstdint>
 #include <cstring>
 #include <memory>

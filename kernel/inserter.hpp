@@ -2,20 +2,21 @@
 // The one flip-based incremental inserter (Edelsbrunner & Shah 1996, as explained by
 // Ledoux 2007 and implemented in the thesis), templated on the predicate backend.
 //
-// Insert(p): walk to the tet containing p, split it (flip 1-4), then repeat on a
-// stack of tets incident to p: take T = (p,a,b,c), its neighbour Ta = (a,b,c,d)
-// across the facet opposite p; if p is inside Ta's circumsphere, flip. Which flip
-// depends on where the segment pd meets the plane of abc; we read it off the
-// orientations s_x of T with x replaced by d, for x in {a,b,c} (the three tets a
-// flip 2-3 would create):
+// insert(p): walk to the tet containing p, split it (flip 1-4), then repeat on a
+// stack of facets opposite p: take T = (p,a,b,c), its neighbour Ta = (a,b,c,d)
+// across the facet abc; if p is inside Ta's circumsphere, flip. Which flip depends
+// on where the segment pd meets the plane of abc; we read it off the orientations
+// s_x of T with x replaced by d, for x in {a,b,c} (the three tets a flip 2-3 would
+// create):
 //
 //   case 1: all s_x > 0            pd crosses triangle abc      -> flip 2-3
-//   case 2: one s_x < 0, and the   pd passes outside edge yz    -> flip 3-2 on yz
-//           tet (p,y,z,d) exists   (x is the third vertex)
+//   case 2: one s_x < 0 or = 0,    pd passes outside edge yz    -> flip 3-2 on yz
+//           and the tet N = pyzd   (x is the third vertex)
+//           exists
 //   case 3: one s_x = 0, T not     pd crosses edge yz; edge yz  -> flip 4-4
-//           flat, config 4-4       has 4 tets: T, Ta, (y,z,d,e), (p,y,z,e)
-//   case 4: one s_x = 0, T flat    p lies on edge yz            -> flip 2-3 (another
-//                                                                 flat tet appears and
+//           flat, no N             has 4 tets: T, Ta, (y,z,d,e), (p,y,z,e)
+//   case 4: one s_x = 0, T flat,   p lies on edge yz            -> flip 2-3 (another
+//           no N                                                  flat tet appears and
 //                                                                 leaves in a later flip)
 //   otherwise: no flip now; a later flip of a neighbour removes T.
 //
@@ -28,16 +29,22 @@
 //          \|/               pdca (edge pd)    (4 tets around yz)
 //           d
 //
-// Every flip is a call of retriangulate() with the new tets listed explicitly, so
-// the adjacency bookkeeping lives in one place. Flips and walks are bounded; a
-// non-robust backend that would loop forever stops with a named failure instead.
+// The 1-4, 2-3 and 3-2 flips are written out with their adjacency (one function each,
+// with its contract); only the rare 4-4 goes through retriangulate(), which matches
+// facets by their vertices. The orientations s_x mostly come for free: the insphere
+// evaluation of Ta against p forms them as its minors, and a backend with a fused
+// filter (predicates/adaptive.hpp) returns the signs its semi-static bound decides.
+// Flips and walks are bounded; a non-robust backend that would loop forever stops
+// with a named failure instead.
+#include <array>
 #include <cstdint>
 #include <string>
-#include <vector>
+#include <utility>
 
 #include "kernel/build.hpp"
 #include "kernel/geometry.hpp"
 #include "kernel/id_stack.hpp"
+#include "kernel/ids.hpp"
 #include "kernel/retriangulate.hpp"
 #include "kernel/tet_mesh.hpp"
 
@@ -47,9 +54,9 @@ template <PredicateBackend B>
 class Inserter {
  public:
   enum class Outcome { inserted, duplicate, failed };
-  static constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;  // `inf` when there is none
 
-  Inserter(const std::vector<Point3>& points, const B& pred, std::uint32_t inf, std::uint64_t seed)
+  // points: indexed by vertex id; inf the infinite vertex's id, or kNone (bigtet).
+  Inserter(const Point3* points, const B& pred, std::uint32_t inf, std::uint64_t seed)
       : geo_(points, pred, inf), rng_(seed * 0x9E3779B97F4A7C15ull + 1) {}
 
   // The first tet (positively oriented) and, with an infinite vertex, the four
@@ -60,7 +67,7 @@ class Inserter {
     const std::uint32_t t0 = mesh_.create(a, b, c, d);
     last_ = t0;
     geo_.set_first_tet(a, b, c, d);
-    if (geo_.infinite() == kNoVertex) return;
+    if (geo_.infinite() == kNone) return;
     std::uint32_t tets[5] = {t0};
     for (int f = 0; f < 4; ++f) {
       std::uint32_t v[4] = {a, b, c, d};
@@ -76,6 +83,7 @@ class Inserter {
               mesh_.link(4 * tets[i] + f, 4 * tets[j] + g);
   }
 
+  // Inserts vertex p. On Outcome::duplicate, found() is the vertex equal to p.
   Outcome insert(std::uint32_t p) {
     std::uint32_t t;
     bool on_boundary = false;
@@ -83,23 +91,21 @@ class Inserter {
     const std::uint32_t* v = mesh_.verts(t);
     for (int i = 0; i < 4; ++i)
       if (v[i] != geo_.infinite() && geo_.point(v[i]) == geo_.point(p)) {
-        duplicate_of_ = v[i];
+        found_ = v[i];
         return Outcome::duplicate;
       }
     flip14(t, p);
-    ++stats_.flips14;
     if (!restore_delaunay(p, !on_boundary)) return Outcome::failed;
     ++stats_.inserted;
     return Outcome::inserted;
   }
 
-  const TetMesh& mesh() const { return mesh_; }
-  void release_adjacency() { mesh_.release_adjacency(); }
+  std::uint32_t found() const { return found_; }
+  TetMesh& mesh() { return mesh_; }
   Geometry<B>& geometry() { return geo_; }
   BuildStats& stats() { return stats_; }
   FailureKind failure() const { return failure_; }
   const std::string& failure_detail() const { return detail_; }
-  std::uint32_t duplicate_of() const { return duplicate_of_; }
   void reserve(std::size_t points) {
     mesh_.reserve(7 * points + 64);
     stack_.reserve(1024);
@@ -111,38 +117,45 @@ class Inserter {
     return static_cast<std::uint32_t>(rng_ >> 32);
   }
 
-  int orientation(const std::uint32_t* w) { return geo_.orientation(w[0], w[1], w[2], w[3]); }
-
   bool fail(FailureKind k, std::string detail) {
     failure_ = k;
     detail_ = std::move(detail);
     return false;
   }
 
-  // Visibility walk from the last tet touched, leaving each tet through a facet
-  // that separates it from p, chosen in random order so the walk cannot cycle
-  // (with exact predicates). Stops in a tet whose closure contains p; on_boundary
-  // tells whether p lies on its boundary (a facet, an edge or a vertex).
+  // Visibility walk from the last tet touched: leave each tet through a facet whose
+  // plane separates it from p, trying the facets in random order; stop in a tet
+  // whose closure holds p (on_boundary: p on one of its facets, edges or vertices).
+  // Infinite tets take part as the cones from O beyond their hull facets (see
+  // geometry.hpp), so the tets tile space and the walk can always go on.
+  // Termination: with exact signs a visibility walk on a Delaunay triangulation
+  // cannot cycle even in a fixed facet order (the in-front-of relation of a regular
+  // triangulation is acyclic, Edelsbrunner 1990), and on any triangulation the random
+  // order ends it with probability 1 (Devillers, Pion & Teillaud 2002). The mesh
+  // between insertions is Delaunay only among finite tets, and a non-robust backend
+  // voids both arguments, so the walk is also bounded: walk-cycle after
+  // 1000 + 2 tets steps.
   bool locate(std::uint32_t p, std::uint32_t& out, bool& on_boundary) {
     std::uint32_t t = last_;
     if (mesh_.dead(t))
       for (t = 0; mesh_.dead(t); ++t) {}
-    std::uint32_t entry = TetMesh::kNoFacet;
+    std::uint32_t entry = kNone;
     const std::uint64_t max_steps = 1000 + 2 * std::uint64_t(mesh_.live());
     for (std::uint64_t step = 0; step < max_steps; ++step) {
       const std::uint32_t r = next_random();
       bool moved = false;
       on_boundary = false;
+      const std::uint32_t* v = mesh_.verts(t);
       for (int k = 0; k < 4 && !moved; ++k) {
         const int f = (r + k) & 3;
         if (4 * t + f == entry) continue;
-        std::uint32_t w[4] = {mesh_.vertex(t, 0), mesh_.vertex(t, 1), mesh_.vertex(t, 2), mesh_.vertex(t, 3)};
+        std::uint32_t w[4] = {v[0], v[1], v[2], v[3]};
         w[f] = p;
-        const int s = orientation(w);
+        const int s = geo_.orientation(w);
         on_boundary |= s == 0;
         if (s < 0) {
           const std::uint32_t nb = mesh_.adj(4 * t + f);
-          if (nb == TetMesh::kNoFacet)
+          if (nb == kNone)
             return fail(FailureKind::outside_boundary, "point lies outside the enclosing tetrahedron");
           entry = nb;
           t = nb >> 2;
@@ -158,105 +171,102 @@ class Inserter {
     return fail(FailureKind::walk_cycle, "walk exceeded " + std::to_string(max_steps) + " steps");
   }
 
-  bool replace(const std::uint32_t* old_tets, int n_old, const std::array<std::uint32_t, 4>* new_tets,
-               int n_new) {
-    std::uint32_t created[4];
-    if (!retriangulate(mesh_, old_tets, n_old, new_tets, n_new, created))
-      return fail(FailureKind::inconsistent_adjacency, "facets of a flip did not match up");
-    for (int i = 0; i < n_new; ++i) stack_.push_back(created[i]);
-    last_ = created[0];
-    return true;
+  // The roles of one flip decision, named as in the header's diagrams: T = (p,a,b,c)
+  // is tet t with p at position i; Ta = (a,b,c,d) is tet ta across T's facet i, with
+  // d at position ja; in_ta[j] is the position in Ta of T's vertex j (j != i), and
+  // side[j] the orientation s_x of T with its vertex x = T[j] replaced by d
+  // (kUndecided until known).
+  struct Roles {
+    std::uint32_t t;
+    int i;
+    std::uint32_t ta;
+    int ja;
+    std::uint32_t d;
+    int in_ta[4];
+    int side[4];
+  };
+
+  // s_x, from the fused filter's answer or asked now. T with x replaced by d and Ta
+  // with x replaced by p are the same four points in orders of equal parity (T and Ta
+  // induce opposite orientations on their common facet), so the filter's signs for Ta
+  // are T's too.
+  int side(Roles& r, int j) {
+    if (r.side[j] == kUndecided) {
+      std::uint32_t w[4] = {mesh_.vertex(r.t, 0), mesh_.vertex(r.t, 1), mesh_.vertex(r.t, 2), mesh_.vertex(r.t, 3)};
+      w[j] = r.d;
+      r.side[j] = geo_.orientation(w);
+    }
+    return r.side[j];
   }
 
-  // T (tet t, p at position i) with the vertex at position j replaced by d.
-  static std::array<std::uint32_t, 4> swap_in(const std::uint32_t* tv, int j, std::uint32_t d) {
-    std::array<std::uint32_t, 4> w = {tv[0], tv[1], tv[2], tv[3]};
-    w[j] = d;
-    return w;
+  // The tet N = (p,y,z,d) on T's facet j (opposite x = T[j]), if it exists.
+  std::uint32_t third_tet(const Roles& r, int j) const {
+    const std::uint32_t f = mesh_.adj(4 * r.t + j);
+    return f != kNone && mesh_.apex(f) == r.d ? f >> 2 : kNone;
   }
 
-  // `clean`: p was strictly inside a tet, so every tet stays positively oriented
-  // until some orientation test returns 0. In a clean state an edge of abc with
-  // exactly three tets (T, Ta and (p,y,z,d)) pierces the triangle of its link, so
-  // the flip 3-2 is valid without a test, and no other flip can be (the five points
-  // span one 4-simplex; a valid mesh holds one side of its boundary). This is
-  // Ledoux's case 2 with the combinatorial test first; it saves most orientation
-  // tests. The first zero switches to the full case analysis for the rest of p.
+  // Pops facets opposite p until the stack is empty: every facet opposite p is then
+  // locally Delaunay. `clean`: p was strictly inside a tet, so every tet stays
+  // positively oriented until some side() returns 0. In a clean state an edge yz of
+  // abc with the three tets T, Ta and N = (p,y,z,d) pierces the triangle of its link,
+  // so the flip 3-2 is valid without a test, and no other flip can be (the five points
+  // span one 4-simplex; a valid mesh holds one side of its boundary): when the fused
+  // filter left sides undecided, that combinatorial test comes first and saves them.
   bool restore_delaunay(std::uint32_t p, bool clean) {
     const std::uint64_t max_flips = 1000 + 8 * std::uint64_t(mesh_.live());
     std::uint64_t flips = 0;
     while (!stack_.empty()) {
-      const std::uint32_t t = stack_.back();
+      const std::uint32_t facet = stack_.back();
       stack_.pop_back();
-      if (mesh_.dead(t)) continue;
-      const int i = mesh_.index_of(t, p);
-      if (i < 0) continue;
-      const std::uint32_t across = mesh_.adj(4 * t + i);
-      if (across == TetMesh::kNoFacet) continue;
-      const std::uint32_t ta = across >> 2;
-      if (!geo_.conflict(mesh_.verts(ta), p)) continue;
-      const std::uint32_t d = mesh_.vertex(ta, across & 3);
-      const std::uint32_t* tv = mesh_.verts(t);
+      Roles r;
+      r.t = facet >> 2, r.i = facet & 3;
+      if (mesh_.dead(r.t) || mesh_.vertex(r.t, r.i) != p) continue;  // gone, or its slot reused
+      const std::uint32_t across = mesh_.adj(facet);
+      if (across == kNone) continue;  // the outside of a bigtet
+      r.ta = across >> 2, r.ja = across & 3;
+      int ta_side[4];
+      if (!geo_.conflict(mesh_.verts(r.ta), p, ta_side)) continue;
       if (++flips > max_flips)
         return fail(FailureKind::flip_stuck, "more than " + std::to_string(max_flips) + " flips");
-
-      if (clean) {
-        int third = -1;
-        for (int j = 0; j < 4 && third < 0; ++j) {
-          if (j == i) continue;
-          const std::uint32_t side = mesh_.adj(4 * t + j);
-          if (side != TetMesh::kNoFacet && mesh_.vertex(side >> 2, side & 3) == d) third = j;
-        }
-        if (third >= 0) {
-          if (!flip32(t, i, third, ta, mesh_.adj(4 * t + third) >> 2, d)) return false;
-          continue;
-        }
-        bool positive = true;
-        for (int j = 0; j < 4 && positive && clean; ++j) {
-          if (j == i) continue;
-          const auto w = swap_in(tv, j, d);
-          const int s = orientation(w.data());
-          positive = s > 0;
-          clean = s != 0;
-        }
-        if (clean) {
-          if (positive && !flip23(t, i, ta, d)) return false;
-          continue;
-        }
+      r.d = mesh_.vertex(r.ta, r.ja);
+      bool undecided = false;
+      for (int j = 0; j < 4; ++j) {
+        if (j == r.i) continue;
+        r.in_ta[j] = mesh_.index_of(r.ta, mesh_.vertex(r.t, j));
+        if (r.in_ta[j] < 0) return fail(FailureKind::inconsistent_adjacency, "neighbour lacks a vertex of the facet");
+        r.side[j] = ta_side[r.in_ta[j]];
+        undecided |= r.side[j] == kUndecided;
       }
-
-      int neg = 0, zero = 0, which = -1;
-      for (int j = 0; j < 4 && neg + zero < 2; ++j) {
-        if (j == i) continue;
-        const auto w = swap_in(tv, j, d);
-        const int s = orientation(w.data());
-        if (s < 0) ++neg, which = j;
-        if (s == 0) ++zero, which = j;
-      }
-
-      if (neg == 0 && zero == 0) {
-        if (!flip23(t, i, ta, d)) return false;
-        continue;
-      }
-      if (neg + zero != 1) continue;
-      const std::uint32_t side = mesh_.adj(4 * t + which);
-      if (side != TetMesh::kNoFacet && mesh_.vertex(side >> 2, side & 3) == d) {
-        if (!flip32(t, i, which, ta, side >> 2, d)) return false;
-        continue;
-      }
-      if (zero == 1) {
-        if (orientation(tv) == 0) {
-          if (!flip23(t, i, ta, d)) return false;
-        } else if (!flip44(t, i, which, ta, d)) {
-          return false;
-        }
-      }
+      if (!flip_case(r, p, clean && undecided, clean)) return false;
     }
     return true;
   }
 
-  // Flip 1-4, written out: N_k is T with vertex k replaced by p. Its facet k is T's
-  // old facet k; its facet l (l != k) is N_l's facet k.
+  // The case analysis of the header for T and Ta in conflict; does the flip it finds.
+  bool flip_case(Roles& r, std::uint32_t p, bool combinatorial_first, bool& clean) {
+    if (combinatorial_first)
+      for (int j = 0; j < 4; ++j)
+        if (j != r.i)
+          if (const std::uint32_t n = third_tet(r, j); n != kNone) return flip32(r, j, n);
+    int neg = 0, zero = 0, x = -1;
+    for (int j = 0; j < 4 && neg + zero < 2; ++j) {
+      if (j == r.i) continue;
+      const int s = side(r, j);
+      if (s < 0) ++neg, x = j;
+      if (s == 0) ++zero, x = j;
+    }
+    if (zero) clean = false;
+    if (neg == 0 && zero == 0) return flip23(r);                                  // case 1
+    if (neg + zero != 1) return true;                                             // none now
+    if (const std::uint32_t n = third_tet(r, x); n != kNone) return flip32(r, x, n);  // case 2
+    if (zero == 0) return true;                                                   // none now
+    if (geo_.orientation(mesh_.verts(r.t)) == 0) return flip23(r);                // case 4
+    return flip44(r, x, p);                                                       // case 3
+  }
+
+  // Flip 1-4: tet t, whose closure holds p, becomes N_k = t with vertex k replaced by
+  // p (k = 0..3). N_k's facet k is t's old facet k; its facet l (l != k) is N_l's facet
+  // k. Pushes the four facets opposite p.
   void flip14(std::uint32_t t, std::uint32_t p) {
     std::uint32_t tv[4], outer[4], n[4];
     for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(t, k), outer[k] = mesh_.adj(4 * t + k);
@@ -269,30 +279,29 @@ class Inserter {
     for (int k = 0; k < 4; ++k) {
       mesh_.link(4 * n[k] + k, outer[k]);
       for (int l = k + 1; l < 4; ++l) mesh_.link(4 * n[k] + l, 4 * n[l] + k);
-      stack_.push_back(n[k]);
+      stack_.push_back(4 * n[k] + k);
     }
     last_ = n[0];
+    ++stats_.flips14;
   }
 
-  // Flip 2-3, written out: N_k (k != i) is T with its vertex at position k replaced
-  // by d. Its facet k is T's old facet k, its facet i is Ta's old facet opposite
-  // T[k], and its facet l (l != i, k) is N_l's facet k.
-  bool flip23(std::uint32_t t, int i, std::uint32_t ta, std::uint32_t d) {
+  // Flip 2-3 (cases 1 and 4): T and Ta become N_k = T with its vertex x = T[k]
+  // replaced by d, for k != i. N_k's facet k is T's old facet k, its facet i is Ta's
+  // old facet opposite x, and its facet l (l != i, k) is N_l's facet k. Pushes the
+  // three facets opposite p.
+  bool flip23(const Roles& r) {
+    const int i = r.i;
     std::uint32_t tv[4], outer_t[4], outer_ta[4];
-    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(t, k), outer_t[k] = mesh_.adj(4 * t + k);
-    for (int k = 0; k < 4; ++k) {
-      if (k == i) continue;
-      const int m = mesh_.index_of(ta, tv[k]);
-      if (m < 0) return fail(FailureKind::inconsistent_adjacency, "flip 2-3: neighbour lacks a vertex");
-      outer_ta[k] = mesh_.adj(4 * ta + m);
-    }
-    mesh_.destroy(t);
-    mesh_.destroy(ta);
+    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(r.t, k), outer_t[k] = mesh_.adj(4 * r.t + k);
+    for (int k = 0; k < 4; ++k)
+      if (k != i) outer_ta[k] = mesh_.adj(4 * r.ta + r.in_ta[k]);
+    mesh_.destroy(r.t);
+    mesh_.destroy(r.ta);
     std::uint32_t n[4];
     for (int k = 0; k < 4; ++k) {
       if (k == i) continue;
       std::uint32_t w[4] = {tv[0], tv[1], tv[2], tv[3]};
-      w[k] = d;
+      w[k] = r.d;
       n[k] = mesh_.create(w[0], w[1], w[2], w[3]);
     }
     for (int k = 0; k < 4; ++k) {
@@ -301,91 +310,104 @@ class Inserter {
       mesh_.link(4 * n[k] + i, outer_ta[k]);
       for (int l = k + 1; l < 4; ++l)
         if (l != i) mesh_.link(4 * n[k] + l, 4 * n[l] + k);
-      stack_.push_back(n[k]);
+      stack_.push_back(4 * n[k] + i);
     }
     last_ = n[(i + 1) & 3];
     ++stats_.flips23;
     return true;
   }
 
-  // Flip 3-2 on the edge yz of T opposite p and x (positions i and x): the tets T,
-  // Ta and N = (p,y,z,d) become M_y, M_z (T with y, resp. z, replaced by d). M_y's
-  // facet at y's position is T's old one, its facet i is Ta's facet opposite y,
-  // its facet x is N's facet opposite y, and its facet at z's position is M_z's
-  // facet at y's position.
-  bool flip32(std::uint32_t t, int i, int x, std::uint32_t ta, std::uint32_t third, std::uint32_t d) {
+  // Flip 3-2 (case 2) on the edge yz of T opposite p and x = T[x_pos]: T, Ta and
+  // N = (p,y,z,d) (tet n, across T's facet x_pos) become M_y, M_z (T with y, resp. z,
+  // replaced by d). M_y's facet at y's position is T's old one, its facet i is Ta's
+  // facet opposite y, its facet x_pos is N's facet opposite y, and its facet at z's
+  // position is M_z's facet at y's position. Pushes the two facets opposite p.
+  bool flip32(const Roles& r, int x_pos, std::uint32_t n) {
+    const int i = r.i;
     std::uint32_t tv[4];
-    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(t, k);
+    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(r.t, k);
     int yz[2], q = 0;
     for (int k = 0; k < 4; ++k)
-      if (k != i && k != x) yz[q++] = k;
+      if (k != i && k != x_pos) yz[q++] = k;
     std::uint32_t outer_t[2], outer_ta[2], outer_n[2];
-    for (int r = 0; r < 2; ++r) {
-      const int k = yz[r];
-      const int ma = mesh_.index_of(ta, tv[k]), mn = mesh_.index_of(third, tv[k]);
-      if (ma < 0 || mn < 0) return fail(FailureKind::inconsistent_adjacency, "flip 3-2: neighbour lacks a vertex");
-      outer_t[r] = mesh_.adj(4 * t + k);
-      outer_ta[r] = mesh_.adj(4 * ta + ma);
-      outer_n[r] = mesh_.adj(4 * third + mn);
+    for (int m = 0; m < 2; ++m) {
+      const int k = yz[m];
+      const int in_n = mesh_.index_of(n, tv[k]);
+      if (in_n < 0) return fail(FailureKind::inconsistent_adjacency, "flip 3-2: neighbour lacks a vertex");
+      outer_t[m] = mesh_.adj(4 * r.t + k);
+      outer_ta[m] = mesh_.adj(4 * r.ta + r.in_ta[k]);
+      outer_n[m] = mesh_.adj(4 * n + in_n);
     }
-    mesh_.destroy(t);
-    mesh_.destroy(ta);
-    mesh_.destroy(third);
-    std::uint32_t m[2];
-    for (int r = 0; r < 2; ++r) {
+    mesh_.destroy(r.t);
+    mesh_.destroy(r.ta);
+    mesh_.destroy(n);
+    std::uint32_t made[2];
+    for (int m = 0; m < 2; ++m) {
       std::uint32_t w[4] = {tv[0], tv[1], tv[2], tv[3]};
-      w[yz[r]] = d;
-      m[r] = mesh_.create(w[0], w[1], w[2], w[3]);
+      w[yz[m]] = r.d;
+      made[m] = mesh_.create(w[0], w[1], w[2], w[3]);
     }
-    for (int r = 0; r < 2; ++r) {
-      mesh_.link(4 * m[r] + yz[r], outer_t[r]);
-      mesh_.link(4 * m[r] + i, outer_ta[r]);
-      mesh_.link(4 * m[r] + x, outer_n[r]);
-      stack_.push_back(m[r]);
+    for (int m = 0; m < 2; ++m) {
+      mesh_.link(4 * made[m] + yz[m], outer_t[m]);
+      mesh_.link(4 * made[m] + i, outer_ta[m]);
+      mesh_.link(4 * made[m] + x_pos, outer_n[m]);
+      stack_.push_back(4 * made[m] + i);
     }
-    mesh_.link(4 * m[0] + yz[1], 4 * m[1] + yz[0]);
-    last_ = m[0];
+    mesh_.link(4 * made[0] + yz[1], 4 * made[1] + yz[0]);
+    last_ = made[0];
     ++stats_.flips32;
     return true;
   }
 
-  // p, d and the edge yz of T (opposite p and x) are coplanar. If yz has exactly the
-  // four tets T, Ta, N2 = (y,z,d,e), N1 = (p,y,z,e), swap the octahedron's diagonal
-  // yz for pd. Returns false only on a broken mesh; true also when it does nothing.
-  bool flip44(std::uint32_t t, int i, int x, std::uint32_t ta, std::uint32_t d) {
-    const std::uint32_t* tv = mesh_.verts(t);
-    const std::uint32_t n1f = mesh_.adj(4 * t + x);
-    const int xa = mesh_.index_of(ta, tv[x]);
-    if (n1f == TetMesh::kNoFacet || xa < 0) return true;
-    const std::uint32_t n2f = mesh_.adj(4 * ta + xa);
-    if (n2f == TetMesh::kNoFacet) return true;
+  // Flip 4-4 (case 3): p, d and the edge yz of T (opposite p and x = T[x_pos]) are
+  // coplanar, T is not flat. If yz has exactly the four tets T, Ta, N2 = (y,z,d,e),
+  // N1 = (p,y,z,e) and the two new tets on N1's side are positive, swap the
+  // octahedron's diagonal yz for pd (retriangulate() glues the four new tets).
+  // Otherwise does nothing (a later flip removes T). Returns false only on a broken
+  // mesh. Pushes the new facets opposite p.
+  bool flip44(const Roles& r, int x_pos, std::uint32_t p) {
+    const std::uint32_t* tv = mesh_.verts(r.t);
+    const std::uint32_t n1f = mesh_.adj(4 * r.t + x_pos);
+    if (n1f == kNone) return true;
+    const std::uint32_t n2f = mesh_.adj(4 * r.ta + r.in_ta[x_pos]);
+    if (n2f == kNone) return true;
     const std::uint32_t n1 = n1f >> 2, n2 = n2f >> 2;
-    const std::uint32_t e = mesh_.vertex(n1, n1f & 3);
-    if (mesh_.vertex(n2, n2f & 3) != e) return true;
+    const std::uint32_t e = mesh_.apex(n1f);
+    if (mesh_.apex(n2f) != e) return true;
     const std::uint32_t* n1v = mesh_.verts(n1);
-    std::array<std::uint32_t, 4> nt[4];
+    // The new tets: T and N1 with y, resp. z, replaced by d.
+    std::array<std::uint32_t, 4> made[4];
     int k = 0;
+    const auto with_d = [&](const std::uint32_t* v, int j) {
+      made[k] = {v[0], v[1], v[2], v[3]};
+      made[k++][j] = r.d;
+    };
     for (int j = 0; j < 4; ++j)
-      if (j != i && j != x) nt[k++] = swap_in(tv, j, d);
+      if (j != r.i && j != x_pos) with_d(tv, j);
     for (int j = 0; j < 4; ++j)
-      if (n1v[j] == tv[(i + 1) & 3] || n1v[j] == tv[(i + 2) & 3] || n1v[j] == tv[(i + 3) & 3])
-        if (n1v[j] != tv[x]) nt[k++] = swap_in(n1v, j, d);
+      if (n1v[j] == tv[(r.i + 1) & 3] || n1v[j] == tv[(r.i + 2) & 3] || n1v[j] == tv[(r.i + 3) & 3])
+        if (n1v[j] != tv[x_pos] && k < 4) with_d(n1v, j);
     if (k != 4) return true;
-    if (orientation(nt[2].data()) <= 0 || orientation(nt[3].data()) <= 0) return true;
-    const std::uint32_t old[4] = {t, ta, n2, n1};
+    if (geo_.orientation(made[2].data()) <= 0 || geo_.orientation(made[3].data()) <= 0) return true;
+    const std::uint32_t old[4] = {r.t, r.ta, n2, n1};
+    std::uint32_t created[4];
+    if (!retriangulate(mesh_, old, 4, made, 4, created))
+      return fail(FailureKind::inconsistent_adjacency, "flip 4-4: facets did not match up");
+    for (std::uint32_t c : created) stack_.push_back(4 * c + mesh_.index_of(c, p));
+    last_ = created[0];
     ++stats_.flips44;
-    return replace(old, 4, nt, 4);
+    return true;
   }
 
   TetMesh mesh_;
   Geometry<B> geo_;
   std::uint64_t rng_;
   std::uint32_t last_ = 0;
-  IdStack stack_;
+  IdStack stack_;  // facets 4t + i with p at position i of t
   BuildStats stats_;
   FailureKind failure_ = FailureKind::walk_cycle;
   std::string detail_;
-  std::uint32_t duplicate_of_ = 0;
+  std::uint32_t found_ = kNone;
 };
 
 }  // namespace dtlab

@@ -1,6 +1,8 @@
 #pragma once
-// One primitive for every flip: replace a few tets by others covering the same
-// region, and glue the new ones to each other and to the outside.
+// Replace a few tets by others covering the same region, and glue the new ones to
+// each other and to the outside, matching facets by their vertices. The inserter
+// uses it for the rare flip 4-4 only (the 1-4, 2-3 and 3-2 flips write their
+// adjacency out); start() uses facet_key too.
 //
 // The outer facets of the old tets (those whose neighbour is not old) keep their
 // outside neighbours; each new facet either matches one of them (same three
@@ -10,6 +12,7 @@
 #include <array>
 #include <cstdint>
 
+#include "kernel/ids.hpp"
 #include "kernel/tet_mesh.hpp"
 
 namespace dtlab {
@@ -42,7 +45,7 @@ inline bool retriangulate(TetMesh& m, const std::uint32_t* old_tets, int n_old,
     for (int f = 0; f < 4; ++f) {
       const std::uint32_t nb = m.adj(4 * t + f);
       bool internal = false;
-      if (nb != TetMesh::kNoFacet)
+      if (nb != kNone)
         for (int j = 0; j < n_old; ++j) internal |= (nb >> 2) == old_tets[j];
       if (internal) continue;
       outer_key[n_outer] = facet_key(m.verts(t), f);

@@ -88,17 +88,6 @@ std::uint64_t keyed(std::uint64_t key, std::uint32_t index) { return key << 32 |
 
 }  // namespace
 
-void hilbert_sort(std::span<const Point3> points, std::span<std::uint32_t> indices) {
-  if (indices.size() < 2) return;
-  std::vector<Point3> subset(indices.size());
-  for (std::size_t k = 0; k < indices.size(); ++k) subset[k] = points[indices[k]];
-  const HilbertGrid grid(subset);
-  std::vector<std::uint64_t> keys(indices.size());
-  for (std::size_t k = 0; k < indices.size(); ++k) keys[k] = keyed(grid.key(subset[k]), indices[k]);
-  std::sort(keys.begin(), keys.end());
-  for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = static_cast<std::uint32_t>(keys[k]);
-}
-
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed) {
   // Keys are computed in input order (sequential reads of the points), then shuffled
   // together with their indices: no random access into the point array.

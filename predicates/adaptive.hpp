@@ -122,12 +122,57 @@ inline int adaptive_insphere(const Point3& a, const Point3& b, const Point3& c, 
                              const Point3& e, AdaptiveStats* stats) {
   using namespace adaptive_detail;
   // naive.hpp's evaluation order (the bound above counts its roundings).
-  const auto [det, lift] = insphere_eval(a, b, c, d, e);
+  const InsphereEval v = insphere_eval(a, b, c, d, e);
+  const double det = v.det, lift = v.max_lift;
   const double lift2 = lift * lift;
   const double bound = kIspSemiStaticSquared * (lift2 * lift2 * lift);
   if ((lift >= kIspLiftLow) & (det * det > bound))
     return counted(stats, true, AdaptiveStage::kSemiStatic, det > 0 ? 1 : -1);
   return adaptive_insphere_stages(a, b, c, d, e, stats);
+}
+
+// The insphere filter of adaptive_insphere, fused with the orientation tests a flip
+// classification asks next. It evaluates insphere(a,b,c,d,e) once and returns the
+// signs that semi-static bounds decide, kUndecided for the others (the caller then
+// asks the full predicates):
+//   insphere  as adaptive_insphere's filter;
+//   side[k]   orient3d(a,b,c,d with its k-th point replaced by e): insphere_eval's
+//             minor[k]. Each minor has orient3d_value's rounding count along every
+//             monomial (3 differences, a 2x2 minor, a product, two additions), so the
+//             orient3d bound above holds: error <= 43 eps mx my mz over its rows'
+//             rounded differences. Each rounded difference is at most sqrt of the
+//             exact lift of its row's rounded differences, which exceeds the computed
+//             L by at most a factor (1 - eps)^-3 (a square and two additions):
+//             mx my mz <= L^1.5 (1 - eps)^-4.5. The test |minor| > 44 eps L^1.5 is
+//             therefore safe, with a relative slack of 1/43 for the roundings of the
+//             test itself, evaluated squared: minor^2 > (44 eps)^2 L^3 (5 roundings).
+//             Range: L >= 2^-180 as for insphere; then an underflowing product errs by
+//             <= 2^-1075 times at most a factor sqrt(L), far inside the slack. If L^3
+//             overflows the test is false; a NaN minor fails it; a minor^2 overflowing
+//             alone means |minor| > 2^512 > L^1.5: correctly decided.
+inline constexpr int kUndecided = 2;
+struct InsphereSides {
+  int insphere;
+  int side[4];
+};
+
+namespace adaptive_detail {
+inline constexpr double kSideSemiStaticSquared = (44 * kEps) * (44 * kEps);
+}  // namespace adaptive_detail
+
+inline InsphereSides adaptive_insphere_sides(const Point3& a, const Point3& b, const Point3& c,
+                                             const Point3& d, const Point3& e, AdaptiveStats* stats) {
+  using namespace adaptive_detail;
+  const InsphereEval v = insphere_eval(a, b, c, d, e);
+  InsphereSides r{kUndecided, {kUndecided, kUndecided, kUndecided, kUndecided}};
+  if (!(v.max_lift >= kIspLiftLow)) return r;
+  const double lift2 = v.max_lift * v.max_lift;
+  if (v.det * v.det > kIspSemiStaticSquared * (lift2 * lift2 * v.max_lift))
+    r.insphere = counted(stats, true, AdaptiveStage::kSemiStatic, v.det > 0 ? 1 : -1);
+  const double side_bound = kSideSemiStaticSquared * (lift2 * v.max_lift);
+  for (int k = 0; k < 4; ++k)
+    if (v.minor[k] * v.minor[k] > side_bound) r.side[k] = v.minor[k] > 0 ? 1 : -1;
+  return r;
 }
 
 struct AdaptivePredicates {
@@ -142,6 +187,10 @@ struct AdaptivePredicates {
   int insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                const Point3& e) const {
     return adaptive_insphere(a, b, c, d, e, stats);
+  }
+  InsphereSides insphere_sides(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                               const Point3& e) const {
+    return adaptive_insphere_sides(a, b, c, d, e, stats);
   }
 };
 

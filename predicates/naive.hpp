@@ -18,13 +18,18 @@ inline double orient3d_value(const Point3& a, const Point3& b, const Point3& c, 
 }
 
 // The insphere determinant and the largest lift |q - e|^2 of a,b,c,d (which the
-// adaptive backend's semi-static filter bounds its error with).
+// adaptive backend's semi-static filter bounds its error with). On the way the
+// expansion along the lift column forms the four orientation minors: minor[k] is
+// orient3d(a,b,c,d with its k-th point replaced by e), evaluated with orient3d_value's
+// rounding count (the kernel's flip classification reads them). Always inlined: the
+// callers are hot loops, and a call would return the struct through memory.
 struct InsphereEval {
   double det;
   double max_lift;
+  double minor[4];
 };
 
-inline InsphereEval insphere_eval(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+[[gnu::always_inline]] inline InsphereEval insphere_eval(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                                   const Point3& e) {
   const double aex = a.x - e.x, aey = a.y - e.y, aez = a.z - e.z;
   const double bex = b.x - e.x, bey = b.y - e.y, bez = b.z - e.z;
@@ -43,7 +48,7 @@ inline InsphereEval insphere_eval(const Point3& a, const Point3& b, const Point3
   const double dlift = dex * dex + dey * dey + dez * dez;
   const double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
   const double max_lift = std::max(std::max(alift, blift), std::max(clift, dlift));
-  return {det, max_lift};
+  return {det, max_lift, {-bcd, cda, -dab, abc}};
 }
 
 inline double insphere_value(const Point3& a, const Point3& b, const Point3& c, const Point3& d,

@@ -66,6 +66,16 @@ struct Perturbed {
     }
     return 0;  // a,b,c,d coplanar: no perturbation decides (the caller never asks)
   }
+
+  // The fused filter of the base (adaptive.hpp), unchanged: a sign it decides is
+  // nonzero, so the perturbation would not change it; an undecided insphere goes to
+  // insphere() above.
+  auto insphere_sides(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                      const Point3& e) const
+    requires requires(const B& x, const Point3& q) { x.insphere_sides(q, q, q, q, q); }
+  {
+    return base.insphere_sides(a, b, c, d, e);
+  }
 };
 
 }  // namespace dtlab

@@ -135,6 +135,25 @@ TEST_CASE("duplicates are not inserted, and are reported by index") {
   CHECK(test::validate(r) == "");
 }
 
+TEST_CASE("with any insertion order the first occurrence in input order is the vertex") {
+  // Copies of a point are reported as duplicates of its first occurrence, as CGAL and
+  // TetGen do, even when BRIO inserts a later copy first.
+  std::vector<Point3> pts = uniform(400, 4);
+  for (int k = 0; k < 400; k += 3) pts.push_back(pts[k]);
+  for (int k = 0; k < 400; k += 7) pts.push_back(pts[k]);
+  std::vector<std::uint32_t> expected;
+  for (std::uint32_t i = 400; i < pts.size(); ++i) expected.push_back(i);
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    BuildOptions opt;
+    opt.seed = seed;
+    auto r = build_delaunay(pts, kExactSos, opt);
+    REQUIRE_FALSE(r.failure);
+    INFO("seed " << seed);
+    CHECK(r.duplicates == expected);
+    CHECK(test::validate(r) == "");
+  }
+}
+
 TEST_CASE("lower-dimensional inputs are a named failure, not a crash") {
   auto fails = [](std::vector<Point3> pts) {
     auto r = build_delaunay(pts, kExactSos);

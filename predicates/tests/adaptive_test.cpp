@@ -137,3 +137,34 @@ TEST_CASE("adaptive and exact: non-finite input reaching the exact stage is refu
   CHECK_THROWS_AS(ExactPredicates{}.orient3d(o, x, y, inf), std::domain_error);
   CHECK_THROWS_AS(AdaptivePredicates{}.insphere(o, x, y, inf, n), std::domain_error);
 }
+
+TEST_CASE("fused insphere-and-sides filter: every sign it decides is exact", "[adaptive]") {
+  const ExactPredicates ex;
+  const auto check = [&](const Quint& q, int& decided_sides, int& bad) {
+    const InsphereSides r = adaptive_insphere_sides(q[0], q[1], q[2], q[3], q[4], nullptr);
+    if (r.insphere != kUndecided) bad += r.insphere != ex.insphere(q[0], q[1], q[2], q[3], q[4]);
+    for (int k = 0; k < 4; ++k) {
+      if (r.side[k] == kUndecided) continue;
+      ++decided_sides;
+      Quad o = {q[0], q[1], q[2], q[3]};
+      o[k] = q[4];
+      bad += r.side[k] != ex.orient3d(o[0], o[1], o[2], o[3]);
+    }
+  };
+  int decided = 0, bad = 0;
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 20000; ++i) {
+    Quint q;
+    for (auto& p : q) p = random_point(rng);
+    check(q, decided, bad);
+  }
+  CHECK(bad == 0);
+  CHECK(decided > 4 * 20000 * 9 / 10);  // random input: the filter decides nearly all
+  for (const Quint& q : hard_insphere_inputs(5, 3000)) check(q, decided, bad);
+  for (const Quad& o : hard_orient_inputs(6, 3000)) {
+    // Near-coplanar quads: each becomes an insphere input whose side 3 is orient3d(o).
+    const Point3 far{o[0].x + 1, o[0].y - 2, o[0].z + 3};
+    check({o[0], o[1], o[2], far, o[3]}, decided, bad);
+  }
+  CHECK(bad == 0);
+}
