@@ -192,6 +192,7 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
       run.verdict = *v;
       return run;
     }
+    run.message.clear();  // TetGen prints "Opening in.node." even with -Q
     PeerAnswer a;
     a.seconds = c.seconds;
     const std::string ele = dir.file("in.1.ele");

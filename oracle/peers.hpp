@@ -30,7 +30,7 @@ struct PeerOptions {
   double timeout_s = 600;
   std::uint64_t memory_bytes = 0;  // 0: half of the machine's memory
   std::string tetgen = "tetgen";
-  std::string python = "python3";
+  std::string python = "/usr/bin/python3";  // Debian's, with python3-scipy
   std::string peer_binary;         // the helper for every helper peer (tests); "": $DTLAB_PEER,
                                    // $DTLAB_PEER_GMSH (gmsh peers), else those built with dtlab
   bool check = true;               // judge the answer with the exact checker

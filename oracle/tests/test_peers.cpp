@@ -6,7 +6,9 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include "oracle/peer_adapter.hpp"
@@ -46,38 +48,49 @@ std::string script(const TempDir& dir, const std::string& body) {
 
 }  // namespace
 
-TEST_CASE("every installed peer is proven Delaunay on uniform points, duplicates included", "[oracle][peers]") {
-  std::vector<Point3> points = test::uniform_points(300, 11);
-  points.push_back(points[5]);   // duplicates: adapters keep or merge copies differently
-  points.push_back(points[77]);
+TEST_CASE("every installed peer is proven Delaunay on uniform points", "[oracle][peers]") {
+  const std::vector<Point3> points = test::uniform_points(300, 11);
   for (const std::string& name : peer_names()) {
-    if (name == "dtlab:naive" || name == "dtlab:epsilon") continue;  // not robust; judged below
+    // gmsh's default kernel leaves out hull tets even here (measured, gmsh 4.8.4):
+    // its adapter is tested below on tets it does return.
+    if (name == "gmsh") continue;
     INFO(name);
     const auto r = run_installed(name, points);
     if (!r) continue;
     INFO(describe(*r));
     CHECK(r->verdict == Verdict::delaunay);
     CHECK(r->extra_tets == 0);
+    CHECK(r->collapsed_tets == 0);
     CHECK(r->peak_rss_bytes > 0);
     CHECK(r->wall_seconds >= r->seconds * 0.5);
   }
 }
 
+TEST_CASE("duplicate copies are normalised for every peer that merges or keeps one copy", "[oracle][peers]") {
+  std::vector<Point3> points = test::uniform_points(300, 11);
+  points.push_back(points[5]);  // peers keep the first, the last, or any copy
+  points.push_back(points[77]);
+  // Left out: gmsh (hull tets, above) and cgal-inexact, which keeps both copies of a
+  // duplicated point as two vertices (measured, CGAL 5.5.1): its answer is invalid.
+  for (const std::string name : {"cgal", "tetgen", "tetgen-flip", "qhull", "qhull-qj", "scipy", "gmsh-hxt",
+                                 "dtlab:adaptive", "dtlab:exact"}) {
+    INFO(name);
+    const auto r = run_installed(name, points);
+    if (!r) continue;
+    INFO(describe(*r));
+    CHECK(r->verdict == Verdict::delaunay);
+    CHECK(r->unused.size() == 2);
+  }
+}
+
 TEST_CASE("robust peers are proven Delaunay on cospherical and lattice inputs", "[oracle][peers]") {
   for (const auto& points : {test::sphere_points(50), test::lattice_points(4)}) {
-    for (const std::string name : {"cgal", "tetgen", "tetgen-flip", "dtlab:exact", "dtlab:adaptive", "qhull-qj"}) {
+    for (const std::string name : {"cgal", "tetgen", "tetgen-flip", "dtlab:exact", "dtlab:adaptive"}) {
       INFO(name << " on " << points.size() << " points");
       const auto r = run_installed(name, points);
       if (!r) continue;
       INFO(describe(*r));
-      if (std::string(name) == "qhull-qj") {
-        // Joggled points: its DT is of moved points, judged against the input; a
-        // proven valid triangulation at least (non-Delaunay ties are allowed to differ).
-        CHECK((r->verdict == Verdict::delaunay || r->verdict == Verdict::triangulation ||
-               r->verdict == Verdict::flat_tets));
-      } else {
-        CHECK(r->verdict == Verdict::delaunay);
-      }
+      CHECK(r->verdict == Verdict::delaunay);
     }
   }
 }
@@ -153,14 +166,31 @@ TEST_CASE("the adapter maps extra vertices and duplicate copies onto input point
 }
 
 TEST_CASE("gmsh's 1-based node tags are made 0-based", "[oracle][peers]") {
-  // A single tet: the only right answer uses indices 0..3, none equal to n.
+  // A tet with one point inside: the DT is the four tets around that point. gmsh-hxt
+  // returns all four; gmsh's default kernel leaves out hull tets (measured with 4.8.4),
+  // so for it the test is that every tet it does return is one of the four.
   const std::vector<Point3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.2, 0.2, 0.2}};
+  const auto truth = run_installed("cgal", p);
+  REQUIRE(truth);
+  REQUIRE(truth->mesh);
+  std::set<std::array<std::uint32_t, 4>> dt;
+  for (Tet t : truth->mesh->tets) {
+    std::sort(t.begin(), t.end());
+    dt.insert(t);
+  }
+  REQUIRE(dt.size() == 4);
   for (const std::string name : {"gmsh", "gmsh-hxt"}) {
     const auto r = run_installed(name, p);
     if (!r) continue;
     INFO(describe(*r));
     CHECK(r->extra_tets == 0);
-    CHECK(r->verdict == Verdict::delaunay);
+    REQUIRE(r->mesh);
+    CHECK(!r->mesh->tets.empty());
+    for (Tet t : r->mesh->tets) {
+      std::sort(t.begin(), t.end());
+      CHECK(dt.count(t) == 1);
+    }
+    if (name == std::string("gmsh-hxt")) CHECK(r->verdict == Verdict::delaunay);
   }
 }
 
