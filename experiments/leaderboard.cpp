@@ -110,13 +110,13 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), what.c_str());
   };
   const std::vector<std::string> peers = expand_peer_names(options.peers);
-  const std::size_t cases = options.cases ? options.cases : options.quick ? 3 : 16;
+  const std::size_t cases = options.cases ? options.cases : options.quick ? 2 : 16;
   const std::vector<std::size_t> family_sizes =
       options.quick ? std::vector<std::size_t>{48} : std::vector<std::size_t>{48, 1000};
   const std::vector<std::size_t> mesh_sizes =
       options.quick ? std::vector<std::size_t>{3000} : std::vector<std::size_t>{3000, 50000};
   std::vector<std::size_t> speed_sizes =
-      options.quick ? std::vector<std::size_t>{100000} : std::vector<std::size_t>{100000, 1000000};
+      options.quick ? std::vector<std::size_t>{20000} : std::vector<std::size_t>{100000, 1000000};
   if (options.speed_n) speed_sizes = {options.speed_n};
   PeerOptions po;
   po.timeout_s = options.timeout_s > 0 ? options.timeout_s : options.quick ? 20 : 120;
@@ -185,7 +185,7 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
       auto& slot = first_failure[{c.peer, c.source}];
       if (!slot || c.n < slot->n) slot = &c;
     }
-  const std::size_t budget = options.quick ? 40 : 300;
+  const std::size_t budget = options.quick ? 16 : 300;
   for (auto& [key, c] : first_failure) {
     const PointSource* src = nullptr;
     for (const auto& s : families)

@@ -43,9 +43,12 @@ bool PeerCase::failed() const { return peer_failed(run.verdict, lower_dimensiona
 void shrink_and_save(PeerCase& c, const std::vector<Point3>& points, const PeerOptions& options,
                      std::size_t budget, const std::string& out_dir, const std::string& original_command) {
   const Verdict target = c.run.verdict;
-  PeerOptions quiet = options;
+  const PeerOptions& quiet = options;
+  // A failure on a 3D input must stay 3D (else any peer "fails" a flat subset by
+  // refusing it); one on a flat input may shrink within flat inputs.
+  const bool flat = fuzz::is_lower_dimensional(points);
   const auto fails = [&](const std::vector<Point3>& candidate) {
-    if (fuzz::is_lower_dimensional(candidate)) return false;
+    if (!flat && fuzz::is_lower_dimensional(candidate)) return false;
     return run_peer(c.peer, candidate, quiet).verdict == target;
   };
   const fuzz::ShrinkResult s = fuzz::shrink_points(points, fails, budget);

@@ -58,8 +58,8 @@ struct PeerCampaignOptions {
 
 std::vector<PeerCase> run_peer_campaign(const PeerCampaignOptions& options);
 
-// Shrinks `points` (on which `peer` gave `verdict`) to a smallest subset with the same
-// verdict that still spans a volume, and writes <out_dir>/corpus/<stem>.node + .json;
+// Shrinks `points` (on which c.peer gave c.run.verdict) to a smallest subset with the
+// same verdict that still spans a volume (if `points` did), and writes <out_dir>/corpus/<stem>.node + .json;
 // fills c.corpus_file, c.shrunk_points, c.shrunk_minimal.
 void shrink_and_save(PeerCase& c, const std::vector<Point3>& points, const PeerOptions& options,
                      std::size_t budget, const std::string& out_dir, const std::string& original_command);
