@@ -7,7 +7,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdio>
+#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -40,6 +43,26 @@ namespace {
   const int err = errno;
   [[maybe_unused]] ssize_t w = write(error_fd, &err, sizeof err);
   _exit(127);
+}
+
+// The peak resident memory of the program the child now runs (VmHWM of its own
+// address space, from /proc), 0 when it cannot be read (the child has exited).
+// rusage's ru_maxrss cannot serve: it includes the parent's pages the child held
+// between fork and exec.
+std::uint64_t vm_hwm_bytes(pid_t pid) {
+  char path[64];
+  std::snprintf(path, sizeof path, "/proc/%d/status", static_cast<int>(pid));
+  std::FILE* f = std::fopen(path, "r");
+  if (!f) return 0;
+  char line[256];
+  std::uint64_t kb = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, "VmHWM:", 6) == 0) {
+      kb = std::strtoull(line + 6, nullptr, 10);
+      break;
+    }
+  std::fclose(f);
+  return kb * 1024;
 }
 
 }  // namespace
@@ -80,6 +103,8 @@ ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& l
   rusage usage{};
   bool timed_out = false;
   for (;;) {
+    // Sampled before each wait: the last sample is at most one poll interval old.
+    if (got != static_cast<ssize_t>(sizeof exec_errno)) r.peak_rss_bytes = std::max(r.peak_rss_bytes, vm_hwm_bytes(pid));
     const pid_t w = wait4(pid, &status, WNOHANG, &usage);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (w == pid) break;
@@ -98,7 +123,6 @@ ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& l
   }
   // The group may hold grandchildren that outlived their parent.
   kill(-pid, SIGKILL);
-  r.peak_rss_bytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
   if (got == static_cast<ssize_t>(sizeof exec_errno)) {
     r.status = ChildStatus::not_started;
     r.message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);

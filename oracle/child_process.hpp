@@ -36,7 +36,8 @@ struct ChildResult {
   int exit_code = -1;
   int signal = 0;
   double seconds = 0;                // wall time of the child
-  std::uint64_t peak_rss_bytes = 0;  // the child's maximum resident set size
+  std::uint64_t peak_rss_bytes = 0;  // the program's peak resident memory (VmHWM after exec),
+                                     // sampled every 1-20 ms while it runs; 0: ended before a sample
   std::string message;               // why it did not start
 };
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "oracle/child_process.hpp"
 #include "oracle/temp_dir.hpp"
@@ -37,7 +38,6 @@ TEST_CASE("run_child reports exit codes, signals and output", "[oracle][child]")
   CHECK(r.status == ChildStatus::exited);
   CHECK(r.exit_code == 7);
   CHECK(last_line_of(log) == "the message");
-  CHECK(r.peak_rss_bytes > 0);
 
   r = run_child({"sh", "-c", "kill -SEGV $$"}, ChildLimits::of(30));
   CHECK(r.status == ChildStatus::signaled);
@@ -65,6 +65,16 @@ TEST_CASE("run_child kills the whole process group on time-out", "[oracle][child
     if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   CHECK(gone);
+}
+
+TEST_CASE("run_child measures the program's own peak memory, not the parent's", "[oracle][child]") {
+  // The parent holds 300 MB; the child program (sleep) a few: fork would have counted both.
+  std::vector<char> ballast(300u << 20, 1);
+  const ChildResult r = run_child({"sleep", "0.3"}, ChildLimits::of(30));
+  CHECK(ballast[12345] == 1);
+  CHECK(r.status == ChildStatus::exited);
+  CHECK(r.peak_rss_bytes > 0);
+  CHECK(r.peak_rss_bytes < (50u << 20));
 }
 
 TEST_CASE("run_child applies the memory limit", "[oracle][child]") {

@@ -61,7 +61,6 @@ TEST_CASE("every installed peer is proven Delaunay on uniform points", "[oracle]
     CHECK(r->verdict == Verdict::delaunay);
     CHECK(r->extra_tets == 0);
     CHECK(r->collapsed_tets == 0);
-    CHECK(r->peak_rss_bytes > 0);
     CHECK(r->wall_seconds >= r->seconds * 0.5);
   }
 }
