@@ -12,6 +12,7 @@
 #include "cli/number_options.hpp"
 #include "cli/stdout_to_stderr.hpp"
 #include "experiments/benchmark.hpp"
+#include "experiments/leaderboard.hpp"
 #include "experiments/thesis_failures.hpp"
 
 namespace dtlab::cli {
@@ -99,6 +100,41 @@ void add_experiment_command(CLI::App& app, int& rc) {
     if (*bench_no_figures) args.push_back("--no-figures");
     bench->command_line = command_line(b->get_name(), args);
     rc = run_experiment(*bench_json, bench->out, [&] { return experiments::run_benchmark(*bench).exit_code; });
+  });
+  auto board = std::make_shared<experiments::LeaderboardOptions>();
+  auto board_json = std::make_shared<bool>(false);
+  auto board_no_meshes = std::make_shared<bool>(false);
+  CLI::App* l = sub->add_subcommand(
+      "leaderboard", "judge the field's Delaunay codes (CGAL, TetGen, qhull, scipy, gmsh, dtlab) with the exact checker");
+  l->add_option("--out", board->out, "report folder")->capture_default_str();
+  l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 2*10^4, short shrinks");
+  l->add_option("--peers", board->peers, "peers to judge (default all)")->delimiter(',');
+  l->add_option("--families", board->families, "fuzz families (default all)")->delimiter(',');
+  l->add_option("--cases", board->cases, "seeds per (source, size); default 2 quick, 16 otherwise");
+  l->add_option("--seed", board->seed, "experiment seed")->capture_default_str();
+  l->add_option("--jobs", board->jobs, "peer runs at a time")->check(CLI::PositiveNumber)->capture_default_str();
+  l->add_option("--timeout", board->timeout_s, "seconds per peer run (default 20 quick, 120 otherwise)");
+  l->add_option("--speed-n", board->speed_n, "one size for the speed table (default 10^5 and 10^6; 2*10^4 with --quick)");
+  l->add_flag("--no-meshes", *board_no_meshes, "leave out the CGAL demo mesh samples");
+  l->add_option("--cgal-data", board->cgal_data, "CGAL demo data.tar.gz (default: libcgal-demo's)");
+  l->add_flag("--json", *board_json, "print a JSON summary (the report's headline facts) on stdout");
+  l->callback([board, board_json, board_no_meshes, l, &rc] {
+    board->meshes = !*board_no_meshes;
+    board->progress = isatty(2);
+    std::vector<std::string> args = {"--out", board->out.string(), "--seed", std::to_string(board->seed)};
+    if (board->quick) args.push_back("--quick");
+    if (board->cases) args.insert(args.end(), {"--cases", std::to_string(board->cases)});
+    if (board->speed_n) args.insert(args.end(), {"--speed-n", std::to_string(board->speed_n)});
+    if (*board_no_meshes) args.push_back("--no-meshes");
+    const auto join = [](const std::vector<std::string>& v) {
+      std::string s;
+      for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
+      return s;
+    };
+    if (board->peers != std::vector<std::string>{"all"}) args.insert(args.end(), {"--peers", join(board->peers)});
+    if (!board->families.empty()) args.insert(args.end(), {"--families", join(board->families)});
+    board->command_line = command_line(l->get_name(), args);
+    rc = run_experiment(*board_json, board->out, [&] { return experiments::run_leaderboard(*board).exit_code; });
   });
 }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -15,10 +16,10 @@
 
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
-#include "oracle/cgal_oracle.hpp"
+#include "experiments/peer_campaign.hpp"
 #include "oracle/check.hpp"
 #include "oracle/compare.hpp"
-#include "oracle/tetgen_oracle.hpp"
+#include "oracle/peers.hpp"
 #include "fuzz/campaign.hpp"
 #include "fuzz/campaign_report.hpp"
 #include "fuzz/corpus.hpp"
@@ -44,6 +45,7 @@ struct FuzzArgs {
   bool relative_eps = false;
   std::string boundary = "infinite";
   std::string oracle = "none";
+  std::string target;  // a peer: judge it instead of dtlab
   unsigned jobs = 1;
   std::string out;
   std::string shard;
@@ -93,26 +95,84 @@ std::vector<fuzz::OracleHook> oracles_of(const std::string& names) {
   std::vector<fuzz::OracleHook> hooks;
   for (const auto& name : split(names)) {
     if (name == "none") continue;
-    if (name != "cgal" && name != "tetgen") usage_error("unknown oracle '" + name + "' (none, cgal, tetgen)");
-    // The oracle's answer counts only when it is itself valid: its crash, timeout or
-    // defect is "no answer", never ours. Ours is compared canonically (Delaunay
-    // complex; tet sets in general position).
+    if (!is_peer_name(name)) usage_error("unknown oracle '" + name + "' (none, or peers: see dtlab oracle --help)");
+    // The peer runs in its own process and its answer counts only when the checker
+    // proves it Delaunay: its crash, time-out or wrong answer is "no answer", never
+    // ours. Ours is compared canonically (Delaunay complex; tets in general position).
     hooks.push_back({name, [name](std::span<const Point3> points, const BuildResult& ours) -> std::string {
       if (ours.failure) return "";
-      OracleRun run = name == "cgal" ? cgal_delaunay(points) : tetgen_delaunay(points);
-      if (!run.mesh) return "";
-      CheckOptions theirs_opt;
-      theirs_opt.duplicates = run.duplicates;
-      const CheckReport theirs = check_tetrahedralization(*run.mesh, theirs_opt);
-      if (!theirs.ok()) return "";
+      const PeerRun run = run_peer(name, points);
+      if (run.verdict != Verdict::delaunay) return "";
       CheckOptions ours_opt;
       ours_opt.duplicates = ours.duplicates;
       const CheckReport mine = check_tetrahedralization(ours.mesh, ours_opt);
       if (!mine.ok()) return "";
-      return compare_canonical(ours.mesh, mine, *run.mesh, theirs).agree() ? "" : "differs-from-" + name;
+      return compare_canonical(ours.mesh, mine, *run.mesh, *run.report).agree() ? "" : "differs-from-" + name;
     }});
   }
   return hooks;
+}
+
+// `--target PEER`: the campaign judges the peer; its failures are shrunk into the corpus.
+int run_target(const FuzzArgs& a, const std::vector<std::string>& families) {
+  if (!is_peer_name(a.target)) usage_error("unknown peer '" + a.target + "' (see dtlab oracle --help)");
+  experiments::PeerCampaignOptions o;
+  o.peer = a.target;
+  o.sources = experiments::fuzz_family_sources(families);
+  o.cases = a.cases;
+  if (a.only_case >= 0) {
+    o.only_case = static_cast<std::size_t>(a.only_case);
+    o.cases = std::max(o.cases, *o.only_case + 1);
+  }
+  o.max_points = a.max_points;
+  o.min_points = std::min(a.min_points, a.max_points);
+  o.seed = a.seed;
+  o.out_dir = a.out;
+  o.shrink = !a.no_shrink;
+  o.shrink_budget = a.shrink_budget;
+  o.jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+  const auto cases = experiments::run_peer_campaign(o);
+  struct Row {
+    std::size_t cases = 0, failing = 0;
+    std::map<std::string, std::size_t> verdicts;
+  };
+  std::map<std::string, Row> rows;
+  nlohmann::json failures = nlohmann::json::array();
+  std::size_t failing = 0, not_installed = 0;
+  for (const auto& c : cases) {
+    Row& r = rows[c.source];
+    ++r.cases;
+    ++r.verdicts[verdict_name(c.run.verdict)];
+    not_installed += c.run.verdict == Verdict::not_installed;
+    if (!c.failed()) continue;
+    ++r.failing, ++failing;
+    failures.push_back({{"source", c.source}, {"case", c.index}, {"n", c.n}, {"verdict", verdict_name(c.run.verdict)},
+                        {"message", c.run.message}, {"corpus_file", c.corpus_file}, {"shrunk_points", c.shrunk_points}});
+  }
+  if (a.json) {
+    nlohmann::json j = {{"target", a.target}, {"cases", cases.size()}, {"failing", failing},
+                        {"not_installed", not_installed}, {"failures", failures}};
+    for (const auto& [src, r] : rows) j["families"][src] = {{"cases", r.cases}, {"failing", r.failing}, {"verdicts", r.verdicts}};
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::printf("%-18s %6s %8s  %s\n", "family", "cases", "failing", "verdicts");
+    for (const auto& [src, r] : rows) {
+      std::string v;
+      for (const auto& [name, k] : r.verdicts) v += (v.empty() ? "" : ", ") + name + " " + std::to_string(k);
+      std::printf("%-18s %6zu %8zu  %s\n", src.c_str(), r.cases, r.failing, v.c_str());
+    }
+    for (const auto& f : failures)
+      if (!f["corpus_file"].get<std::string>().empty())
+        std::printf("  %s case %zu: %s, shrunk to %zu points: %s/%s (dtlab oracle %s/%s --against %s)\n",
+                    f["source"].get<std::string>().c_str(), f["case"].get<std::size_t>(),
+                    f["verdict"].get<std::string>().c_str(), f["shrunk_points"].get<std::size_t>(), a.out.c_str(),
+                    f["corpus_file"].get<std::string>().c_str(), a.out.c_str(),
+                    f["corpus_file"].get<std::string>().c_str(), a.target.c_str());
+    std::printf("%s: %zu cases, %zu failing%s\n", a.target.c_str(), cases.size(), failing,
+                not_installed ? " (not installed)" : "");
+  }
+  if (not_installed == cases.size() && !cases.empty()) return 3;
+  return failing ? kDefect : kOk;
 }
 
 // A one-line progress bar on stderr, only when stderr is a terminal.
@@ -265,6 +325,7 @@ int run_fuzz(const FuzzArgs& a) {
     for (const auto& name : o.families)
       if (!fuzz::find_family(name)) usage_error("unknown family '" + name + "' (see dtlab fuzz --list)");
   }
+  if (!a.target.empty()) return run_target(a, o.families);
   o.cases = a.cases;
   if (a.only_case >= 0) {
     o.only_case = static_cast<std::size_t>(a.only_case);
@@ -313,7 +374,11 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   sub->add_option("--eps", args->eps, "epsilon backend: the band")->check(number_in(0, 1e300))->capture_default_str();
   sub->add_flag("--relative-eps", args->relative_eps, "epsilon backend: relative band");
   sub->add_option("--boundary", args->boundary, "infinite or bigtet[:FACTOR]")->capture_default_str();
-  sub->add_option("--oracle", args->oracle, "none, or a comma list of cgal, tetgen")->capture_default_str();
+  sub->add_option("--oracle", args->oracle, "none, or a comma list of peers to compare with (cgal, tetgen, qhull, ...)")
+      ->capture_default_str();
+  sub->add_option("--target", args->target,
+                  "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...); its failures are shrunk into "
+                  "the corpus. Exit 1 when it failed, 3 when it is not installed");
   sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->check(count_in(0, 1024))->capture_default_str();
   sub->add_option("--out", args->out, "campaign folder: results*.jsonl and corpus/");
   sub->add_option("--shard", args->shard, "K/N: run only the cases with ordinal % N == K");

@@ -1,0 +1,415 @@
+#include "experiments/leaderboard.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "experiments/peer_campaign.hpp"
+#include "experiments/report.hpp"
+#include "experiments/thesis_parts.hpp"
+#include "experiments/wilson_interval.hpp"
+#include "fuzz/families.hpp"
+#include "oracle/child_process.hpp"
+#include "oracle/peer_json.hpp"
+#include "oracle/temp_dir.hpp"
+#include "sampling/mesh_io.hpp"
+#include "sampling/mesh_sampler.hpp"
+
+namespace dtlab::experiments {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+constexpr const char* kDefaultCgalData = "/usr/share/doc/libcgal-demo/data.tar.gz";
+// CGAL demo meshes sampled on the surface (the points of a scanned shell) and inside.
+const std::vector<std::string> kMeshes = {"elephant", "bunny00", "fandisk", "knot1"};
+
+struct MeshSet {
+  std::vector<TriangleMesh> meshes;
+  std::vector<std::string> names;
+  std::string note;  // why there are none
+};
+
+MeshSet load_meshes(const std::string& archive, const std::vector<std::string>& wanted) {
+  MeshSet set;
+  if (!fs::exists(archive)) {
+    set.note = archive + " not found (Debian package libcgal-demo)";
+    return set;
+  }
+  TempDir dir("dtlab-meshes");
+  std::vector<std::string> args = {"tar", "xzf", archive, "-C", dir.path().string()};
+  for (const auto& m : wanted) args.push_back("data/meshes/" + m + ".off");
+  const ChildResult r = run_child(args, ChildLimits::of(120, dir.file("tar.log")));
+  if (r.status != ChildStatus::exited) set.note = "tar failed on " + archive;
+  for (const auto& m : wanted) {
+    const fs::path off = dir.path() / "data" / "meshes" / (m + ".off");
+    if (!fs::exists(off)) continue;
+    try {
+      set.meshes.push_back(read_mesh(off.string()));
+      set.names.push_back(m);
+    } catch (const std::exception& e) {
+      set.note += std::string(" ") + m + ": " + e.what();
+    }
+  }
+  return set;
+}
+
+std::string counts_field(const PeerRun& r) {
+  std::string s;
+  if (r.report)
+    for (int k = 0; k < kDefectKinds; ++k)
+      if (r.report->counts[k])
+        s += (s.empty() ? "" : ";") + std::string(defect_name(static_cast<DefectKind>(k))) + ":" +
+             std::to_string(r.report->counts[k]);
+  if (r.extra_tets) s += (s.empty() ? "" : ";") + std::string("extra-tets:") + std::to_string(r.extra_tets);
+  return s;
+}
+
+std::string csv_escape(std::string s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string o = "\"";
+  for (char c : s) o += c == '"' ? std::string("\"\"") : c == '\n' ? std::string(" ") : std::string(1, c);
+  return o + "\"";
+}
+
+std::string percent(double v) {
+  char b[16];
+  std::snprintf(b, sizeof b, "%.0f%%", 100 * v);
+  return b;
+}
+
+// Heat colour from white (0) to red (1).
+std::string heat_colour(double share) {
+  const int g = static_cast<int>(255 - 200 * std::clamp(share, 0.0, 1.0));
+  char b[16];
+  std::snprintf(b, sizeof b, "#ff%02x%02x", g, g);
+  return share == 0 ? "#e8f5e9" : b;
+}
+
+struct Cell {
+  std::size_t cases = 0, failing = 0;
+  std::map<std::string, std::size_t> verdicts;  // non-delaunay verdicts
+  const PeerCase* smallest = nullptr;           // smallest shrunk failing input
+};
+
+}  // namespace
+
+ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const fs::path dir = options.out;
+  fs::create_directories(dir / "data");
+  const auto step = [&](const std::string& what) {
+    if (options.progress)
+      std::fprintf(stderr, "  [%6.1f s] %s\n",
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), what.c_str());
+  };
+  const std::vector<std::string> peers = expand_peer_names(options.peers);
+  const std::size_t cases = options.cases ? options.cases : options.quick ? 2 : 16;
+  const std::vector<std::size_t> family_sizes =
+      options.quick ? std::vector<std::size_t>{48} : std::vector<std::size_t>{48, 1000};
+  const std::vector<std::size_t> mesh_sizes =
+      options.quick ? std::vector<std::size_t>{3000} : std::vector<std::size_t>{3000, 50000};
+  std::vector<std::size_t> speed_sizes =
+      options.quick ? std::vector<std::size_t>{20000} : std::vector<std::size_t>{100000, 1000000};
+  if (options.speed_n) speed_sizes = {options.speed_n};
+  PeerOptions po;
+  po.timeout_s = options.timeout_s > 0 ? options.timeout_s : options.quick ? 20 : 120;
+
+  // Point sources: every fuzz family, then surface and volume samples of the meshes.
+  step("meshes");
+  const std::vector<std::string> meshes_wanted =
+      options.quick ? std::vector<std::string>{"elephant", "fandisk"} : kMeshes;
+  const MeshSet meshes = options.meshes
+                             ? load_meshes(options.cgal_data.empty() ? kDefaultCgalData : options.cgal_data, meshes_wanted)
+                             : MeshSet{{}, {}, "left out (--no-meshes)"};
+  std::vector<std::unique_ptr<MeshSampler>> samplers;
+  for (const auto& m : meshes.meshes) samplers.push_back(std::make_unique<MeshSampler>(m));
+  std::vector<std::string> family_names = options.families;
+  if (family_names.empty())
+    for (const auto& f : fuzz::families()) family_names.push_back(f.name);
+  const std::vector<PointSource> families = fuzz_family_sources(family_names);
+  std::vector<PointSource> mesh_sources;
+  for (std::size_t i = 0; i < samplers.size(); ++i) {
+    const MeshSampler* s = samplers[i].get();
+    mesh_sources.push_back({meshes.names[i] + "-surface", [s](std::size_t n, std::uint64_t seed) {
+                              return s->surface(n, seed).points;
+                            }});
+    mesh_sources.push_back({meshes.names[i] + "-volume", [s](std::size_t n, std::uint64_t seed) {
+                              return s->winding(n, seed).points;
+                            }});
+  }
+
+  // Robustness: peers x sources x sizes x seeds.
+  std::vector<PeerCase> all;
+  for (const std::string& peer : peers) {
+    step("peer " + peer);
+    const auto run_sources = [&](const std::vector<PointSource>& sources, std::size_t n) {
+      PeerCampaignOptions o;
+      o.peer = peer;
+      o.sources = sources;
+      o.cases = cases;
+      o.min_points = o.max_points = n;
+      o.seed = options.seed;
+      o.out_dir = "";  // shrinking below: one input per (peer, source)
+      o.peer_options = po;
+      o.jobs = options.jobs;
+      auto got = run_peer_campaign(o);
+      for (auto& c : got) all.push_back(std::move(c));
+    };
+    // A peer that is not installed is run once and reported as such.
+    const PeerRun probe = run_peer(peer, families.front().generate(8, 1), po);
+    if (probe.verdict == Verdict::not_installed) {
+      PeerCase c;
+      c.peer = peer;
+      c.source = "(any)";
+      c.run = probe;
+      all.push_back(c);
+      continue;
+    }
+    for (std::size_t n : family_sizes) run_sources(families, n);
+    for (std::size_t n : mesh_sizes) run_sources(mesh_sources, n);
+  }
+
+  // The smallest failing input per (peer, source): shrink the first failure of the
+  // smallest size (hung cases are not shrunk: each try would cost the time limit).
+  step("shrinking failures");
+  std::map<std::pair<std::string, std::string>, PeerCase*> first_failure;
+  for (PeerCase& c : all)
+    if (c.failed() && c.run.verdict != Verdict::hung) {
+      auto& slot = first_failure[{c.peer, c.source}];
+      if (!slot || c.n < slot->n) slot = &c;
+    }
+  const std::size_t budget = options.quick ? 16 : 300;
+  for (auto& [key, c] : first_failure) {
+    const PointSource* src = nullptr;
+    for (const auto& s : families)
+      if (s.name == c->source) src = &s;
+    for (const auto& s : mesh_sources)
+      if (s.name == c->source) src = &s;
+    if (!src) continue;
+    const std::vector<Point3> points = src->generate(c->n, c->seed);
+    const std::string cmd = "dtlab experiment leaderboard --seed " + std::to_string(options.seed) + " (" +
+                            c->source + ", n " + std::to_string(c->n) + ", case " + std::to_string(c->index) + ")";
+    shrink_and_save(*c, points, po, budget, dir.string(), cmd);
+  }
+
+  // Speed: ratio to CGAL in the same run, uniform and mesh-sampled.
+  step("speed");
+  struct SpeedRow {
+    std::string source;
+    std::size_t n;
+    PeerRun run;
+  };
+  std::vector<SpeedRow> speed;
+  std::vector<PointSource> speed_sources = fuzz_family_sources({"uniform"});
+  if (!mesh_sources.empty()) speed_sources.push_back(mesh_sources[1]);  // the first mesh, volume samples
+  PeerOptions speed_po = po;
+  speed_po.timeout_s = options.quick ? 60 : 600;
+  for (const auto& src : speed_sources)
+    for (std::size_t n : speed_sizes) {
+      const std::vector<Point3> points = src.generate(n, options.seed);
+      for (const std::string& peer : peers) {
+        step("speed " + src.name + " " + std::to_string(n) + " " + peer);
+        PeerRun r = run_peer(peer, points, speed_po);
+        r.mesh.reset();
+        speed.push_back({src.name, points.size(), std::move(r)});
+      }
+    }
+
+  // leaderboard.csv
+  {
+    std::ofstream csv(dir / "leaderboard.csv");
+    csv << "peer,source,n,case,seed,lower_dimensional,verdict,defects,tets,seconds,wall_seconds,peak_rss_bytes,"
+           "message,shrunk_points,corpus_file\n";
+    for (const PeerCase& c : all)
+      csv << c.peer << "," << c.source << "," << c.n << "," << c.index << "," << c.seed << ","
+          << (c.lower_dimensional ? 1 : 0) << "," << verdict_name(c.run.verdict) << ","
+          << csv_escape(counts_field(c.run)) << "," << (c.run.report ? c.run.report->stats.tets : 0) << ","
+          << c.run.seconds << "," << c.run.wall_seconds << "," << c.run.peak_rss_bytes << ","
+          << csv_escape(c.run.message) << "," << c.shrunk_points << "," << c.corpus_file << "\n";
+    std::ofstream sp(dir / "data" / "speed.csv");
+    sp << "peer,source,n,verdict,tets,seconds,wall_seconds,peak_rss_bytes\n";
+    for (const auto& s : speed)
+      sp << s.run.name << "," << s.source << "," << s.n << "," << verdict_name(s.run.verdict) << ","
+         << (s.run.report ? s.run.report->stats.tets : 0) << "," << s.run.seconds << "," << s.run.wall_seconds
+         << "," << s.run.peak_rss_bytes << "\n";
+  }
+
+  // Cells of the heatmap.
+  std::vector<std::string> sources;
+  for (const auto& s : families) sources.push_back(s.name);
+  for (const auto& s : mesh_sources) sources.push_back(s.name);
+  std::map<std::pair<std::string, std::string>, Cell> cells;
+  std::map<std::string, Cell> per_peer;
+  std::map<std::string, std::string> not_installed;
+  bool robust_failed = false;
+  for (const PeerCase& c : all) {
+    if (c.run.verdict == Verdict::not_installed) {
+      not_installed[c.peer] = c.run.message;
+      continue;
+    }
+    Cell& cell = cells[{c.peer, c.source}];
+    Cell& total = per_peer[c.peer];
+    ++cell.cases, ++total.cases;
+    if (c.failed()) {
+      ++cell.failing, ++total.failing;
+      ++cell.verdicts[verdict_name(c.run.verdict)];
+      ++total.verdicts[verdict_name(c.run.verdict)];
+      if (c.peer == "dtlab:adaptive" || c.peer == "dtlab:exact") robust_failed = true;
+    }
+    if (!c.corpus_file.empty()) cell.smallest = &c;
+  }
+
+  // Environment with each peer's version.
+  json env = environment(options.command_line, options.seed);
+  json versions = json::object();
+  for (const auto& p : peers) versions[p] = peer_version(p, po);
+  env["peers"] = versions;
+  std::ofstream(dir / "environment.json") << env.dump(2) << "\n";
+
+  // report.md
+  std::ostringstream o;
+  o << "# Which Delaunay code can you trust? (dtlab leaderboard" << (options.quick ? ", quick run" : "") << ")\n\n";
+  o << "Every peer ran in its own process (time limit " << po.timeout_s
+    << " s, memory limit half the machine's) on the same points; its answer was normalised by its adapter "
+       "(orientation, index base, duplicate copies, extra vertices) and judged by dtlab's exact checker against "
+       "the *input* points. Verdicts: `delaunay` (proven the Delaunay tetrahedralization), `triangulation` (valid, "
+       "some non-Delaunay facets), `flat-tets`, `invalid` (overlaps, gaps, inverted tets, broken or non-convex "
+       "hull), `missing-points`, `extra-points`, `crashed`, `hung`, `refused`, `not-installed`. A refusal on an "
+       "input that spans no volume is not counted as a failure.\n\n";
+  o << "Sources: the " << families.size() << " fuzz families (`dtlab fuzz --list`) at n = ";
+  for (std::size_t i = 0; i < family_sizes.size(); ++i) o << (i ? ", " : "") << family_sizes[i];
+  o << "; surface (`-surface`) and winding-number volume (`-volume`) samples of CGAL demo meshes at n = ";
+  for (std::size_t i = 0; i < mesh_sizes.size(); ++i) o << (i ? ", " : "") << mesh_sizes[i];
+  o << (meshes.names.empty() ? " (none: " + meshes.note + ")" : "") << "; " << cases
+    << " seeds per (source, size)" << (options.quick ? " — a quick run: few cases per cell, wide intervals" : "")
+    << ".\n\n";
+  o << "## Summary per peer\n\n";
+  o << table_row({"peer", "version", "cases", "not delaunay", "share [95% CI]", "verdicts (not delaunay)"})
+    << table_rule(6, 2);
+  for (const auto& p : peers) {
+    if (not_installed.count(p)) {
+      o << table_row({"`" + p + "`", versions[p].get<std::string>(), "0", "-", "-", "not-installed"});
+      continue;
+    }
+    const Cell& t = per_peer[p];
+    const auto [lo, hi] = wilson_interval(t.failing, t.cases);
+    std::string v;
+    for (const auto& [name, k] : t.verdicts) v += (v.empty() ? "" : ", ") + name + " " + std::to_string(k);
+    o << table_row({"`" + p + "`", versions[p].get<std::string>(), std::to_string(t.cases),
+                    std::to_string(t.failing),
+                    percent(t.cases ? double(t.failing) / t.cases : 0) + " [" + percent(lo) + ", " + percent(hi) + "]",
+                    v.empty() ? "-" : v});
+  }
+  o << "\n## Heatmap: share of non-delaunay verdicts (peer x source)\n\n"
+       "Each cell: failing/cases and the Wilson 95% interval. The HTML report colours the cells.\n\n";
+  o << "HEATMAP-TABLE\n\n";
+  o << "## Smallest failing input per (peer, source)\n\n"
+       "The first failing case of each (peer, source) at its smallest size, shrunk by delta debugging to a subset "
+       "with the same verdict (budget " << budget << " peer runs; `minimal`: 1-minimal). Reproduce with the command "
+       "in the sidecar .json, e.g. `dtlab oracle corpus/FILE.node --against PEER`.\n\n";
+  o << table_row({"peer", "source", "verdict", "points", "shrunk to", "minimal", "file"}) << table_rule(7, 3);
+  std::size_t failing_cells = 0, shrunk = 0;
+  for (const auto& [key, cell] : cells) {
+    if (!cell.failing) continue;
+    ++failing_cells;
+    const PeerCase* c = cell.smallest;
+    if (!c) {
+      o << table_row({"`" + key.first + "`", key.second, "hung", "-", "-", "-", "not shrunk (hung)"});
+      continue;
+    }
+    ++shrunk;
+    o << table_row({"`" + key.first + "`", key.second, verdict_name(c->run.verdict), std::to_string(c->n),
+                    std::to_string(c->shrunk_points), c->shrunk_minimal ? "yes" : "no", "`" + c->corpus_file + "`"});
+  }
+  o << "\n## Speed (ratio to CGAL in the same run)\n\n"
+       "Seconds: the triangulation as the peer times it (TetGen: its whole process, file reading and writing "
+       "included; scipy: the `Delaunay()` call). Peak MB: the peer process's peak resident memory (for scipy "
+       "the Python interpreter and numpy included); bytes/tet = peak / tets.\n\n";
+  o << table_row({"source", "n", "peer", "verdict", "seconds", "x CGAL", "peak MB", "bytes/tet"}) << table_rule(8, 4);
+  for (const auto& s : speed) {
+    double cgal = 0;
+    for (const auto& t : speed)
+      if (t.source == s.source && t.n == s.n && t.run.name == "cgal" && !no_answer(t.run.verdict)) cgal = t.run.seconds;
+    const bool answered = !no_answer(s.run.verdict);
+    const std::uint64_t tets = s.run.report ? s.run.report->stats.tets : 0;
+    o << table_row({s.source, std::to_string(s.n), "`" + s.run.name + "`", verdict_name(s.run.verdict),
+                    answered ? fmt("%.3f", s.run.seconds) : "-",
+                    answered && cgal > 0 ? fmt("%.2f", s.run.seconds / cgal) : "-",
+                    answered ? fmt("%.0f", s.run.peak_rss_bytes / 1e6) : "-",
+                    answered && tets ? fmt("%.0f", double(s.run.peak_rss_bytes) / double(tets)) : "-"});
+  }
+  o << "\n## Data\n\n`leaderboard.csv` (one row per case: peer, source, n, case, seed, verdict, defect counts, "
+       "seconds, peak RSS, shrunk input), `data/speed.csv`, `corpus/` (shrunk failing inputs with sidecars), "
+       "`environment.json` (machine, versions of every peer).\n\n";
+  o << environment_markdown(env);
+  o << "\nPeer versions: ";
+  for (const auto& p : peers) o << "`" << p << "` " << versions[p].get<std::string>() << "; ";
+  o << "\n";
+
+  // The heatmap as a Markdown table and as a coloured HTML table.
+  std::ostringstream md_heat, html_heat;
+  std::vector<std::string> installed;
+  for (const auto& p : peers)
+    if (!not_installed.count(p)) installed.push_back(p);
+  std::vector<std::string> header = {"source"};
+  for (const auto& p : installed) header.push_back(p);
+  md_heat << table_row(header) << table_rule(header.size(), 1);
+  html_heat << "<table class=\"heat\"><tr><th>source</th>";
+  for (const auto& p : installed) html_heat << "<th>" << p << "</th>";
+  html_heat << "</tr>\n";
+  for (const auto& src : sources) {
+    std::vector<std::string> row = {src};
+    html_heat << "<tr><td>" << src << "</td>";
+    for (const auto& p : installed) {
+      const auto it = cells.find({p, src});
+      if (it == cells.end() || !it->second.cases) {
+        row.push_back("-");
+        html_heat << "<td>-</td>";
+        continue;
+      }
+      const Cell& c = it->second;
+      const auto [lo, hi] = wilson_interval(c.failing, c.cases);
+      const double share = double(c.failing) / c.cases;
+      row.push_back(std::to_string(c.failing) + "/" + std::to_string(c.cases) + " [" + percent(lo) + "-" +
+                    percent(hi) + "]");
+      std::string title;
+      for (const auto& [v, k] : c.verdicts) title += v + " " + std::to_string(k) + " ";
+      html_heat << "<td style=\"background:" << heat_colour(share) << "\" title=\"" << title << "\">" << c.failing
+                << "/" << c.cases << "<br><small>" << percent(lo) << "&ndash;" << percent(hi) << "</small></td>";
+    }
+    md_heat << table_row(row);
+    html_heat << "</tr>\n";
+  }
+  html_heat << "</table>\n";
+  std::string md = o.str();
+  const std::string marker = "HEATMAP-TABLE";
+  std::string html = markdown_to_html(md, "dtlab leaderboard");
+  md.replace(md.find(marker), marker.size(), md_heat.str());
+  if (const auto at = html.find("<p>" + marker + "</p>"); at != std::string::npos)
+    html.replace(at, marker.size() + 7, html_heat.str());
+  write_text(dir / "report.md", md);
+  write_text(dir / "report.html", html);
+
+  json facts = {{"cases", all.size()},
+                {"failing_cells", failing_cells},
+                {"shrunk_cells", shrunk},
+                {"robust_dtlab_failed", robust_failed},
+                {"quick", options.quick}};
+  json per = json::object();
+  for (const auto& [p, t] : per_peer) per[p] = {{"cases", t.cases}, {"not_delaunay", t.failing}};
+  facts["peers"] = per;
+  facts["not_installed"] = not_installed;
+  facts["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::ofstream(dir / "data" / "facts.json") << facts.dump(2) << "\n";
+  step("done");
+  return {robust_failed ? 1 : 0, facts};
+}
+
+}  // namespace dtlab::experiments

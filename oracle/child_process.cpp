@@ -1,0 +1,155 @@
+#include "oracle/child_process.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/time.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <thread>
+
+namespace dtlab {
+namespace {
+
+// Everything the child does between fork and exec must be async-signal-safe: the
+// argument vector and the paths are prepared before the fork.
+[[noreturn]] void exec_child(char* const* argv, const char* log, std::uint64_t memory, int error_fd) {
+  setpgid(0, 0);
+  const int fd = open(log ? log : "/dev/null", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd >= 0) {
+    dup2(fd, 1);
+    dup2(fd, 2);
+    if (fd > 2) close(fd);
+  }
+  const int in = open("/dev/null", O_RDONLY);
+  if (in >= 0 && in != 0) dup2(in, 0), close(in);
+  if (memory) {
+    rlimit r{static_cast<rlim_t>(memory), static_cast<rlim_t>(memory)};
+    setrlimit(RLIMIT_AS, &r);
+  }
+  rlimit no_core{0, 0};
+  setrlimit(RLIMIT_CORE, &no_core);
+  execvp(argv[0], argv);
+  const int err = errno;
+  [[maybe_unused]] ssize_t w = write(error_fd, &err, sizeof err);
+  _exit(127);
+}
+
+// The peak resident memory of the program the child now runs (VmHWM of its own
+// address space, from /proc), 0 when it cannot be read (the child has exited).
+// rusage's ru_maxrss cannot serve: it includes the parent's pages the child held
+// between fork and exec.
+std::uint64_t vm_hwm_bytes(pid_t pid) {
+  char path[64];
+  std::snprintf(path, sizeof path, "/proc/%d/status", static_cast<int>(pid));
+  std::FILE* f = std::fopen(path, "r");
+  if (!f) return 0;
+  char line[256];
+  std::uint64_t kb = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, "VmHWM:", 6) == 0) {
+      kb = std::strtoull(line + 6, nullptr, 10);
+      break;
+    }
+  std::fclose(f);
+  return kb * 1024;
+}
+
+}  // namespace
+
+ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& limits) {
+  if (args.empty()) throw std::invalid_argument("run_child: no program");
+  if (!std::isfinite(limits.timeout_s) || limits.timeout_s <= 0)
+    throw std::invalid_argument("run_child: the timeout must be a positive number of seconds");
+  std::vector<std::string> copy = args;
+  std::vector<char*> argv;
+  for (auto& a : copy) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  int pipe_fd[2];
+  if (pipe2(pipe_fd, O_CLOEXEC) != 0) throw std::runtime_error("run_child: pipe failed");
+  ChildResult r;
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(pipe_fd[0]);
+    close(pipe_fd[1]);
+    r.message = std::string("fork failed: ") + std::strerror(errno);
+    return r;
+  }
+  if (pid == 0) {
+    close(pipe_fd[0]);
+    exec_child(argv.data(), limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes,
+               pipe_fd[1]);
+  }
+  // Both sides set the group, so a kill right after fork reaches it.
+  setpgid(pid, pid);
+  close(pipe_fd[1]);
+  int exec_errno = 0;
+  const ssize_t got = read(pipe_fd[0], &exec_errno, sizeof exec_errno);  // EOF when exec succeeded
+  close(pipe_fd[0]);
+
+  int status = 0;
+  rusage usage{};
+  bool timed_out = false;
+  for (;;) {
+    // Sampled before each wait: the last sample is at most one poll interval old.
+    if (got != static_cast<ssize_t>(sizeof exec_errno)) r.peak_rss_bytes = std::max(r.peak_rss_bytes, vm_hwm_bytes(pid));
+    const pid_t w = wait4(pid, &status, WNOHANG, &usage);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (w == pid) break;
+    if (w < 0 && errno != EINTR) {
+      kill(-pid, SIGKILL);
+      r.message = "wait failed";
+      return r;
+    }
+    if (r.seconds > limits.timeout_s) {
+      kill(-pid, SIGKILL);
+      wait4(pid, &status, 0, &usage);
+      timed_out = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(r.seconds < 0.2 ? 1 : r.seconds < 2 ? 5 : 20));
+  }
+  // The group may hold grandchildren that outlived their parent.
+  kill(-pid, SIGKILL);
+  if (got == static_cast<ssize_t>(sizeof exec_errno)) {
+    r.status = ChildStatus::not_started;
+    r.message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);
+  } else if (timed_out) {
+    r.status = ChildStatus::timed_out;
+  } else if (WIFSIGNALED(status)) {
+    r.status = ChildStatus::signaled;
+    r.signal = WTERMSIG(status);
+  } else {
+    r.status = ChildStatus::exited;
+    r.exit_code = WEXITSTATUS(status);
+  }
+  return r;
+}
+
+std::string last_line_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return "";
+  const std::streamoff size = in.tellg();
+  const std::streamoff from = size > 4096 ? size - 4096 : 0;
+  in.seekg(from);
+  std::string text(static_cast<std::size_t>(size - from), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  std::size_t end = text.find_last_not_of(" \t\r\n");
+  if (end == std::string::npos) return "";
+  const std::size_t begin = text.rfind('\n', end);
+  return text.substr(begin == std::string::npos ? 0 : begin + 1, end - (begin == std::string::npos ? 0 : begin + 1) + 1);
+}
+
+}  // namespace dtlab

@@ -1,0 +1,52 @@
+#pragma once
+// Runs a program as a child process under a wall-clock limit and a memory limit,
+// in its own process group, so that neither a crash, nor a hang, nor a runaway
+// allocation of the program can take the caller down. On time-out the whole
+// process group is killed (a shell or python wrapper takes its children along).
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dtlab {
+
+struct ChildLimits {
+  double timeout_s = 600;             // wall clock; must be finite and > 0
+  std::uint64_t memory_bytes = 0;     // RLIMIT_AS of the child; 0: no limit
+  std::string log_path;               // stdout and stderr of the child; "": /dev/null
+
+  static ChildLimits of(double timeout_s, std::string log_path = "", std::uint64_t memory_bytes = 0) {
+    ChildLimits l;
+    l.timeout_s = timeout_s;
+    l.log_path = std::move(log_path);
+    l.memory_bytes = memory_bytes;
+    return l;
+  }
+};
+
+enum class ChildStatus {
+  exited,       // exit_code is set
+  signaled,     // signal is set (a crash: SIGSEGV, SIGABRT, ...)
+  timed_out,    // killed (with its process group) after timeout_s
+  not_started,  // the program does not exist or cannot be executed (message)
+};
+
+struct ChildResult {
+  ChildStatus status = ChildStatus::not_started;
+  int exit_code = -1;
+  int signal = 0;
+  double seconds = 0;                // wall time of the child
+  std::uint64_t peak_rss_bytes = 0;  // the program's peak resident memory (VmHWM after exec),
+                                     // sampled every 1-20 ms while it runs; 0: ended before a sample
+  std::string message;               // why it did not start
+};
+
+// argv[0] is looked up in PATH when it has no '/'. Throws std::invalid_argument for
+// an empty argv or a NaN, infinite, zero or negative timeout.
+ChildResult run_child(const std::vector<std::string>& argv, const ChildLimits& limits);
+
+// The last non-empty line of a text file (at most the last 4 KiB are read); "" when
+// the file is missing or empty. A refusing program's message.
+std::string last_line_of(const std::string& path);
+
+}  // namespace dtlab

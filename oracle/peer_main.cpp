@@ -1,0 +1,99 @@
+// dtlab_peer: runs one peer in this process so that dtlab does not have to (gmsh has
+// its own helper, dtlab_peer_gmsh: loading its libraries costs about a second).
+//   dtlab_peer PEER IN OUT     IN, OUT: oracle/peer_exchange.hpp files
+//   dtlab_peer --version PEER
+// Exit: 0 answered (a note, if any, on the last line of stderr), 2 bad usage,
+// 3 the peer refused (its message on the last line of stderr), 4 not built in.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+
+#include "kernel/build.hpp"
+#include "oracle/cgal_oracle.hpp"
+#include "oracle/peer_programs.hpp"
+
+#include <CGAL/version.h>
+
+namespace {
+
+using namespace dtlab;
+
+// dtlab:BACKEND or dtlab:BACKEND+none.
+PeerAnswer run_dtlab(const std::string& name, const std::vector<Point3>& points) {
+  std::string backend = name.substr(6);
+  PredicateSpec spec;
+  if (backend.size() > 5 && backend.substr(backend.size() - 5) == "+none") {
+    spec.perturb = false;
+    backend.resize(backend.size() - 5);
+  }
+  spec.backend = backend;
+  const BuildResult r = build_delaunay(points, spec, BuildOptions{});
+  PeerAnswer a;
+  a.seconds = r.stats.seconds;
+  a.tets = r.mesh.tets;
+  if (r.failure)
+    std::fprintf(stderr, "build failed: %s %s\n", failure_name(r.failure->kind), r.failure->detail.c_str());
+  return a;
+}
+
+PeerAnswer run(const std::string& name, const std::vector<Point3>& points) {
+  if (name == "cgal") {
+    // cgal_delaunay already gives dtlab's orientation and input indices.
+    const OracleRun r = cgal_delaunay(points);
+    PeerAnswer a;
+    a.seconds = r.seconds;
+    if (r.mesh) a.tets = r.mesh->tets;
+    return a;
+  }
+  if (name == "cgal-inexact") return peer_cgal_inexact(points);
+  if (name == "qhull" || name == "qhull-qj") return peer_qhull(points, name == "qhull-qj");
+  if (name.rfind("dtlab:", 0) == 0) return run_dtlab(name, points);
+  throw std::invalid_argument("unknown peer '" + name + "'");
+}
+
+std::string version(const std::string& name) {
+  if (name == "cgal" || name == "cgal-inexact") return std::string("CGAL ") + CGAL_VERSION_STR;
+  if (name == "qhull" || name == "qhull-qj") return qhull_version();
+  if (name.rfind("dtlab:", 0) == 0) return "dtlab " + name.substr(6);
+  throw std::invalid_argument("unknown peer '" + name + "'");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 3 && std::strcmp(argv[1], "--version") == 0) {
+    try {
+      std::printf("%s\n", version(argv[2]).c_str());
+      return 0;
+    } catch (const PeerNotInstalled& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return 4;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return 2;
+    }
+  }
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: dtlab_peer PEER IN OUT | dtlab_peer --version PEER\n");
+    return 2;
+  }
+  try {
+    const std::vector<Point3> points = read_peer_points(argv[2]);
+    const PeerAnswer a = run(argv[1], points);
+    write_peer_answer(argv[3], a);
+    return 0;
+  } catch (const PeerNotInstalled& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 4;
+  } catch (const PeerRefusal& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 3;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 3;
+  }
+}

@@ -1,0 +1,37 @@
+#pragma once
+// The peers the dtlab_peer helper runs in its own process (oracle/peer_main.cpp):
+// each takes the input points and returns its answer in the exchange format
+// (oracle/peer_exchange.hpp), input indices 0-based. A refusal (the peer reports an
+// error) throws PeerRefusal; a peer built without its library throws
+// PeerNotInstalled. A crash or a hang is not caught: the parent sees it.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "oracle/peer_exchange.hpp"
+
+namespace dtlab {
+
+struct PeerRefusal : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+struct PeerNotInstalled : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// CGAL Delaunay_triangulation_3 over Simple_cartesian<double>; cells in CGAL's
+// order (its positive orientation: swap two vertices for dtlab's).
+PeerAnswer peer_cgal_inexact(const std::vector<Point3>& points);
+
+// libqhull_r: "d Qbb Qc Qz Q12 Qt" (scipy's defaults), or "d QJ" when `joggle`.
+// Lower-Delaunay facets, vertices as input indices (the point at infinity of Qz,
+// should it appear, as an extra vertex); orientation as qhull leaves it.
+PeerAnswer peer_qhull(const std::vector<Point3>& points, bool joggle);
+std::string qhull_version();
+
+// gmsh::model::mesh::tetrahedralize; `hxt` sets Mesh.Algorithm3D = 10 first. gmsh
+// numbers nodes from 1: the adapter makes them 0-based.
+PeerAnswer peer_gmsh(const std::vector<Point3>& points, bool hxt);
+std::string gmsh_version();
+
+}  // namespace dtlab

@@ -1,0 +1,262 @@
+#include "oracle/peers.hpp"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+#include "kernel/input_error.hpp"
+#include "kernel/point_io.hpp"
+#include "kernel/tet_io.hpp"
+#include "oracle/child_process.hpp"
+#include "oracle/peer_adapter.hpp"
+#include "oracle/peer_exchange.hpp"
+#include "oracle/temp_dir.hpp"
+
+#ifndef DTLAB_PEER_BINARY
+#define DTLAB_PEER_BINARY "dtlab_peer"
+#endif
+#ifndef DTLAB_PEER_GMSH_BINARY
+#define DTLAB_PEER_GMSH_BINARY "dtlab_peer_gmsh"
+#endif
+
+namespace dtlab {
+namespace {
+
+enum class Runner { helper, tetgen, python };
+
+struct PeerSpec {
+  const char* name;
+  Runner runner;
+  PeerOrientation orientation;
+};
+
+const PeerSpec kPeers[] = {
+    {"cgal", Runner::helper, PeerOrientation::dtlab},
+    {"cgal-inexact", Runner::helper, PeerOrientation::swapped},
+    {"tetgen", Runner::tetgen, PeerOrientation::dtlab},
+    {"tetgen-flip", Runner::tetgen, PeerOrientation::dtlab},
+    {"qhull", Runner::helper, PeerOrientation::by_sign},
+    {"qhull-qj", Runner::helper, PeerOrientation::by_sign},
+    {"scipy", Runner::python, PeerOrientation::by_sign},
+    {"gmsh", Runner::helper, PeerOrientation::by_sign},
+    {"gmsh-hxt", Runner::helper, PeerOrientation::by_sign},
+    {"dtlab:naive", Runner::helper, PeerOrientation::dtlab},
+    {"dtlab:epsilon", Runner::helper, PeerOrientation::dtlab},
+    {"dtlab:adaptive", Runner::helper, PeerOrientation::dtlab},
+    {"dtlab:exact", Runner::helper, PeerOrientation::dtlab},
+};
+
+std::optional<PeerSpec> find_peer(const std::string& name) {
+  for (const PeerSpec& p : kPeers)
+    if (name == p.name) return p;
+  // dtlab:B+none: the same backend without symbolic perturbation.
+  const std::string suffix = "+none";
+  if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+    auto base = find_peer(name.substr(0, name.size() - suffix.size()));
+    if (base && std::string(base->name).rfind("dtlab:", 0) == 0) return PeerSpec{"", Runner::helper, PeerOrientation::dtlab};
+  }
+  return std::nullopt;
+}
+
+// scipy.spatial.Delaunay with its defaults; exit 4: not installed, 3: refused.
+const char* kScipyScript = R"PY(
+import sys, struct, time
+try:
+    import numpy as np
+    import scipy
+    from scipy.spatial import Delaunay
+except Exception as e:
+    print("not installed: %s" % e, file=sys.stderr); sys.exit(4)
+if sys.argv[1] == "--version":
+    print("scipy %s (numpy %s)" % (scipy.__version__, np.__version__)); sys.exit(0)
+data = open(sys.argv[1], "rb").read()
+if data[:4] != b"DTLP":
+    print("not a dtlab peer file", file=sys.stderr); sys.exit(2)
+n = struct.unpack("<Q", data[4:12])[0]
+pts = np.frombuffer(data, dtype="<f8", count=3 * n, offset=12).reshape(n, 3)
+t = time.perf_counter()
+try:
+    d = Delaunay(pts)
+except Exception as e:
+    lines = [l for l in str(e).splitlines() if l.strip()]
+    qh = [l for l in lines if l.startswith("QH")]
+    print("%s: %s" % (type(e).__name__, (qh or lines or ["?"])[0]), file=sys.stderr); sys.exit(3)
+sec = time.perf_counter() - t
+s = np.ascontiguousarray(d.simplices, dtype="<u4")
+with open(sys.argv[2], "wb") as f:
+    f.write(b"DTLA"); f.write(struct.pack("<dQ", sec, 0)); f.write(struct.pack("<Q", s.shape[0])); f.write(s.tobytes())
+)PY";
+
+std::uint64_t default_memory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return 0;
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 2;
+}
+
+// The child's outcome when it gave no answer; nullopt when it exited 0.
+std::optional<Verdict> failure_of(const ChildResult& c, const std::string& log, PeerRun& run) {
+  run.wall_seconds = c.seconds;
+  run.seconds = c.seconds;
+  run.peak_rss_bytes = c.peak_rss_bytes;
+  switch (c.status) {
+    case ChildStatus::not_started:
+      run.message = c.message;
+      return Verdict::not_installed;
+    case ChildStatus::timed_out:
+      run.message = "killed after " + std::to_string(c.seconds).substr(0, 6) + " s";
+      return Verdict::hung;
+    case ChildStatus::signaled: {
+      const char* s = strsignal(c.signal);
+      run.message = std::string("signal ") + std::to_string(c.signal) + " (" + (s ? s : "?") + ")";
+      const std::string last = last_line_of(log);
+      if (!last.empty()) run.message += ": " + last;
+      return Verdict::crashed;
+    }
+    case ChildStatus::exited:
+      break;
+  }
+  const std::string last = last_line_of(log);
+  if (c.exit_code == 0) {
+    run.message = last;
+    return std::nullopt;
+  }
+  if (c.exit_code == 4) {
+    run.message = last.empty() ? "not installed" : last;
+    return Verdict::not_installed;
+  }
+  run.message = last.empty() ? "exit status " + std::to_string(c.exit_code) : last;
+  return Verdict::refused;
+}
+
+}  // namespace
+
+const std::vector<std::string>& peer_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const PeerSpec& p : kPeers) v.emplace_back(p.name);
+    return v;
+  }();
+  return names;
+}
+
+bool is_peer_name(const std::string& name) { return find_peer(name).has_value(); }
+
+std::vector<std::string> expand_peer_names(const std::vector<std::string>& names) {
+  std::vector<std::string> out;
+  for (const std::string& n : names) {
+    if (n == "all") {
+      for (const auto& p : peer_names())
+        if (std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
+      continue;
+    }
+    if (!is_peer_name(n)) {
+      std::string list;
+      for (const auto& p : peer_names()) list += (list.empty() ? "" : ", ") + p;
+      throw std::invalid_argument("unknown peer '" + n + "' (all, " + list + ")");
+    }
+    if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+  }
+  return out;
+}
+
+std::string peer_binary(const PeerOptions& options, const std::string& name) {
+  if (!options.peer_binary.empty()) return options.peer_binary;
+  const bool gmsh = name.rfind("gmsh", 0) == 0;
+  if (const char* env = std::getenv(gmsh ? "DTLAB_PEER_GMSH" : "DTLAB_PEER"); env && *env) return env;
+  return gmsh ? DTLAB_PEER_GMSH_BINARY : DTLAB_PEER_BINARY;
+}
+
+PeerRun run_peer(const std::string& name, std::span<const Point3> points, const PeerOptions& options) {
+  const auto spec = find_peer(name);
+  if (!spec) throw std::invalid_argument("unknown peer '" + name + "'");
+  PeerRun run;
+  run.name = name;
+  TempDir dir("dtlab-peer");
+  const std::string log = dir.file("log.txt");
+  ChildLimits limits;
+  limits.timeout_s = options.timeout_s;
+  limits.memory_bytes = options.memory_bytes ? options.memory_bytes : default_memory();
+  limits.log_path = log;
+  const std::vector<Point3> pts(points.begin(), points.end());
+
+  if (spec->runner == Runner::tetgen) {
+    const std::string node = dir.file("in.node");
+    write_node(node, pts);
+    const std::string flags = name == "tetgen-flip" ? "-QzJNFl" : "-QzJNF";
+    const ChildResult c = run_child({options.tetgen, flags, node}, limits);
+    if (auto v = failure_of(c, log, run)) {
+      run.verdict = *v;
+      return run;
+    }
+    run.message.clear();  // TetGen prints "Opening in.node." even with -Q
+    PeerAnswer a;
+    a.seconds = c.seconds;
+    const std::string ele = dir.file("in.1.ele");
+    if (std::filesystem::exists(ele)) {
+      try {
+        a.tets = read_ele(ele, 0, pts.size());
+      } catch (const InputError& e) {
+        run.verdict = Verdict::refused;
+        run.message = std::string("unreadable .ele: ") + e.what();
+        return run;
+      }
+    } else {
+      run.message = "wrote no .ele";
+    }
+    normalise_answer(points, a, spec->orientation, run);
+    if (options.check) judge_answer(run);
+    return run;
+  }
+
+  const std::string in = dir.file("in.bin"), out = dir.file("out.bin");
+  write_peer_points(in, pts);
+  std::vector<std::string> argv;
+  if (spec->runner == Runner::python) argv = {options.python, "-c", kScipyScript, in, out};
+  else argv = {peer_binary(options, name), name, in, out};
+  const ChildResult c = run_child(argv, limits);
+  if (auto v = failure_of(c, log, run)) {
+    run.verdict = *v;
+    return run;
+  }
+  PeerAnswer a;
+  try {
+    a = read_peer_answer(out);
+  } catch (const std::exception& e) {
+    run.verdict = Verdict::refused;
+    run.message = std::string("no readable answer: ") + e.what();
+    return run;
+  }
+  run.seconds = a.seconds;
+  normalise_answer(points, a, spec->orientation, run);
+  if (options.check) judge_answer(run);
+  return run;
+}
+
+std::string peer_version(const std::string& name, const PeerOptions& options) {
+  const auto spec = find_peer(name);
+  if (!spec) throw std::invalid_argument("unknown peer '" + name + "'");
+  TempDir dir("dtlab-peer");
+  const std::string log = dir.file("log.txt");
+  ChildLimits limits;
+  limits.timeout_s = 60;
+  limits.log_path = log;
+  ChildResult c;
+  if (spec->runner == Runner::tetgen) {
+    // TetGen has no version switch (its -h ends in an uncaught exception): ask dpkg.
+    c = run_child({options.tetgen, "-h"}, limits);
+    if (c.status == ChildStatus::not_started) return "not installed";
+    c = run_child({"dpkg-query", "-W", "-f=${Version}\\n", "tetgen"}, limits);
+    const std::string v = c.status == ChildStatus::exited && c.exit_code == 0 ? last_line_of(log) : "";
+    return "TetGen " + (v.empty() ? std::string("(version unknown)") : v) + (name == "tetgen-flip" ? " -l" : "");
+  }
+  if (spec->runner == Runner::python) c = run_child({options.python, "-c", kScipyScript, "--version"}, limits);
+  else c = run_child({peer_binary(options, name), "--version", name}, limits);
+  if (c.status != ChildStatus::exited || c.exit_code != 0) return "not installed";
+  return last_line_of(log);
+}
+
+}  // namespace dtlab
