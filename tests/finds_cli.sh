@@ -68,7 +68,7 @@ start=$(date +%s)
 expect_any() { timeout 60 "$@" >"$tmp/out" 2>"$tmp/err"; }
 expect_any "$dtlab" oracle "$cli/five.node" --against tetgen --tetgen "$tmp/slowtg_pid.sh" --timeout 1
 if [ $(( $(date +%s) - start )) -gt 30 ]; then echo "FAIL: oracle --timeout 1 took too long"; fails=$((fails + 1)); else pass=$((pass + 1)); fi
-says "oracle time-out reported" "timed out"
+says "oracle time-out reported" "tetgen  *hung"
 sleep 0.5
 # Alive means a state other than Z (a killed child of a dead shell may wait as a zombie).
 if [ -s "$tmp/sleep.pid" ] && ps -o stat= -p "$(cat "$tmp/sleep.pid")" | grep -qv Z; then

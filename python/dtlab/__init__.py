@@ -121,28 +121,36 @@ def compare(points: Any, tets_a: Any, tets_b: Any, orientation: str = "any") -> 
     return Comparison._from_raw(raw["comparison"], bool(raw["tets_equal"]), a, b)
 
 
-def oracle(points: Any, against: Sequence[str] = ("cgal", "tetgen"), *, predicates: str = "adaptive",
-           perturb: str = "sos", tetgen: str = "tetgen", timeout: float = 600.0) -> OracleReport:
+def oracle(points: Any, against: Sequence[str] | str = ("cgal", "tetgen"), *, predicates: str = "adaptive",
+           perturb: str = "sos", tetgen: str = "tetgen", timeout: float = 600.0,
+           memory_mb: float = 0.0) -> OracleReport:
     """`dtlab oracle` on an array: builds ours (predicates, perturb, default options),
-    runs the oracles in `against` (CGAL's Delaunay_triangulation_3 in process, the
-    `tetgen` binary as a process with `timeout` seconds), checks every answer exactly
-    and compares every pair canonically. An oracle that crashes, times out or is
-    missing gives no answer (not a failure of ours)."""
+    runs every peer in `against` ("all", or names such as cgal, cgal-inexact, tetgen,
+    tetgen-flip, qhull, qhull-qj, scipy, gmsh, gmsh-hxt, dtlab:naive) in its own
+    process with `timeout` seconds and `memory_mb` MB (0: half the machine's), judges
+    every answer with the exact checker against the input points, and compares ours
+    canonically with every peer proven Delaunay. A peer that crashes, hangs, refuses
+    or is missing gives no answer (exit 3), never a failure of ours."""
     if isinstance(against, str):
         against = [a for a in against.split(",") if a]
-    raw = _core.oracle(points, list(against), predicates, perturb, tetgen, float(timeout))
-    runs: dict[str, OracleRun] = {}
-    for name, r in raw["runs"].items():
-        report = None
-        if r["check"] is not None:
-            report = CheckReport._from_raw({**r["check"], "orientation": "positive"})
-        runs[name] = OracleRun(name, bool(r["answered"]), r["note"], float(r["seconds"]), int(r["duplicates"]),
-                               r["tets"], report)
+    raw = _core.oracle(points, list(against), predicates, perturb, tetgen, float(timeout), float(memory_mb))
+    checks = raw["peer_checks"]
+
+    def run(name: str, r: dict[str, Any], tets: Any, check: dict[str, Any] | None) -> OracleRun:
+        report = CheckReport._from_raw({**check, "orientation": "positive"}) if check is not None else None
+        defects = dict(r.get("defects", {})) if "defects" in r else (report.counts if report else {})
+        return OracleRun(name, str(r["verdict"]), str(r.get("message", r.get("failure", ""))), float(r["seconds"]),
+                         tets, defects, report, r.get("agree"), r)
+
+    d = raw["dtlab"]
+    ours = run("dtlab", d, raw["dtlab_tets"], d["check"])
+    peers = {name: run(name, r, raw["peer_tets"][name], checks[name]) for name, r in raw["peers"].items()}
     comparisons: dict[str, Comparison] = {}
     for pair, c in raw["comparisons"].items():
-        first, second = pair.split(" vs ")
-        comparisons[pair] = Comparison._from_raw(c, bool(c["tets_equal"]), runs[first].check, runs[second].check)
-    return OracleReport(bool(raw["ok"]), list(raw["problems"]), runs, comparisons)
+        other = pair.split(" vs ", 1)[1]
+        comparisons[pair] = Comparison._from_raw(c, bool(c["tets_equal"]), ours.check, peers[other].check)
+    return OracleReport(bool(raw["ok"]), int(raw["exit"]), list(raw["problems"]), list(raw["not_compared"]), ours,
+                        peers, comparisons)
 
 
 def _box_arg(box: Any) -> list[float] | None:

@@ -176,28 +176,39 @@ class Comparison:
 
 @dataclass(frozen=True)
 class OracleRun:
-    """One producer in dtlab.oracle: answered (False: crashed, timed out or missing),
-    note (why not, or the build failure), seconds, duplicates (how many inputs it
-    collapsed), tets ((m, 4) uint32, positive orientation) and its exact check."""
+    """One producer in dtlab.oracle (dtlab itself or a peer): its verdict (delaunay,
+    triangulation, flat-tets, invalid, missing-points, extra-points, crashed, hung,
+    refused, not-installed), message (a refusal's text, a signal, a note), seconds,
+    tets ((m, 4) uint32 over the input points, positive orientation, or None when it
+    gave no answer), defects ({kind: count}), its exact check, and `agree` (whether
+    dtlab's answer agrees with it; None when they were not compared). `raw` is the
+    JSON object `dtlab oracle --json` prints for it."""
 
     name: str
-    answered: bool
-    note: str
+    verdict: str
+    message: str
     seconds: float
-    duplicates: int
     tets: np.ndarray | None
+    defects: dict[str, int]
     check: CheckReport | None
+    agree: bool | None
+    raw: dict[str, Any]
 
 
 @dataclass(frozen=True)
 class OracleReport:
-    """dtlab.oracle's verdict, the same as `dtlab oracle`'s: ok (ours is valid and
-    agrees with every valid answer; with perturb="sos" its tets equal CGAL's), the
-    problems found, every run, and every pair of answers compared ("dtlab vs cgal", ...)."""
+    """dtlab.oracle's verdict, the same as `dtlab oracle --json`'s: ok, exit (0 ok;
+    1 dtlab's result is wrong or differs from a proven peer; 3 some peer gave no
+    answer), the problems found, the peers not compared (no answer, or a wrong one),
+    dtlab's own run, every peer's run, and dtlab compared with every peer proven
+    Delaunay ("dtlab vs cgal", ...)."""
 
     ok: bool
+    exit: int
     problems: list[str]
-    runs: dict[str, OracleRun]
+    not_compared: list[str]
+    dtlab: OracleRun
+    peers: dict[str, OracleRun]
     comparisons: dict[str, Comparison]
 
 

@@ -61,7 +61,7 @@ def test_lower_dimensional_input():
     ({"perturb": "yes"}, "--perturb"),
     ({"order": "random"}, "--order"),
     ({"boundary": "box"}, "--boundary: expected infinite or bigtet"),
-    ({"boundary": "bigtet:-1"}, "--boundary: FACTOR must be positive"),
+    ({"boundary": "bigtet:-1"}, "--boundary: bigtet FACTOR '-1' is not in"),
     ({"eps_mode": "scaled"}, "--eps-mode"),
     ({"seed": -1}, "--seed"),
 ])
@@ -92,8 +92,8 @@ def test_bad_tets():
 
 
 def test_bad_other_arguments(tmp_path):
-    with pytest.raises(ValueError, match="unknown oracle 'qhull'"):
-        dtlab.oracle(GOOD, against=["qhull"])
+    with pytest.raises(ValueError, match="--against: .*'qhul'"):
+        dtlab.oracle(GOOD, against=["qhul"])
     with pytest.raises(ValueError, match="--box needs"):
         dtlab.voronoi(GOOD, box=(1, 0, 0, 0, 1, 1))
     with pytest.raises(ValueError, match="no points"):

@@ -1,7 +1,6 @@
 import json
 import shutil
 
-import numpy as np
 import pytest
 
 import dtlab
@@ -11,20 +10,31 @@ from conftest import write_xyz
 def test_agrees_with_cgal_and_tetgen(uniform):
     against = ["cgal"] + (["tetgen"] if shutil.which("tetgen") else [])
     r = dtlab.oracle(uniform, against=against)
-    assert r.ok and r.problems == []
-    assert list(r.runs) == ["dtlab"] + against
-    for run in r.runs.values():
-        assert run.answered and run.check.ok and run.tets.shape[1] == 4
+    assert r.ok and r.exit == 0 and r.problems == [] and r.not_compared == []
+    assert list(r.peers) == against
+    assert r.dtlab.verdict == "delaunay" and r.dtlab.check.ok
+    for run in r.peers.values():
+        assert run.verdict == "delaunay" and run.agree is True and run.tets.shape[1] == 4
     c = r.comparisons["dtlab vs cgal"]
     assert c.verdict == "identical" and c.detail == "agree (general position: identical tets)"
-    # CGAL's cells, as the oracle returns them, have dtlab's orientation.
-    assert dtlab.check(uniform, r.runs["cgal"].tets, orientation="positive").ok
+    # A peer's tets, as the oracle returns them, have dtlab's orientation.
+    assert dtlab.check(uniform, r.peers["cgal"].tets, orientation="positive").ok
 
 
-def test_missing_tetgen_is_no_answer(uniform):
+def test_missing_peer_is_no_answer(uniform):
     r = dtlab.oracle(uniform, against="tetgen", tetgen="/nonexistent/tetgen")
-    assert r.ok and not r.runs["tetgen"].answered and r.runs["tetgen"].note
-    assert r.comparisons == {}
+    assert not r.ok and r.exit == 3 and r.problems == []
+    assert r.peers["tetgen"].verdict == "not-installed" and r.peers["tetgen"].tets is None
+    assert r.comparisons == {} and r.not_compared == ["tetgen (not-installed)"]
+
+
+def test_bad_arguments(uniform):
+    with pytest.raises(ValueError, match="against"):
+        dtlab.oracle(uniform, against=["no-such-peer"])
+    with pytest.raises(ValueError, match="timeout"):
+        dtlab.oracle(uniform, against=["cgal"], timeout=float("nan"))
+    with pytest.raises(ValueError):
+        dtlab.oracle(uniform[:3], against=["cgal"])
 
 
 def test_same_verdicts_as_the_cli(tmp_path, cli):
@@ -36,13 +46,14 @@ def test_same_verdicts_as_the_cli(tmp_path, cli):
             proc = cli(*args)
             j = json.loads(proc.stdout)
             r = dtlab.oracle(pts, against=["cgal"], predicates=predicates, perturb=perturb)
-            assert r.ok == j["ok"] and r.problems == j["problems"], (family, predicates, perturb)
-            assert proc.returncode == (0 if r.ok else 1)
-            for name, run in r.runs.items():
-                assert run.answered == j["runs"][name]["answered"]
-                if run.check is not None:
-                    assert run.check.ok == j["runs"][name]["check"]["valid"]
-                    assert run.check.stats["tets"] == j["runs"][name]["check"]["tets"]
+            assert (r.ok, r.exit, r.problems) == (j["ok"], j["exit"], j["problems"]), (family, predicates, perturb)
+            assert proc.returncode == r.exit
+            assert r.dtlab.verdict == j["dtlab"]["verdict"]
+            assert r.dtlab.check.ok == j["dtlab"]["check"]["valid"]
+            for name, run in r.peers.items():
+                assert run.verdict == j["peers"][name]["verdict"]
+                assert run.agree == j["peers"][name].get("agree")
+            assert set(r.comparisons) == set(j["comparisons"])
             for pair, c in r.comparisons.items():
                 cj = j["comparisons"][pair]
                 assert (c.tets_equal, c.complexes_equal) == (cj["tets_equal"], cj["complexes_equal"])
