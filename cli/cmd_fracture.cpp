@@ -29,6 +29,10 @@ struct FractureArgs {
 };
 
 int run_fracture(const FractureArgs& a) {
+  if (a.out.empty() && !a.json && a.png.empty()) {  // never compute without writing
+    std::fprintf(stderr, "dtlab fracture: nothing to write: give --out DIR (or --json, --png FILE)\n");
+    return kBadInput;
+  }
   const auto method = parse_sample_method(a.sampler);
   if (!method || *method == SampleMethod::surface) {
     std::fprintf(stderr, "dtlab fracture: --sampler must be rays, sdf or winding (a volume sampler)\n");

@@ -374,7 +374,9 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   sub->add_option("--eps", args->eps, "epsilon backend: the band")->check(number_in(0, 1e300))->capture_default_str();
   sub->add_flag("--relative-eps", args->relative_eps, "epsilon backend: relative band");
   sub->add_option("--boundary", args->boundary, "infinite or bigtet[:FACTOR]")->capture_default_str();
-  sub->add_option("--oracle", args->oracle, "none, or a comma list of peers to compare with (cgal, tetgen, qhull, ...)")
+  sub->add_option("--against,--oracle", args->oracle,
+                  "none, or a comma list of peers to compare with (cgal, tetgen, qhull, ...), as in `dtlab oracle`; "
+                  "--oracle is the old spelling")
       ->capture_default_str();
   sub->add_option("--target", args->target,
                   "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...); its failures are shrunk into "
