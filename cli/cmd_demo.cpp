@@ -117,8 +117,8 @@ void add_demo_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<DemoArgs>();
   CLI::App* sub = app.add_subcommand("demo", "the whole pipeline on the built-in bumpy torus");
   sub->add_option("--out", args->out, "output folder")->capture_default_str();
-  sub->add_option("--points", args->points, "points sampled inside the torus")->check(count_in(4, 1e8))->capture_default_str();
-  sub->add_option("--pieces", args->pieces, "fracture pieces")->check(count_in(1, 100000))->capture_default_str();
+  sub->add_option("--points", args->points, "points sampled inside the torus")->transform(count_in(4, 1e8))->capture_default_str();
+  sub->add_option("--pieces", args->pieces, "fracture pieces")->transform(count_in(1, 100000))->capture_default_str();
   sub->add_flag("--no-oracles", args->no_oracles, "skip the CGAL and TetGen comparison");
   sub->add_flag("--json", args->json, "print a JSON summary on stdout (the steps' reports go to stderr)");
   sub->callback([args, &rc] { rc = run_demo(*args); });

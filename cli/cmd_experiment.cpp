@@ -83,9 +83,9 @@ void add_experiment_command(CLI::App& app, int& rc) {
   b->add_flag("--large", bench->large, "also n = 10^7 uniform and 10^6 for the other distributions");
   b->add_flag("--quick", bench->quick, "n up to 10^4, fewer predicate calls (seconds instead of minutes)");
   b->add_option("--runs", bench->runs, "runs per tool and size for n <= 10^5 (larger n: 1 run)")
-      ->check(count_in(1, 1000))->capture_default_str();
+      ->transform(count_in(1, 1000))->capture_default_str();
   b->add_option("--seed", bench->seed, "seed of the generated points")->capture_default_str();
-  b->add_option("--max-n", bench->max_n, "largest n (default 10^6, 10^7 with --large)")->check(count_in(4, 1e9));
+  b->add_option("--max-n", bench->max_n, "largest n (default 10^6, 10^7 with --large)")->transform(count_in(4, 1e9));
   b->add_flag("--no-figures", *bench_no_figures, "skip the matplotlib figures");
   auto bench_json = std::make_shared<bool>(false);
   b->add_flag("--json", *bench_json, "print a JSON summary (the report's headline facts) on stdout");

@@ -129,7 +129,7 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_option("--recurse", args->recurse, "pieces to fracture again (ids of the first level)")->delimiter(',');
   sub->add_option("--recurse-pieces", args->recurse_pieces, "pieces each --recurse piece is split into")
       ->check(CLI::Range(1ul, 10000ul))->capture_default_str();
-  sub->add_option("--threads", args->threads, "threads for the booleans (0: all)")->check(count_in(0, 1024))->capture_default_str();
+  sub->add_option("--threads", args->threads, "threads for the booleans (0: all)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--repair", args->repair,
                 "repair the mesh first (merge, drop degenerate, orient, stitch, fill holes, resolve self-intersections)");
   sub->add_flag("--split", args->split, "also write one OBJ per piece to OUT/pieces/");

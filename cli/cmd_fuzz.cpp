@@ -363,11 +363,11 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<FuzzArgs>();
   CLI::App* sub = app.add_subcommand("fuzz", "degeneracy fuzz campaigns: generate, build, check, shrink");
   sub->add_option("--family", args->families, "all, or a comma-separated list (see --list)");
-  sub->add_option("--cases", args->cases, "cases per family")->check(count_in(1, 1e12))->capture_default_str();
-  sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)")->check(count_in(0, 1e15));
+  sub->add_option("--cases", args->cases, "cases per family")->transform(count_in(1, 1e12))->capture_default_str();
+  sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)")->transform(count_in(0, 1e15));
   sub->add_option("--seed", args->seed, "campaign seed")->capture_default_str();
-  sub->add_option("--points", args->max_points, "largest number of points per case")->check(count_in(1, 1e7))->capture_default_str();
-  sub->add_option("--min-points", args->min_points, "smallest number of points per case")->check(count_in(1, 1e7))->capture_default_str();
+  sub->add_option("--points", args->max_points, "largest number of points per case")->transform(count_in(1, 1e7))->capture_default_str();
+  sub->add_option("--min-points", args->min_points, "smallest number of points per case")->transform(count_in(1, 1e7))->capture_default_str();
   auto* pred = sub->add_option("--predicates", args->predicates, "comma list of naive, epsilon, adaptive, exact")
                    ->capture_default_str();
   sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();
@@ -381,12 +381,12 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   sub->add_option("--target", args->target,
                   "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...); its failures are shrunk into "
                   "the corpus. Exit 1 when it failed, 3 when it is not installed");
-  sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->check(count_in(0, 1024))->capture_default_str();
+  sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_option("--out", args->out, "campaign folder: results*.jsonl and corpus/");
   sub->add_option("--shard", args->shard, "K/N: run only the cases with ordinal % N == K");
   sub->add_option("--replay", args->replay, "re-run a corpus: a .node file, a corpus or campaign folder");
   sub->add_flag("--no-shrink", args->no_shrink, "do not shrink failing cases");
-  sub->add_option("--shrink-budget", args->shrink_budget, "builds per shrunk case")->check(count_in(0, 1e9))->capture_default_str();
+  sub->add_option("--shrink-budget", args->shrink_budget, "builds per shrunk case")->transform(count_in(0, 1e9))->capture_default_str();
   sub->add_flag("--list", args->list, "list the point-set families and what each targets");
   auto* summarize = sub->add_option("--summarize", args->summarize_dirs,
                                     "[DIR...] merge the results of campaign folders (shards; default --out) into "

@@ -112,7 +112,7 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->check(number_in(0, 1e6))->capture_default_str();
   sub->add_option("--predicates", args->predicates, "Delaunay predicates: naive|epsilon|adaptive|exact")
       ->capture_default_str();
-  sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->check(count_in(0, 1024))->capture_default_str();
+  sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
   sub->add_flag("!--no-obj", args->obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");

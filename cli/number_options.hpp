@@ -2,7 +2,8 @@
 // Validators for every numeric command-line option: the value must be a finite number
 // (no nan, inf or 1e999) within a stated range, and whole where a count is meant.
 // A violation is a CLI11 validation error, so exit code 2 with a one-line message.
-// Usage: sub->add_option("--margin", m)->check(number_in(0, 100));
+// Usage: sub->add_option("--margin", m)->check(number_in(0, 100)), and for counts
+// ->transform(count_in(1, 1e9)) (a transform, so "1e5" reaches the integer as 100000).
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -45,10 +46,23 @@ inline CLI::Validator number_in(double lo, double hi) {
       "NUMBER in [" + number_options_detail::fmt(lo) + ", " + number_options_detail::fmt(hi) + "]");
 }
 
-// A whole number in [lo, hi] (counts, sizes, thread numbers, seconds of budget).
+// A whole number in [lo, hi] (counts, sizes, thread numbers, seconds of budget). The
+// same syntax as every other number ("1e5" is 100000): the text is rewritten in
+// digits, so an integer option accepts it.
 inline CLI::Validator count_in(double lo, double hi) {
   return CLI::Validator(
-      [lo, hi](std::string& s) { return number_options_detail::check_number(s, lo, hi, true); },
+      [lo, hi](std::string& s) {
+        std::string why = number_options_detail::check_number(s, lo, hi, true);
+        if (why.empty()) {
+          double v = 0;
+          const char* b = s.data() + (!s.empty() && s[0] == '+');
+          std::from_chars(b, s.data() + s.size(), v);
+          char buf[32];
+          std::snprintf(buf, sizeof buf, "%.0f", v);
+          s = buf;
+        }
+        return why;
+      },
       "INTEGER in [" + number_options_detail::fmt(lo) + ", " + number_options_detail::fmt(hi) + "]");
 }
 

@@ -54,6 +54,8 @@ expect 0 "mesh check a solid" -- "$dtlab" mesh check "$tmp/cube.off"
 printf 'OFF\n8 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n' > "$tmp/open.off"
 expect 1 "mesh check an open box" -- "$dtlab" mesh check "$tmp/open.off"
 grep -q "not closed: 4 boundary edges in 1 boundary loop" "$tmp/out" || { echo "FAIL: mesh check words"; fails=$((fails + 1)); }
+expect 0 "counts take the syntax of every number (2e0)" -- "$dtlab" fuzz --family uniform --cases 2e0 --no-shrink --out "$tmp/fz_e"
+expect 2 "a count must be whole" -- "$dtlab" fuzz --family uniform --cases 2.5 --out "$tmp/fz_h"
 expect 2 "fracture without an output" -- "$dtlab" fracture builtin --pieces 2
 grep -q "nothing to write" "$tmp/err" || { echo "FAIL: fracture without --out"; fails=$((fails + 1)); }
 expect 2 "fracture refuses an open box" -- "$dtlab" fracture "$tmp/open.off" --pieces 4 --out "$tmp/open_frac"
