@@ -1,4 +1,5 @@
 // Orchestration and report of `dtlab experiment benchmark`.
+#include "kernel/output_file.hpp"
 #include "experiments/benchmark.hpp"
 
 #include <algorithm>
@@ -247,10 +248,9 @@ ExperimentResult run_benchmark(const BenchmarkOptions& options) {
              "baseline_mb", "own_mb", "tets", "bytes_per_tet", "note"},
             sum_rows);
   const json env = environment(options.command_line, options.seed);
-  std::ofstream(dir / "data" / "results.json")
-      << json{{"experiment", "benchmark"}, {"environment", env}, {"summary", rows}, {"runs", runs_json},
-              {"builds", builds}, {"predicates", pred}}.dump(1) << "\n";
-  std::ofstream(dir / "environment.json") << env.dump(2) << "\n";
+  write_text_file((dir / "data" / "results.json").string(), json{{"experiment", "benchmark"}, {"environment", env}, {"summary", rows}, {"runs", runs_json},
+              {"builds", builds}, {"predicates", pred}}.dump(1) + "\n");
+  write_text_file((dir / "environment.json").string(), env.dump(2) + "\n");
   write_text(dir / "commands.sh", "#!/bin/sh\n# the command that wrote this report\n" + options.command_line +
                                       "\n# redraw the figures from data/\n/usr/bin/python3 plot_figures.py .\n");
   json facts = {{"rows", rows.size()}, {"dtlab_failed", dtlab_failed}};
@@ -302,7 +302,7 @@ ExperimentResult run_benchmark(const BenchmarkOptions& options) {
   write_text(dir / "report.md", o.str());
   write_text(dir / "report.html", markdown_to_html(o.str(), "dtlab benchmark"));
   facts["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::ofstream(dir / "data" / "facts.json") << facts.dump(2) << "\n";
+  write_text_file((dir / "data" / "facts.json").string(), facts.dump(2) + "\n");
   step("done");
   return {dtlab_failed ? 1 : 0, facts};
 }

@@ -1,5 +1,6 @@
 // Failure rates of the non-robust and robust backends (rates_section) and of the
 // tolerance "fix" over a sweep of eps (epsilon_section).
+#include <sstream>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -7,6 +8,7 @@
 #include <fstream>
 #include <map>
 
+#include "kernel/output_file.hpp"
 #include "experiments/point_sources.hpp"
 #include "experiments/report.hpp"
 #include "experiments/thesis_parts.hpp"
@@ -89,13 +91,14 @@ std::uint64_t case_seed(std::uint64_t seed, const std::string& what, std::uint64
 
 void write_csv(const std::filesystem::path& file, const std::vector<std::string>& header,
                const std::vector<std::vector<std::string>>& rows) {
-  std::ofstream out(file);
+  std::ostringstream out;
   for (std::size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i];
   out << "\n";
   for (const auto& r : rows) {
     for (std::size_t i = 0; i < r.size(); ++i) out << (i ? "," : "") << r[i];
     out << "\n";
   }
+  write_text_file(file.string(), out.str());
 }
 
 nlohmann::json rates_section(const SectionContext& c) {

@@ -1,3 +1,4 @@
+#include "kernel/output_file.hpp"
 #include "experiments/leaderboard.hpp"
 
 #include <algorithm>
@@ -224,7 +225,7 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
 
   // leaderboard.csv
   {
-    std::ofstream csv(dir / "leaderboard.csv");
+    std::ostringstream csv;
     csv << "peer,source,n,case,seed,lower_dimensional,verdict,defects,tets,seconds,wall_seconds,peak_rss_bytes,"
            "message,shrunk_points,corpus_file\n";
     for (const PeerCase& c : all)
@@ -233,12 +234,14 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
           << csv_escape(counts_field(c.run)) << "," << (c.run.report ? c.run.report->stats.tets : 0) << ","
           << c.run.seconds << "," << c.run.wall_seconds << "," << c.run.peak_rss_bytes << ","
           << csv_escape(c.run.message) << "," << c.shrunk_points << "," << c.corpus_file << "\n";
-    std::ofstream sp(dir / "data" / "speed.csv");
+    write_text_file((dir / "leaderboard.csv").string(), csv.str());
+    std::ostringstream sp;
     sp << "peer,source,n,verdict,tets,seconds,wall_seconds,peak_rss_bytes\n";
     for (const auto& s : speed)
       sp << s.run.name << "," << s.source << "," << s.n << "," << verdict_name(s.run.verdict) << ","
          << (s.run.report ? s.run.report->stats.tets : 0) << "," << s.run.seconds << "," << s.run.wall_seconds
          << "," << s.run.peak_rss_bytes << "\n";
+    write_text_file((dir / "data" / "speed.csv").string(), sp.str());
   }
 
   // Cells of the heatmap.
@@ -271,7 +274,7 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
   json versions = json::object();
   for (const auto& p : peers) versions[p] = peer_version(p, po);
   env["peers"] = versions;
-  std::ofstream(dir / "environment.json") << env.dump(2) << "\n";
+  write_text_file((dir / "environment.json").string(), env.dump(2) + "\n");
 
   // report.md
   std::ostringstream o;
@@ -407,7 +410,7 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
   facts["peers"] = per;
   facts["not_installed"] = not_installed;
   facts["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::ofstream(dir / "data" / "facts.json") << facts.dump(2) << "\n";
+  write_text_file((dir / "data" / "facts.json").string(), facts.dump(2) + "\n");
   step("done");
   return {robust_failed ? 1 : 0, facts};
 }

@@ -1,8 +1,10 @@
 // A picture-sized naive failure: the first near-degenerate input whose naive
 // (unperturbed) build has inverted or overlapping tets, shrunk by delta debugging to
 // a handful of points, with the exact checker's witnesses and the correct result.
+#include <sstream>
 #include <fstream>
 
+#include "kernel/output_file.hpp"
 #include "experiments/point_sources.hpp"
 #include "experiments/thesis_parts.hpp"
 #include "fuzz/shrink.hpp"
@@ -70,11 +72,12 @@ nlohmann::json overlap_case_section(const SectionContext& c) {
                           {"naive_failure", naive.failure ? failure_name(naive.failure->kind) : ""},
                           {"exact_tets", tets_json(exact.mesh.tets)}, {"defects", defects},
                           {"defect_counts", counts}, {"shrink_tests", shrunk.tests}, {"minimal", shrunk.minimal}};
-      std::ofstream(c.dir / "data" / "overlap_case.json") << j.dump(1) << "\n";
+      write_text_file((c.dir / "data" / "overlap_case.json").string(), j.dump(1) + "\n");
       // the coordinates, bit exact, to replay with `dtlab tetra`
-      std::ofstream xyz(c.dir / "data" / "overlap_case.xyz");
+      std::ostringstream xyz;
       xyz.precision(17);
       for (const auto& p : shrunk.points) xyz << p.x << " " << p.y << " " << p.z << "\n";
+      write_text_file((c.dir / "data" / "overlap_case.xyz").string(), xyz.str());
       return j;
     }
   return nullptr;

@@ -1,3 +1,4 @@
+#include "kernel/output_file.hpp"
 #include "experiments/peer_campaign.hpp"
 
 #include <algorithm>
@@ -77,7 +78,7 @@ void shrink_and_save(PeerCase& c, const std::vector<Point3>& points, const PeerO
       {"command", "dtlab oracle " + c.corpus_file + " --against " + c.peer},
       {"original_command", original_command},
   };
-  std::ofstream(dir / (stem + ".json")) << j.dump(2) << "\n";
+  write_text_file((dir / (stem + ".json")).string(), j.dump(2) + "\n");
 }
 
 std::vector<PeerCase> run_peer_campaign(const PeerCampaignOptions& o) {

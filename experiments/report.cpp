@@ -1,3 +1,4 @@
+#include "kernel/output_file.hpp"
 #include "experiments/report.hpp"
 
 #include <array>
@@ -142,8 +143,7 @@ std::string environment_markdown(const nlohmann::json& env) {
 }
 
 void write_text(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
+  write_text_file(file.string(), text);
 }
 
 int draw_figures(const fs::path& dir) {

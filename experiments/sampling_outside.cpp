@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "kernel/output_file.hpp"
 #include "experiments/report.hpp"
 #include "experiments/thesis_parts.hpp"
 #include "sampling/bumpy_torus.hpp"
@@ -47,7 +48,7 @@ nlohmann::json sampling_section(const SectionContext& c) {
         nlohmann::json pts = nlohmann::json::array();
         for (std::size_t i = 0; i < out.points.size(); ++i)
           if (std::abs(out.points[i].y) < 0.05) pts.push_back({out.points[i].x, out.points[i].z, inside[i] ? 1 : 0});
-        std::ofstream(c.dir / "data" / ("slice_" + m + ".json")) << pts.dump() << "\n";
+        write_text_file((c.dir / "data" / ("slice_" + m + ".json")).string(), pts.dump() + "\n");
       }
     }
   }

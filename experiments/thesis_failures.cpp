@@ -1,4 +1,5 @@
 // Orchestration and report of `dtlab experiment thesis-failures`.
+#include "kernel/output_file.hpp"
 #include "experiments/thesis_failures.hpp"
 
 #include <algorithm>
@@ -502,12 +503,11 @@ ExperimentResult run_thesis_failures(const ThesisFailuresOptions& options) {
   const json env = environment(options.command_line, options.seed);
   json facts = compute_facts(rates, eps, bigtet, cost, sampling, overlap);
   facts["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::ofstream(dir / "data" / "facts.json") << facts.dump(2) << "\n";
-  std::ofstream(dir / "data" / "results.json")
-      << json{{"experiment", "thesis-failures"}, {"quick", options.quick}, {"environment", env},
+  write_text_file((dir / "data" / "facts.json").string(), facts.dump(2) + "\n");
+  write_text_file((dir / "data" / "results.json").string(), json{{"experiment", "thesis-failures"}, {"quick", options.quick}, {"environment", env},
               {"rates", rates}, {"epsilon", eps}, {"bigtet", bigtet}, {"cost", cost},
-              {"sampling", sampling}, {"overlap_case", overlap}}.dump(1) << "\n";
-  std::ofstream(dir / "environment.json") << env.dump(2) << "\n";
+              {"sampling", sampling}, {"overlap_case", overlap}}.dump(1) + "\n");
+  write_text_file((dir / "environment.json").string(), env.dump(2) + "\n");
   write_text(dir / "commands.sh", "#!/bin/sh\n# the command that wrote this report\n" + options.command_line +
                                       "\n# redraw the figures from data/\n/usr/bin/python3 plot_figures.py .\n");
   if (options.figures) {

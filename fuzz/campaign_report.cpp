@@ -1,3 +1,4 @@
+#include "kernel/output_file.hpp"
 #include "fuzz/campaign_report.hpp"
 
 #include <algorithm>
@@ -15,9 +16,7 @@ namespace fs = std::filesystem;
 namespace {
 
 void write_file(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  write_text_file(file.string(), text);
 }
 
 nlohmann::json campaign_settings(const CampaignOptions& o) {
