@@ -9,6 +9,10 @@ set(DTLAB_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/dtlab)
 set_target_properties(dtlab_predicates PROPERTIES EXPORT_NAME predicates INTERFACE_INCLUDE_DIRECTORIES
   "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>;$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/dtlab>")
 set_target_properties(dtlab_kernel PROPERTIES EXPORT_NAME kernel)
+# A sanitizer build's libraries need the sanitizer runtimes wherever they are linked.
+if(DTLAB_SANITIZE)
+  target_link_options(dtlab_predicates INTERFACE -fsanitize=address,undefined)
+endif()
 install(TARGETS dtlab_predicates dtlab_kernel EXPORT dtlabTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(module predicates kernel)
