@@ -1,5 +1,4 @@
 // Orchestration and report of `dtlab experiment benchmark`.
-#include "kernel/output_file.hpp"
 #include "experiments/benchmark.hpp"
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include <malloc.h>
 #include <sstream>
 
+#include "kernel/output_file.hpp"
 #include "bench/whole_run.hpp"
 #include "experiments/point_sources.hpp"
 #include "experiments/predicate_cost.hpp"

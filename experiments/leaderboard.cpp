@@ -1,4 +1,3 @@
-#include "kernel/output_file.hpp"
 #include "experiments/leaderboard.hpp"
 
 #include <algorithm>
@@ -9,6 +8,7 @@
 #include <memory>
 #include <sstream>
 
+#include "kernel/output_file.hpp"
 #include "experiments/peer_campaign.hpp"
 #include "experiments/report.hpp"
 #include "experiments/thesis_parts.hpp"

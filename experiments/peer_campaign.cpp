@@ -1,4 +1,3 @@
-#include "kernel/output_file.hpp"
 #include "experiments/peer_campaign.hpp"
 
 #include <algorithm>
@@ -11,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fuzz/work_queue.hpp"
+#include "kernel/output_file.hpp"
 #include "fuzz/campaign.hpp"
 #include "fuzz/case_seed.hpp"
 #include "fuzz/families.hpp"
@@ -91,9 +92,7 @@ std::vector<PeerCase> run_peer_campaign(const PeerCampaignOptions& o) {
     for (std::size_t i = 0; i < o.cases; ++i)
       if (!o.only_case || *o.only_case == i) work.push_back({&s, i});
   std::vector<PeerCase> results(work.size());
-  std::atomic<std::size_t> next{0};
   std::mutex lock;
-  std::exception_ptr error;
   const auto run_one = [&](std::size_t w) {
     PeerCase c;
     c.peer = o.peer;
@@ -117,26 +116,9 @@ std::vector<PeerCase> run_peer_campaign(const PeerCampaignOptions& o) {
     if (o.on_case) o.on_case(c);
     results[w] = std::move(c);
   };
-  const auto worker = [&] {
-    for (;;) {
-      const std::size_t w = next.fetch_add(1);
-      if (w >= work.size()) return;
-      try {
-        run_one(w);
-      } catch (...) {
-        std::lock_guard<std::mutex> g(lock);
-        if (!error) error = std::current_exception();
-        next = work.size();
-        return;
-      }
-    }
-  };
-  const unsigned jobs = std::max(1u, std::min<unsigned>(o.jobs, static_cast<unsigned>(work.size())));
-  std::vector<std::thread> threads;
-  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
-  worker();
-  for (auto& t : threads) t.join();
-  if (error) std::rethrow_exception(error);
+  // The first exception (a folder that cannot be written) stops the queue and is
+  // rethrown here.
+  fuzz::run_work_queue(work.size(), o.jobs, run_one);
   return results;
 }
 

@@ -1,4 +1,3 @@
-#include "kernel/output_file.hpp"
 #include "experiments/report.hpp"
 
 #include <array>
@@ -11,6 +10,7 @@
 
 #include <sys/wait.h>
 
+#include "kernel/output_file.hpp"
 #include "dtlab/build_info.hpp"
 #include "fuzz/rate_interval.hpp"
 #include "fuzz/run_environment.hpp"

@@ -1,5 +1,4 @@
 // Orchestration and report of `dtlab experiment thesis-failures`.
-#include "kernel/output_file.hpp"
 #include "experiments/thesis_failures.hpp"
 
 #include <algorithm>
@@ -9,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "kernel/output_file.hpp"
 #include "experiments/report.hpp"
 #include "experiments/thesis_parts.hpp"
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "fuzz/work_queue.hpp"
 #include "dtlab/build_info.hpp"
 #include "fuzz/campaign_report.hpp"
 #include "fuzz/case_seed.hpp"
@@ -129,10 +130,8 @@ CampaignResult run_campaign(const CampaignOptions& o) {
   write_campaign_environment(o);
 
   std::mutex lock;
-  std::atomic<std::size_t> next{0};
   std::size_t finished = 0, failing = 0;
 
-  std::exception_ptr error;
   const auto run_one = [&](std::size_t w) {
     const WorkItem item = work[w];
     CaseRecord base;
@@ -184,29 +183,9 @@ CampaignResult run_campaign(const CampaignOptions& o) {
     ++result.ran;
     if (o.progress) o.progress(finished, work.size(), failing);
   };
-  // A worker stops the campaign at the first exception (a folder that cannot be
-  // written); the exception is rethrown on the calling thread.
-  const auto worker = [&] {
-    for (;;) {
-      const std::size_t w = next.fetch_add(1);
-      if (w >= work.size()) return;
-      try {
-        run_one(w);
-      } catch (...) {
-        std::lock_guard<std::mutex> g(lock);
-        if (!error) error = std::current_exception();
-        next = work.size();
-        return;
-      }
-    }
-  };
-
-  const unsigned jobs = std::max(1u, std::min<unsigned>(o.jobs, static_cast<unsigned>(work.size())));
-  std::vector<std::thread> threads;
-  for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
-  worker();
-  for (auto& t : threads) t.join();
-  if (error) std::rethrow_exception(error);
+  // The first exception (a folder that cannot be written) stops the queue and is
+  // rethrown here.
+  run_work_queue(work.size(), o.jobs, run_one);
   // A shard's folder may be shared with running shards: their merged summary is
   // written by `dtlab fuzz --summarize` once all are done.
   if (o.shards == 1) write_summary_files(o.out_dir, summarize(result.records));

@@ -1,4 +1,3 @@
-#include "kernel/output_file.hpp"
 #include "fuzz/campaign_report.hpp"
 
 #include <algorithm>
@@ -7,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "kernel/output_file.hpp"
 #include "fuzz/run_environment.hpp"
 
 namespace dtlab::fuzz {

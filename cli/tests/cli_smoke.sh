@@ -2,22 +2,7 @@
 # End-to-end checks of the dtlab command as a user runs it: exit codes 0/1/2,
 # one-line file:line errors, --help and --json on every subcommand, and a small demo.
 set -u
-dtlab="$1"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-pass=0
-expect() {  # expect CODE DESCRIPTION -- command...
-  local want=$1 what=$2
-  shift 3
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL: $what: exit $got, expected $want"; sed 's/^/  | /' "$tmp/err" | head -5; fails=$((fails + 1))
-  else
-    pass=$((pass + 1))
-  fi
-}
+. "$(dirname "$0")/expect.sh"
 for sub in tetra check oracle fuzz sample voronoi fracture bench experiment demo mesh "mesh check" "mesh repair"; do
   expect 0 "$sub --help" -- "$dtlab" $sub --help
 done

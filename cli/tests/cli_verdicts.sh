@@ -3,22 +3,7 @@
 # on a defect), a non-robust build without it says that it is unverified, `check`
 # prints a volume only for a proven cover, and `voronoi` names a failed build (exit 1).
 set -u
-dtlab="$1"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-pass=0
-expect() {  # expect CODE DESCRIPTION -- command...
-  local want=$1 what=$2
-  shift 3
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL: $what: exit $got, expected $want"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1))
-  else
-    pass=$((pass + 1))
-  fi
-}
+. "$(dirname "$0")/expect.sh"
 has() {  # has FILE PATTERN DESCRIPTION
   if grep -q -- "$2" "$tmp/$1"; then pass=$((pass + 1)); else echo "FAIL: $3 (no '$2' in $1)"; sed 's/^/  | /' "$tmp/$1" | head -5; fails=$((fails + 1)); fi
 }

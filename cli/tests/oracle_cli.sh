@@ -2,22 +2,7 @@
 # `dtlab oracle` and `dtlab fuzz --target` as a user runs them: verdicts per peer,
 # exit codes 0 (ok), 1 (dtlab wrong), 2 (bad usage), 3 (some peer gave no answer).
 set -u
-dtlab="$1"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-pass=0
-expect() {  # expect CODE DESCRIPTION -- command...
-  local want=$1 what=$2
-  shift 3
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL: $what: exit $got, expected $want"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -20; fails=$((fails + 1))
-  else
-    pass=$((pass + 1))
-  fi
-}
+. "$(dirname "$0")/expect.sh"
 has() {  # has PATTERN DESCRIPTION: the last command's stdout matches
   grep -qE -- "$1" "$tmp/out" || { echo "FAIL: $2: no '$1' in"; sed 's/^/  | /' "$tmp/out" | head -20; fails=$((fails + 1)); }
 }
