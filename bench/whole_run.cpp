@@ -24,14 +24,16 @@ struct ChildReport {
   char note[200];
 };
 
-ChildReport run_in_child(const std::string& tool, std::span<const Point3> points,
+ChildReport run_in_child(const std::string& tool, std::vector<Point3>& points,
                          const PredicateSpec& spec, const BuildOptions& options) {
   ChildReport rep{};
   if (tool == "dtlab") {
     BuildOptions timed = options;
     timed.count_stages = false;  // no per-call counting in timed runs
     const auto t0 = std::chrono::steady_clock::now();
-    BuildResult r = build_delaunay(points, spec, timed);
+    // The child's copy of the caller's points is handed to the build, as a program that
+    // read them would: one copy of the points at the peak.
+    BuildResult r = build_delaunay(std::move(points), spec, timed);
     rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     rep.ok = !r.failure;
     rep.tets = r.mesh.tets.size();
@@ -60,7 +62,7 @@ ChildReport run_in_child(const std::string& tool, std::span<const Point3> points
 
 }  // namespace
 
-RunMeasure measure_run(const std::string& tool, std::span<const Point3> points,
+RunMeasure measure_run(const std::string& tool, std::vector<Point3>& points,
                        const PredicateSpec& spec, const BuildOptions& options) {
   RunMeasure m;
   m.tool = tool;

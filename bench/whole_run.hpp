@@ -23,8 +23,9 @@ struct RunMeasure {
   std::string note;
 };
 
-// One run of `tool` on `points` in a forked child.
-RunMeasure measure_run(const std::string& tool, std::span<const Point3> points,
+// One run of `tool` on `points` in a forked child (the child may consume its copy of
+// `points`; the caller's is unchanged).
+RunMeasure measure_run(const std::string& tool, std::vector<Point3>& points,
                        const PredicateSpec& spec, const BuildOptions& options);
 
 struct BenchRow {

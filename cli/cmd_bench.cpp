@@ -1,4 +1,6 @@
 // dtlab bench: whole runs of dtlab, CGAL and TetGen on the same points.
+#include <malloc.h>
+
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -40,6 +42,7 @@ int run_bench(const BenchArgs& a) {
     for (double size : a.sizes) {
       const auto n = static_cast<std::size_t>(size);
       std::vector<Point3> points = generate_points(dist, n, a.seed);
+      malloc_trim(0);  // what generating them freed goes back to the system before the children fork
       for (const std::string& tool : a.tools) {
         BenchRow row{dist, n, tool, {}};
         for (int r = 0; r < a.runs; ++r) row.runs.push_back(measure_run(tool, points, spec, options));

@@ -33,7 +33,7 @@ bool robust_backend(const std::string& predicates) { return predicates == "adapt
 int run_tetra(const TetraArgs& a) {
   const BuildOptions options = a.kernel.build_options();
   PointFile in = read_input_points(a.input);
-  BuildResult r = build_delaunay(in.points, a.kernel.predicate_spec(), options);
+  BuildResult r = build_delaunay(std::move(in.points), a.kernel.predicate_spec(), options);
   if (!a.out.empty()) {
     write_tetgen(a.out, r.mesh);
     if (a.vtu) write_vtu(a.out + ".vtu", r.mesh);

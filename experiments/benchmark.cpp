@@ -181,7 +181,7 @@ ExperimentResult run_benchmark(const BenchmarkOptions& options) {
     for (std::size_t n : p.sizes) {
       const std::uint64_t seed = case_seed(options.seed, "benchmark/" + p.distribution, n, 0);
       step(p.distribution + " n=" + std::to_string(n));
-      const std::vector<Point3> points = experiment_points(p.distribution, n, seed);
+      std::vector<Point3> points = experiment_points(p.distribution, n, seed);
       BuildOptions bo;
       bo.seed = seed;
       // the forked child's resident memory before it does anything: the baseline (the

@@ -21,6 +21,14 @@ const char* failure_name(FailureKind k) {
 
 BuildResult build_delaunay(std::span<const Point3> points, const PredicateSpec& spec,
                            const BuildOptions& options) {
+  std::vector<Point3> copy;
+  copy.reserve(points.size() + 4);  // the build appends the infinite vertex or the bigtet corners
+  copy.assign(points.begin(), points.end());
+  return build_delaunay(std::move(copy), spec, options);
+}
+
+BuildResult build_delaunay(std::vector<Point3>&& points, const PredicateSpec& spec,
+                           const BuildOptions& options) {
   // No predicate has a sign for a NaN or an infinity: such input is refused.
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point3& p = points[i];
@@ -37,7 +45,7 @@ BuildResult build_delaunay(std::span<const Point3> points, const PredicateSpec& 
   if (auto* adaptive = std::get_if<AdaptivePredicates>(&*choice); adaptive && options.count_stages)
     adaptive->stats = &stages;
   BuildResult r = visit_backend(*choice, spec.perturb,
-                                [&](const auto& preds) { return build_with(points, preds, options); });
+                                [&](const auto& preds) { return build_with(std::move(points), preds, options); });
   for (int s = 0; s < static_cast<int>(AdaptiveStage::kCount); ++s) {
     const std::string name(kAdaptiveStageNames[s]);
     if (stages.orient3d[s]) r.stats.stages.push_back({"orient3d:" + name, stages.orient3d[s]});

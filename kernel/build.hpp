@@ -73,5 +73,10 @@ struct BuildResult {
 
 BuildResult build_delaunay(std::span<const Point3> points, const PredicateSpec& predicates,
                            const BuildOptions& options = {});
+// The same, taking ownership of the points: they are renumbered in place and come back
+// in input order as the result's points, so the build holds one copy of them instead
+// of two (24 bytes per point less at the peak).
+BuildResult build_delaunay(std::vector<Point3>&& points, const PredicateSpec& predicates,
+                           const BuildOptions& options = {});
 
 }  // namespace dtlab

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
+#include <vector>
 
 #ifdef __linux__
 #include <sys/mman.h>
@@ -84,31 +86,50 @@ inline void restore_input_order(std::vector<Point3>& points, std::vector<std::ui
     }
 }
 
+// Moves points[j] to position order[j] for every j: the renumbering into insertion
+// order, in place (`order` is the insertion order: the inverse is formed, then consumed).
+inline void apply_insertion_order(std::vector<Point3>& points, const std::vector<std::uint32_t>& order) {
+  std::vector<std::uint32_t> rank(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) rank[order[k]] = static_cast<std::uint32_t>(k);
+  restore_input_order(points, rank);
+}
+
 }  // namespace detail
 
+// `pts` holds the input points in input order; the build owns it, permutes it in place
+// and hands it back in input order as the result's points (no second copy).
 template <PredicateBackend B>
-BuildResult build_with(std::span<const Point3> input, const B& pred, const BuildOptions& opt) {
+BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOptions& opt) {
   BuildResult res;
-  const auto n = static_cast<std::uint32_t>(input.size());
+  const auto n = static_cast<std::uint32_t>(pts.size());
   // Vertex ids are insertion ranks: vertex k is input point order[k], stored at
   // pts[k], so consecutive insertions read neighbouring coordinates. The output is
   // translated back to input indices.
   std::vector<std::uint32_t> order;
   if (opt.order == InsertionOrder::brio) {
-    order = brio_order(input, opt.seed);
+    order = brio_order(pts, opt.seed);
   } else {
     order.resize(n);
     std::iota(order.begin(), order.end(), 0u);
   }
-  std::vector<Point3> pts;
+  // The bigtet is computed from the input before the renumbering (it reads every point).
+  std::optional<EnclosingTet> big;
+  if (opt.boundary == Boundary::bigtet && n >= 4) big = enclosing_tet(pts, opt.bigtet_factor);
   pts.reserve(std::size_t(n) + 4);  // room for the infinite vertex or the bigtet corners
-  for (std::uint32_t k = 0; k < n; ++k) pts.push_back(input[order[k]]);
+  detail::apply_insertion_order(pts, order);
 
+  // The points go back to input order (a copy of `order`: restoring consumes it).
+  const auto give_back_points = [&] {
+    pts.resize(n);
+    std::vector<std::uint32_t> o = order;
+    detail::restore_input_order(pts, o);
+    res.mesh.points = std::move(pts);
+  };
   auto lower_dimensional = [&](const char* why) {
     res.failure = BuildFailure{FailureKind::lower_dimensional, -1, why};
     res.skipped.resize(n);
     std::iota(res.skipped.begin(), res.skipped.end(), 0u);
-    res.mesh.points.assign(input.begin(), input.end());
+    give_back_points();
     return res;
   };
 
@@ -142,15 +163,14 @@ BuildResult build_with(std::span<const Point3> input, const B& pred, const Build
     inf = n;
   } else {
     // The thesis's big enclosing tetrahedron, proven to hold every point (exactly).
-    const EnclosingTet big = enclosing_tet(input, opt.bigtet_factor);
-    if (!big.valid()) {
-      res.failure = BuildFailure{FailureKind::outside_boundary, -1, big.defect};
+    if (!big->valid()) {
+      res.failure = BuildFailure{FailureKind::outside_boundary, -1, big->defect};
       res.skipped = order;
       std::sort(res.skipped.begin(), res.skipped.end());
-      res.mesh.points.assign(input.begin(), input.end());
+      give_back_points();
       return res;
     }
-    for (const Point3& q : big.corners) pts.push_back(q);
+    for (const Point3& q : big->corners) pts.push_back(q);
     first[0] = n, first[1] = n + 1, first[2] = n + 2, first[3] = n + 3;
     if (pred.orient3d(pts[n], pts[n + 1], pts[n + 2], pts[n + 3]) < 0) std::swap(first[0], first[1]);
   }

@@ -1,9 +1,13 @@
 #include "kernel/tet_io.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cstdio>
+#include <cstring>
 #include <memory>
+#include <optional>
 
+#include "kernel/input_file.hpp"
 #include "kernel/line_reader.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
@@ -21,7 +25,100 @@ void write_tetgen(const std::string& prefix, const Tetrahedralization& t) {
   f.close();
 }
 
+namespace {
+
+// The common shape of an .ele file, read in 1 MiB blocks without tokenizing:
+// a header `N [4 [0]]`, then exactly N lines of five unsigned integers separated by
+// blanks, then nothing but blanks. Anything else (comments, attributes, CR, commas,
+// signs, an index out of range, a short file) returns nothing and the strict reader
+// below reads the file again: it is the authority on every error message, and on
+// the files this path takes it would give the same tets.
+class PlainEleReader {
+ public:
+  PlainEleReader(const std::string& path, int first_index, std::size_t point_count)
+      : path_(path), f_(std::fopen(path.c_str(), "rb")), first_(first_index), points_(point_count), buf_(1 << 20) {
+    at_ = end_ = buf_.data();
+  }
+  ~PlainEleReader() {
+    if (f_) std::fclose(f_);
+  }
+  PlainEleReader(const PlainEleReader&) = delete;
+  PlainEleReader& operator=(const PlainEleReader&) = delete;
+
+  std::optional<std::vector<Tet>> read() {
+    if (!f_) return std::nullopt;
+    std::uint64_t head[3] = {0, 4, 0};
+    if (line(head, 3) < 1 || head[1] != 4 || head[2] != 0) return std::nullopt;
+    // The whole count is reserved when the (regular) file can hold it: no regrowth, no copy.
+    std::vector<Tet> tets;
+    const auto bytes = input_file_size(path_);
+    tets.reserve(bytes && count_fits(static_cast<long>(std::min<std::uint64_t>(head[0], LONG_MAX)), 5, bytes)
+                     ? head[0]
+                     : std::min<std::uint64_t>(head[0], kMaxReserve));
+    std::uint64_t v[5];
+    for (std::uint64_t i = 0; i < head[0]; ++i) {
+      if (line(v, 5) != 5) return std::nullopt;
+      Tet k{};
+      for (int j = 0; j < 4; ++j) {
+        if (v[1 + j] < std::uint64_t(first_) || v[1 + j] - std::uint64_t(first_) >= points_) return std::nullopt;
+        k[j] = static_cast<std::uint32_t>(v[1 + j] - std::uint64_t(first_));
+      }
+      std::swap(k[0], k[1]);
+      tets.push_back(k);
+    }
+    // Nothing but blanks after the last tet.
+    for (;;) {
+      for (; at_ != end_; ++at_)
+        if (*at_ != ' ' && *at_ != '\t' && *at_ != '\n') return std::nullopt;
+      if (!refill()) return tets;
+    }
+  }
+
+ private:
+  // Moves the unread bytes to the front and reads more; false when nothing was added.
+  bool refill() {
+    const std::size_t left = static_cast<std::size_t>(end_ - at_);
+    if (left == buf_.size()) return false;  // a line longer than the buffer: not this path's
+    std::memmove(buf_.data(), at_, left);
+    at_ = buf_.data();
+    const std::size_t got = std::fread(buf_.data() + left, 1, buf_.size() - left, f_);
+    end_ = buf_.data() + left + got;
+    return got > 0;
+  }
+  // One newline-terminated line of 1..max unsigned integers (18 digits at most) separated
+  // by blanks; their number, or -1 on anything else.
+  int line(std::uint64_t* out, int max) {
+    const char* nl;
+    while (!(nl = static_cast<const char*>(std::memchr(at_, '\n', static_cast<std::size_t>(end_ - at_)))))
+      if (!refill()) return -1;
+    const char* c = at_;
+    at_ = const_cast<char*>(nl) + 1;
+    int count = 0;
+    for (;;) {
+      while (c != nl && (*c == ' ' || *c == '\t')) ++c;
+      if (c == nl) return count > 0 ? count : -1;
+      if (count == max) return -1;
+      const char* first = c;
+      std::uint64_t x = 0;
+      for (; c != nl && *c >= '0' && *c <= '9'; ++c) x = 10 * x + std::uint64_t(*c - '0');
+      if (c == first || c - first > 18 || (c != nl && *c != ' ' && *c != '\t')) return -1;
+      out[count++] = x;
+    }
+  }
+  std::string path_;
+  std::FILE* f_;
+  int first_;
+  std::size_t points_;
+  std::vector<char> buf_;
+  char* at_ = nullptr;
+  char* end_ = nullptr;
+};
+
+}  // namespace
+
 std::vector<Tet> read_ele(const std::string& path, int first_index, std::size_t point_count) {
+  if (first_index >= 0)
+    if (auto fast = PlainEleReader(path, first_index, point_count).read()) return std::move(*fast);
   LineReader r(path);
   std::vector<std::string_view> tok;
   if (!r.next(tok)) r.fail("empty .ele file: missing header");

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <memory>
 
+#include "kernel/ids.hpp"
+
 namespace dtlab {
 namespace {
 
@@ -18,11 +20,11 @@ constexpr std::uint32_t kOdd = 0x80000000u;
 // when the vertex ids are in random input order: bucketing by rank keeps the
 // counting sort's scattered writes and the point loads local.
 std::vector<std::uint32_t> first_appearance(std::span<const Tet> tets, std::size_t point_count) {
-  std::vector<std::uint32_t> rank(point_count, UINT32_MAX);
+  std::vector<std::uint32_t> rank(point_count, kNone);
   std::uint32_t next = 0;
   for (const Tet& k : tets)
     for (auto v : k)
-      if (rank[v] == UINT32_MAX) rank[v] = next++;
+      if (rank[v] == kNone) rank[v] = next++;
   return rank;
 }
 
@@ -48,6 +50,31 @@ std::vector<std::size_t> ranges(const std::vector<std::uint32_t>& count, std::ui
   }
   cut.push_back(count.size());
   return cut;
+}
+
+// Which passes need each tet, so that a pass skips the others by reading one byte
+// instead of ranking the tet's vertices again: the first and last pass of the tet
+// (4 bits each; `lowest_highest(t)` gives the lowest and highest rank whose bucket
+// receives something from tet t). Empty when there are more than 16 passes: every
+// pass then looks at every tet.
+template <class Span>
+std::vector<std::uint8_t> passes_of_tets(std::size_t tet_count, const std::vector<std::size_t>& cut,
+                                         Span&& lowest_highest) {
+  const std::size_t parts = cut.size() - 1;
+  if (parts > 16) return {};
+  std::vector<std::uint8_t> part_of(cut.back());
+  for (std::size_t p = 0; p < parts; ++p)
+    std::fill(part_of.begin() + static_cast<std::ptrdiff_t>(cut[p]),
+              part_of.begin() + static_cast<std::ptrdiff_t>(cut[p + 1]), static_cast<std::uint8_t>(p));
+  std::vector<std::uint8_t> span(tet_count);
+  for (std::size_t t = 0; t < tet_count; ++t) {
+    const auto [lo, hi] = lowest_highest(t);
+    span[t] = static_cast<std::uint8_t>(part_of[lo] << 4 | part_of[hi]);
+  }
+  return span;
+}
+inline bool in_pass(const std::vector<std::uint8_t>& span, std::size_t t, std::size_t part) {
+  return span.empty() || ((span[t] >> 4) <= part && part <= (span[t] & 15u));
 }
 
 // Bucket-local sort by (b, c, ref), then groups of equal (b, c).
@@ -115,6 +142,10 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
     most = std::max(most, sum);
   }
   const std::unique_ptr<Entry[]> entries(new Entry[most]);  // no zero fill
+  const std::vector<std::uint8_t> span = passes_of_tets(tets.size(), cut, [&](std::size_t t) {
+    const TwoLowest s = two_lowest(tets[t], rank);
+    return std::pair{s.r0, s.r1};
+  });
   std::vector<std::uint64_t> off;
   std::array<std::uint32_t, 3> byrank;
   for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
@@ -128,6 +159,7 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
       entries[pos[rank[v[0]] - lo]++] = {v[1], v[2], tets[t][f] | odd, static_cast<std::uint32_t>(4 * t + f)};
     };
     for (std::size_t t = 0; t < tets.size(); ++t) {
+      if (!in_pass(span, t, part)) continue;
       const TwoLowest s = two_lowest(tets[t], rank);
       if (s.r1 < lo || s.r0 >= hi) continue;
       if (s.r0 >= lo)
@@ -179,29 +211,41 @@ std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count) {
     const Ranked s = ranked(k, rank);
     count[s.r[0]] += 3, count[s.r[1]] += 2, count[s.r[2]] += 1;
   }
-  const std::vector<std::size_t> cut = ranges(count, std::max<std::uint64_t>(12 * tets.size() / 5, 1u << 20));
-  std::vector<std::uint32_t> other;
+  // About 6.4 bytes per tet in one pass (an entry is 4 bytes), allocated once at the
+  // largest pass's size: the checker's peak stays at the facet table's.
+  const std::vector<std::size_t> cut = ranges(count, std::max<std::uint64_t>(8 * tets.size() / 5, 1u << 20));
+  std::uint64_t most = 0;
+  for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
+    std::uint64_t sum = 0;
+    for (std::size_t v = cut[part]; v < cut[part + 1]; ++v) sum += count[v];
+    most = std::max(most, sum);
+  }
+  const std::unique_ptr<std::uint32_t[]> other(new std::uint32_t[most]);  // no zero fill
+  const std::vector<std::uint8_t> span = passes_of_tets(tets.size(), cut, [&](std::size_t t) {
+    const Ranked s = ranked(tets[t], rank);
+    return std::pair{s.r[0], s.r[2]};
+  });
   std::vector<std::uint64_t> off;
+  std::vector<std::uint32_t> seen(point_count, kNone);
   std::uint64_t edges = 0;
   for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
     const std::size_t lo = cut[part], hi = cut[part + 1];
     off.assign(hi - lo + 1, 0);
     for (std::size_t v = lo; v < hi; ++v) off[v - lo + 1] = off[v - lo] + count[v];
-    other.resize(off.back());
     std::vector<std::uint64_t> pos(off.begin(), off.end() - 1);
-    for (const Tet& k : tets) {
-      const Ranked s = ranked(k, rank);
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+      if (!in_pass(span, t, part)) continue;
+      const Ranked s = ranked(tets[t], rank);
       if (s.r[2] < lo || s.r[0] >= hi) continue;
       for (int i = 0; i < 3; ++i)
         if (s.r[i] >= lo && s.r[i] < hi)
           for (int j = i + 1; j < 4; ++j) other[pos[s.r[i] - lo]++] = s.r[j];
     }
-    for (std::size_t a = lo; a < hi; ++a) {
-      auto first = other.begin() + static_cast<std::ptrdiff_t>(off[a - lo]);
-      auto last = other.begin() + static_cast<std::ptrdiff_t>(off[a - lo + 1]);
-      std::sort(first, last);
-      edges += static_cast<std::uint64_t>(std::unique(first, last) - first);
-    }
+    // Distinct other ends per bucket: seen[r] holds the last bucket that met rank r
+    // (buckets are visited once each, in increasing order, so it never needs a reset).
+    for (std::size_t a = lo; a < hi; ++a)
+      for (std::uint64_t i = off[a - lo]; i < off[a - lo + 1]; ++i)
+        if (seen[other[i]] != a) seen[other[i]] = static_cast<std::uint32_t>(a), ++edges;
   }
   return edges;
 }
