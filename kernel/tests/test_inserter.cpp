@@ -198,3 +198,24 @@ TEST_CASE("bigtet boundary: far enough gives the DT, too close loses hull tets")
   REQUIRE_FALSE(q.failure);
   CHECK(q.mesh.tets.size() < ref.size());
 }
+
+TEST_CASE("a build that owns its points gives them back in input order, with the same tets") {
+  const std::vector<Point3> input = uniform(3000, 11);
+  PredicateSpec spec;
+  for (const auto boundary : {Boundary::infinite, Boundary::bigtet}) {
+    BuildOptions options;
+    options.boundary = boundary;
+    const BuildResult by_span = build_delaunay(std::span<const Point3>(input), spec, options);
+    std::vector<Point3> owned = input;
+    const BuildResult by_move = build_delaunay(std::move(owned), spec, options);
+    CHECK(by_move.mesh.points == input);
+    CHECK(by_span.mesh.points == input);
+    CHECK(by_move.mesh.tets == by_span.mesh.tets);
+    CHECK(!by_move.mesh.tets.empty());
+  }
+  // A lower-dimensional input comes back unchanged too.
+  std::vector<Point3> flat = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 3, 0}};
+  const BuildResult r = build_delaunay(std::vector<Point3>(flat), spec);
+  CHECK(r.failure);
+  CHECK(r.mesh.points == flat);
+}
