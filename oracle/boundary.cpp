@@ -34,7 +34,7 @@ void match_edges(BoundarySurface& s, std::size_t n) {
                                      static_cast<std::uint8_t>(e), static_cast<std::uint8_t>(u > v)};
       }
   }
-  s.across.assign(nf, {BoundarySurface::kNone, BoundarySurface::kNone, BoundarySurface::kNone});
+  s.across.assign(nf, {kNone, kNone, kNone});
   for (std::size_t a = 0; a < n; ++a) {
     auto first = he.begin() + static_cast<std::ptrdiff_t>(off[a]);
     auto last = he.begin() + static_cast<std::ptrdiff_t>(off[a + 1]);
@@ -99,10 +99,10 @@ void check_links(BoundarySurface& s, std::size_t n) {
 
 void label_components(BoundarySurface& s) {
   const std::size_t nf = s.facets.size();
-  s.component.assign(nf, BoundarySurface::kNone);
+  s.component.assign(nf, kNone);
   std::vector<std::uint32_t> stack;
   for (std::size_t i = 0; i < nf; ++i) {
-    if (s.component[i] != BoundarySurface::kNone) continue;
+    if (s.component[i] != kNone) continue;
     const std::uint32_t c = s.components++;
     s.component[i] = c;
     stack.push_back(static_cast<std::uint32_t>(i));
@@ -110,7 +110,7 @@ void label_components(BoundarySurface& s) {
       const std::uint32_t f = stack.back();
       stack.pop_back();
       for (std::uint32_t g : s.across[f])
-        if (g != BoundarySurface::kNone && s.component[g] == BoundarySurface::kNone) {
+        if (g != kNone && s.component[g] == kNone) {
           s.component[g] = c;
           stack.push_back(g);
         }

@@ -6,12 +6,12 @@
 #include <span>
 #include <vector>
 
+#include "kernel/ids.hpp"
 #include "oracle/facet_table.hpp"
 
 namespace dtlab {
 
 struct BoundarySurface {
-  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
   std::vector<std::array<std::uint32_t, 3>> facets;  // outward (counter-clockwise from outside)
   std::vector<std::uint32_t> tet_of;                 // the tet each facet belongs to
   // across[i][e]: the facet across edge (facets[i][e], facets[i][(e+1)%3]), or kNone.

@@ -185,7 +185,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     const auto& F = bs.facets[f];
     for (int e = 0; e < 3; ++e) {
       const std::uint32_t g = bs.across[f][e];
-      if (g == BoundarySurface::kNone || g < f) continue;
+      if (g == kNone || g < f) continue;
       const auto& G = bs.facets[g];
       std::uint32_t apex = G[0];
       for (auto v : G)

@@ -4,6 +4,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "kernel/ids.hpp"
 #include "oracle/filtered_exact.hpp"
 
 namespace dtlab {
@@ -36,10 +37,9 @@ void normalise_answer(std::span<const Point3> points, const PeerAnswer& answer, 
   first.reserve(n);
   std::vector<std::uint32_t> canon(n + answer.extra.size());
   for (std::size_t i = 0; i < n; ++i) canon[i] = first.try_emplace(points[i], static_cast<std::uint32_t>(i)).first->second;
-  constexpr std::uint32_t kExtra = UINT32_MAX;
   for (std::size_t j = 0; j < answer.extra.size(); ++j) {
     const auto it = first.find(answer.extra[j]);
-    canon[n + j] = it == first.end() ? kExtra : it->second;
+    canon[n + j] = it == first.end() ? kNone : it->second;
   }
   std::vector<char> extra_used(answer.extra.size(), 0);
   Tetrahedralization t;
@@ -51,7 +51,7 @@ void normalise_answer(std::span<const Point3> points, const PeerAnswer& answer, 
     bool extra = false;
     for (int i = 0; i < 4; ++i) {
       const std::uint32_t v = raw[i];
-      if (v >= canon.size() || canon[v] == kExtra) {
+      if (v >= canon.size() || canon[v] == kNone) {
         extra = true;
         if (v >= n && v < canon.size()) extra_used[v - n] = 1;
         k[i] = v;

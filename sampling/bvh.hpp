@@ -7,6 +7,7 @@
 
 #include "sampling/triangle_geometry.hpp"
 #include "sampling/triangle_mesh.hpp"
+#include "kernel/ids.hpp"
 
 namespace dtlab {
 
@@ -19,7 +20,7 @@ struct BvhNode {
 };
 
 struct ClosestHit {
-  std::uint32_t triangle = UINT32_MAX;  // UINT32_MAX when the mesh is empty
+  std::uint32_t triangle = kNone;  // kNone when the mesh is empty
   Point3 point{0, 0, 0};
   TriFeature feature = TriFeature::face;
   double distance2 = INFINITY;

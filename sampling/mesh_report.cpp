@@ -9,6 +9,7 @@
 #include "sampling/bvh.hpp"
 #include "sampling/merge_vertices.hpp"
 #include "sampling/self_intersection.hpp"
+#include "kernel/ids.hpp"
 
 namespace dtlab {
 
@@ -163,14 +164,14 @@ MeshReport analyze_mesh(const TriangleMesh& input, std::size_t locations, std::u
   for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v)
     if (on_boundary[v] && boundary.find(v) == v) ++r.boundary_loops;
   // Fans: distinct corner roots per vertex.
-  std::vector<std::uint32_t> fan_root(mesh.vertices.size(), UINT32_MAX);
+  std::vector<std::uint32_t> fan_root(mesh.vertices.size(), kNone);
   std::vector<char> pinched(mesh.vertices.size(), 0);
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
     for (std::uint32_t k = 0; k < 3; ++k) {
       const std::uint32_t v = tri[k], root = corners.find(3 * t + k);
-      if (fan_root[v] == UINT32_MAX) fan_root[v] = root;
+      if (fan_root[v] == kNone) fan_root[v] = root;
       else if (fan_root[v] != root && !pinched[v]) {
         pinched[v] = 1;
         ++r.nonmanifold_vertices;

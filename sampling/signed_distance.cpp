@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include "kernel/ids.hpp"
 
 namespace dtlab {
 
@@ -46,7 +47,7 @@ SignedDistance::SignedDistance(const Bvh& bvh) : bvh_(bvh) {
 
 double SignedDistance::operator()(const Point3& q) const {
   const ClosestHit h = bvh_.closest_point(q);
-  if (h.triangle == UINT32_MAX) return INFINITY;
+  if (h.triangle == kNone) return INFINITY;
   const auto& tri = bvh_.mesh().triangles[h.triangle];
   Point3 n{0, 0, 0};
   switch (h.feature) {

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "kernel/tetrahedralization.hpp"
+#include "kernel/ids.hpp"
 
 namespace dtlab::test {
 
@@ -113,19 +114,19 @@ inline Truth delaunay_truth(const std::vector<Point3>& P, const std::vector<Tet>
     for (std::uint32_t i = 0; i < n; ++i) canon[i] = first.emplace(std::array{P[i].x, P[i].y, P[i].z}, i).first->second;
   }
   // 1. indices, duplicate vertices, missing points
-  std::vector<std::uint32_t> vertex_of(n, UINT32_MAX);  // canonical id -> the vertex id using it
+  std::vector<std::uint32_t> vertex_of(n, kNone);  // canonical id -> the vertex id using it
   for (const Tet& k : tets)
     for (int a = 0; a < 4; ++a) {
       if (k[a] >= n) return {false, "vertex out of range"};
       for (int b = a + 1; b < 4; ++b)
         if (k[a] == k[b]) return {false, "repeated vertex"};
       auto& v = vertex_of[canon[k[a]]];
-      if (v != UINT32_MAX && v != k[a]) return {false, "two vertices with the same coordinates"};
+      if (v != kNone && v != k[a]) return {false, "two vertices with the same coordinates"};
       v = k[a];
     }
   if (dt.empty()) return tets.empty() ? Truth{true, ""} : Truth{false, "tets for a flat input"};
   for (std::size_t i = 0; i < n; ++i)
-    if (vertex_of[canon[i]] == UINT32_MAX) return {false, "input point is no vertex"};
+    if (vertex_of[canon[i]] == kNone) return {false, "input point is no vertex"};
   auto C = [&](const Tet& k) { return Tet{canon[k[0]], canon[k[1]], canon[k[2]], canon[k[3]]}; };
   // 2. orientation
   for (const Tet& k : tets)
@@ -168,12 +169,12 @@ inline Truth delaunay_truth(const std::vector<Point3>& P, const std::vector<Tet>
   std::map<std::uint32_t, std::vector<std::uint32_t>> members;
   for (std::uint32_t t = 0; t < tets.size(); ++t) {
     const Tet k = C(tets[t]);
-    std::uint32_t cell = UINT32_MAX;
+    std::uint32_t cell = kNone;
     for (auto c : cells_of[k[0]]) {
       const auto& vs = cell_vertices[c];
       if (vs.count(k[1]) && vs.count(k[2]) && vs.count(k[3])) cell = c;
     }
-    if (cell == UINT32_MAX) return {false, "tet with a non-empty circumsphere"};
+    if (cell == kNone) return {false, "tet with a non-empty circumsphere"};
     members[cell].push_back(t);
   }
   for (const auto& [c, vol] : cell_volume) {

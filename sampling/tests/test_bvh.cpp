@@ -4,6 +4,7 @@
 
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/bvh.hpp"
+#include "kernel/ids.hpp"
 
 using namespace dtlab;
 
@@ -59,7 +60,7 @@ TEST_CASE("closest point on a triangle names the right feature") {
 TEST_CASE("BVH on an empty mesh answers nothing") {
   const TriangleMesh m;
   const Bvh bvh(m);
-  CHECK(bvh.closest_point({0, 0, 0}).triangle == UINT32_MAX);
+  CHECK(bvh.closest_point({0, 0, 0}).triangle == kNone);
   int hits = 0;
   bvh.for_each_ray_hit({0, 0, 0}, {1, 0, 0}, 1, [&](std::uint32_t, double) { ++hits; });
   CHECK(hits == 0);
