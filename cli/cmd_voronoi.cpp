@@ -25,6 +25,7 @@ struct VoronoiArgs {
   double margin = 0.1;
   unsigned threads = 0;
   bool obj = true, vtu = false, json = false, check = false;
+  std::string vtu_format = "binary";
 };
 
 int run_voronoi(const VoronoiArgs& a) {
@@ -78,7 +79,7 @@ int run_voronoi(const VoronoiArgs& a) {
   }
   if (!a.out.empty()) {
     if (a.obj) write_cells_obj(a.out + ".obj", vd);
-    if (a.vtu) write_cells_vtu(a.out + ".vtu", vd);
+    if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
     write_text_file(a.out + ".json", m.dump(1) + "\n");
   }
   if (a.json) {
@@ -114,6 +115,8 @@ void add_voronoi_command(CLI::App& app, int& rc) {
       ->capture_default_str();
   sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
+  sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
+      ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
   sub->add_flag("!--no-obj", args->obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
   sub->add_flag("--json", args->json, "print the manifest on stdout");
