@@ -70,6 +70,11 @@ int run_steps(const DemoArgs& a, nlohmann::json& summary) {
   if (!a.no_oracles)
     steps.push_back({{"oracle", o + "/torus_points.xyz", "--against", "cgal,tetgen"}, "CGAL and TetGen oracles"});
   steps.push_back({{"voronoi", o + "/torus_points.xyz", "--out", o + "/voronoi", "--check"}, "Voronoi cells clipped to a box"});
+  steps.push_back({{"sample", "builtin", "--method", "winding", "--count", "40", "--seed", "2", "--out", o + "/cells_points.xyz"},
+                   "a few dozen sites, for a picture of their cells"});
+  steps.push_back({{"voronoi", o + "/cells_points.xyz", "--margin", "0.02", "--out", o + "/cells", "--vtu", "--check", "--png",
+                    o + "/voronoi_cells.png"},
+                   "their Voronoi cells, drawn shrunk (binary VTU for ParaView)"});
   steps.push_back({{"fracture", "builtin", "--pieces", std::to_string(a.pieces), "--seed", "1", "--out", o + "/fracture"},
                    "Voronoi fracture of the torus"});
   for (const Step& s : steps) {
@@ -93,9 +98,11 @@ int run_steps(const DemoArgs& a, nlohmann::json& summary) {
     return kBadInput;
   }
   summary["picture"] = png;
+  summary["cells_picture"] = o + "/voronoi_cells.png";
   summary["tetrahedralization"] = o + "/torus_dt";
-  std::printf("\ndtlab demo: done. Look at %s (exploded pieces), open %s/torus_dt.vtu in ParaView.\n",
-              png.c_str(), o.c_str());
+  std::printf("\ndtlab demo: done. Look at %s (exploded pieces) and %s/voronoi_cells.png (Voronoi cells),\n"
+              "open %s/torus_dt.vtu or %s/cells.vtu in ParaView.\n",
+              png.c_str(), o.c_str(), o.c_str(), o.c_str());
   return kOk;
 }
 

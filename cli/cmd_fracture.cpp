@@ -24,7 +24,8 @@ struct FractureArgs {
   double margin = 0, explode = 0.6;
   unsigned threads = 0;
   std::vector<std::size_t> recurse;
-  bool blue_noise = false, json = false, repair = false, split = false;
+  bool blue_noise = false, json = false, repair = false, split = false, vtu = false;
+  std::string vtu_format = "binary";
   double boolean_seconds = 30;
 };
 
@@ -69,7 +70,7 @@ int run_fracture(const FractureArgs& a) {
   m["input"] = a.mesh;
   m["options"] = {{"pieces", a.pieces}, {"sampler", a.sampler}, {"seed", a.seed}, {"margin", a.margin},
                   {"blue_noise", a.blue_noise}, {"explode", a.explode}, {"recurse", a.recurse},
-                  {"recurse_pieces", a.recurse_pieces}, {"repair", a.repair}, {"split", a.split},
+                  {"recurse_pieces", a.recurse_pieces}, {"repair", a.repair}, {"split", a.split}, {"vtu", a.vtu},
                   {"boolean_seconds", a.boolean_seconds}};
   if (!a.out.empty()) {
     std::filesystem::create_directories(a.out);
@@ -77,6 +78,7 @@ int run_fracture(const FractureArgs& a) {
     write_pieces_obj(a.out + "/exploded.obj", r, a.explode);
     write_pieces_mtl(a.out + "/pieces.mtl");
     if (a.repair) write_off(a.out + "/repaired.off", r.input);
+    if (a.vtu) write_pieces_vtu(a.out + "/pieces.vtu", r, parse_vtu_format(a.vtu_format));
     if (a.split) {
       std::filesystem::create_directories(a.out + "/pieces");
       m["split_files"] = write_piece_files(a.out + "/pieces", r);
@@ -104,8 +106,8 @@ int run_fracture(const FractureArgs& a) {
     std::printf("%s: %zu pieces (%zu booleans, %zu skipped), mesh volume %.12g, relative volume error %.3g\n",
                 a.mesh.c_str(), r.pieces.size(), r.booleans, r.skipped, r.mesh_volume, rel);
     if (!a.out.empty())
-      std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s}\n", a.out.c_str(),
-                  a.split ? ", pieces/piece_NNNN.obj" : "");
+      std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s%s}\n", a.out.c_str(),
+                  a.split ? ", pieces/piece_NNNN.obj" : "", a.vtu ? ", pieces.vtu" : "");
   }
   // With a margin the pieces are meant to lose volume; without one they must tile the mesh.
   return a.margin == 0 && rel > 1e-9 ? kDefect : kOk;
@@ -136,6 +138,9 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_option("--boolean-seconds", args->boolean_seconds,
                   "time budget of one corefinement; past it a named failure, exit 1 (0: none)")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
+  sub->add_flag("--vtu", args->vtu, "also write OUT/pieces.vtu (a polyhedron cell per piece) for ParaView");
+  sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
+      ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
   sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file");
   sub->add_option("--out", args->out, "output folder");
   sub->add_flag("--json", args->json, "print the manifest on stdout");

@@ -23,6 +23,7 @@ struct TetraArgs {
   std::string input;
   std::string out;
   bool vtu = false;
+  std::string vtu_format = "binary";
   bool json = false;
   bool check = false;
   KernelArgs kernel;
@@ -36,7 +37,7 @@ int run_tetra(const TetraArgs& a) {
   BuildResult r = build_delaunay(std::move(in.points), a.kernel.predicate_spec(), options);
   if (!a.out.empty()) {
     write_tetgen(a.out, r.mesh);
-    if (a.vtu) write_vtu(a.out + ".vtu", r.mesh);
+    if (a.vtu) write_vtu(a.out + ".vtu", r.mesh, parse_vtu_format(a.vtu_format));
   }
   // The exact check of a finished build (a failed one is already reported as such).
   std::optional<CheckReport> check;
@@ -79,6 +80,8 @@ void add_tetra_command(CLI::App& app, int& rc) {
   sub->add_option("INPUT", args->input, "points: .node, .xyz, or the vertices of a mesh (.off .obj .ply .stl)")->required();
   sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)");
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu for ParaView");
+  sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
+      ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
   sub->add_flag("--check", args->check,
                 "verify the result with the exact checker (as `dtlab check`); exit 1 on a defect");

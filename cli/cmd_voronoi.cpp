@@ -13,6 +13,7 @@
 #include "cli/input_points.hpp"
 #include "kernel/build.hpp"
 #include "kernel/point_io.hpp"
+#include "fracture/render_png.hpp"
 #include "voronoi/cell_check.hpp"
 #include "voronoi/voronoi_io.hpp"
 
@@ -25,6 +26,8 @@ struct VoronoiArgs {
   double margin = 0.1;
   unsigned threads = 0;
   bool obj = true, vtu = false, json = false, check = false;
+  std::string vtu_format = "binary", png;
+  double png_shrink = 0.8;
 };
 
 int run_voronoi(const VoronoiArgs& a) {
@@ -78,9 +81,10 @@ int run_voronoi(const VoronoiArgs& a) {
   }
   if (!a.out.empty()) {
     if (a.obj) write_cells_obj(a.out + ".obj", vd);
-    if (a.vtu) write_cells_vtu(a.out + ".vtu", vd);
+    if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
     write_text_file(a.out + ".json", m.dump(1) + "\n");
   }
+  if (!a.png.empty()) write_cells_png(a.png, vd, a.png_shrink);
   if (a.json) {
     std::printf("%s\n", m.dump(2).c_str());
   } else {
@@ -97,6 +101,7 @@ int run_voronoi(const VoronoiArgs& a) {
     }
     if (!a.out.empty())
       std::printf("wrote %s.json%s%s\n", a.out.c_str(), a.obj ? ", .obj" : "", a.vtu ? ", .vtu" : "");
+    if (!a.png.empty()) std::printf("wrote %s\n", a.png.c_str());
   }
   return defects ? kDefect : kOk;
 }
@@ -114,6 +119,11 @@ void add_voronoi_command(CLI::App& app, int& rc) {
       ->capture_default_str();
   sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
+  sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
+      ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
+  sub->add_option("--png", args->png, "draw the cells (each shrunk about its centroid, own colour) to this PNG file");
+  sub->add_option("--png-shrink", args->png_shrink, "--png: scale of each cell about its centroid")
+      ->check(number_in(0.05, 1))->capture_default_str();
   sub->add_flag("!--no-obj", args->obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
   sub->add_flag("--json", args->json, "print the manifest on stdout");

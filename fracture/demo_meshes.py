@@ -102,8 +102,17 @@ SHORT_STEP = {
     'filled holes': 'holes',
     'collapsed degenerate triangles': 'collapsed',
     'resolved self-intersecting triangle pairs': 'self-int.',
+    'separated pinched vertices': 'pinched',
+    'dropped shells that enclose no volume': 'flat shells',
     'reversed triangles to bound a volume': 'outward',
 }
+
+
+def short_step(step):
+    name = SHORT_STEP.get(step['step'], step['step'])
+    if step['detail'].startswith('winding-number solid'):
+        name = 'winding solid'  # self-intersections resolved by the winding-number solid
+    return f"{name} {step['count']}"
 
 
 def run_one(dtlab, mesh, args):
@@ -132,8 +141,7 @@ def run_one(dtlab, mesh, args):
             row['reason'] = msg.split(': ', 2)[-1][:160]
             return row
         manifest = json.loads(p.stdout)
-        row['repairs'] = ', '.join(f"{SHORT_STEP.get(s['step'], s['step'])} {s['count']}"
-                                   for s in manifest['repairs']) or '-'
+        row['repairs'] = ', '.join(short_step(s) for s in manifest['repairs']) or '-'
         verts, pieces = read_pieces(os.path.join(tmp, 'pieces.obj'))
         rv, rt = read_off(os.path.join(tmp, 'repaired.off'))
         solid = volume(rv, rt)

@@ -53,6 +53,7 @@ Level fracture_once(const MeshClipper& clipper, const FractureOptions& o, std::u
   for (std::size_t i = 0; i < sites.size(); ++i) {
     all[i].geometry = std::move(geometry[i]);
     all[i].site = sites[i];
+    all[i].site_index = static_cast<std::int64_t>(i);
   }
   timing.seconds_boolean += since(t0);
   std::vector<std::int64_t> renum(sites.size(), -1);

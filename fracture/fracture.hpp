@@ -34,6 +34,7 @@ struct Piece {
   std::vector<std::uint32_t> neighbors;  // pieces sharing a cut face with this one
   Point3 site{0, 0, 0};
   int parent = -1;                       // top-level piece it was split from (recursion)
+  std::int64_t site_index = -1;          // its site among its level's sites
 };
 
 struct FractureResult {

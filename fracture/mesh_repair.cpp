@@ -20,6 +20,9 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "fracture/deadline_visitor.hpp"
+#include "fracture/pinched_vertices.hpp"
+#include "fracture/surface_mesh_convert.hpp"
+#include "fracture/winding_solid.hpp"
 #include "predicates/adaptive.hpp"
 #include "sampling/merge_vertices.hpp"
 #include "sampling/self_intersection.hpp"
@@ -29,6 +32,8 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 namespace dtlab {
 
 namespace {
+using surface_mesh_convert::to_mesh;
+using surface_mesh_convert::to_triangles;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 using EK = CGAL::Exact_predicates_exact_constructions_kernel;
@@ -37,48 +42,6 @@ using Polygon = std::vector<std::size_t>;
 
 // Seconds the autorefinement may take before the repair gives up on self-intersections.
 constexpr double kAutorefineSeconds = 30;
-
-double coordinate(double v) { return v; }
-// Lazy-exact: the interval when tight, else the exact value (CGAL's to_double accepts
-// intervals 1e-5 wide).
-double coordinate(const EK::FT& v) {
-  const auto& i = v.approx();
-  if (i.sup() - i.inf() <= 1e-14 * std::max(std::abs(i.inf()), std::abs(i.sup()))) return CGAL::to_double(i);
-  return CGAL::to_double(v.exact());
-}
-
-// The faces of a Surface_mesh as a TriangleMesh; isolated vertices are left out (CGAL's
-// orient_to_bound_a_volume does not accept them).
-template <class M>
-TriangleMesh to_triangles(const M& m) {
-  TriangleMesh out;
-  std::vector<std::uint32_t> id(m.number_of_vertices() + m.number_of_removed_vertices(), UINT32_MAX);
-  for (auto f : m.faces()) {
-    std::array<std::uint32_t, 3> t{};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) {
-      if (k == 3) break;
-      if (id[v.idx()] == UINT32_MAX) {
-        id[v.idx()] = static_cast<std::uint32_t>(out.vertices.size());
-        const auto& p = m.point(v);
-        out.vertices.push_back({coordinate(p.x()), coordinate(p.y()), coordinate(p.z())});
-      }
-      t[k++] = id[v.idx()];
-    }
-    if (k == 3) out.triangles.push_back(t);
-  }
-  return out;
-}
-
-template <class M>
-void to_mesh(const TriangleMesh& t, M& m) {
-  using P = typename M::Point;
-  std::vector<P> points;
-  for (const auto& p : t.vertices) points.emplace_back(p.x, p.y, p.z);
-  std::vector<Polygon> polygons;
-  for (const auto& f : t.triangles) polygons.push_back({f[0], f[1], f[2]});
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, m);
-}
 
 void append(TriangleMesh& a, const TriangleMesh& b) {
   const auto n = static_cast<std::uint32_t>(a.vertices.size());
@@ -311,6 +274,19 @@ RepairResult repair_mesh(const TriangleMesh& input) {
     }
   }
 
+  // Pinched vertices (two fans touching at a point, e.g. where a duplicate vertex was
+  // merged): one vertex per fan, each moved 1e-3 of the way into its fan.
+  if (now.closed && !now.manifold && now.nonmanifold_edges == 0) {
+    TriangleMesh separated = current;
+    const std::size_t pinched = separate_pinched_vertices(separated);
+    const MeshReport check = analyze_mesh(separated);
+    if (pinched > 0 && check.manifold && check.closed) {
+      step("separated pinched vertices", pinched, "one vertex per fan, moved 1e-3 of the way into it");
+      current = std::move(separated);
+      now = check;
+    }
+  }
+
   // 8. Self-intersections. Shells that are solids each but overlap: their union,
   //    one exact corefinement at a time. Otherwise: autorefinement (exact
   //    constructions), the patches inside the volume removed, accepted only if it
@@ -350,6 +326,31 @@ RepairResult repair_mesh(const TriangleMesh& input) {
       }
     } catch (const std::exception&) {
       // Autorefinement gave up (or ran out of time): the report below says what remains.
+    }
+  }
+
+  // Otherwise the winding-number solid (the region with winding number >= 1/2), when it
+  // is a solid.
+  if (now.self_intersections > 0 && now.closed && !flat) {
+    WindingSolid ws = winding_number_solid(current, kAutorefineSeconds);
+    if (ws.ok) {
+      // Where the solid touches itself at a point (intersection curves crossing), the
+      // pinched vertex is separated.
+      MeshReport check = analyze_mesh(ws.mesh);
+      std::size_t pinched = 0;
+      if (check.closed && !check.manifold && check.nonmanifold_edges == 0) {
+        pinched = separate_pinched_vertices(ws.mesh);
+        check = analyze_mesh(ws.mesh);
+      }
+      if (check.solid() && check.volume > 0) {
+        step("resolved self-intersecting triangle pairs", now.self_intersections,
+             "winding-number solid: " + std::to_string(ws.kept + ws.reversed) + " of " +
+                 std::to_string(ws.patches) + " patches kept" +
+                 (ws.reversed ? " (" + std::to_string(ws.reversed) + " reversed)" : ""));
+        step("separated pinched vertices", pinched);
+        current = std::move(ws.mesh);
+        now = check;
+      }
     }
   }
 

@@ -1,5 +1,6 @@
 #include "fracture/piece_io.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -68,6 +69,40 @@ void write_pieces_obj(const std::string& path, const FractureResult& r, double e
 
 void write_pieces_mtl(const std::string& path) {
   write_text_file(path, "newmtl outer\nKd 0.70 0.72 0.78\n\nnewmtl cut\nKd 0.85 0.35 0.20\n");
+}
+
+void write_pieces_vtu(const std::string& path, const FractureResult& r, VtuFormat format) {
+  VtuGrid g;
+  std::vector<std::int64_t> piece, site, parent, cut;
+  std::vector<double> volume, interior;
+  std::vector<std::uint8_t> skipped;
+  std::vector<std::uint32_t> offsets, corners;
+  for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+    const Piece& p = r.pieces[i];
+    const TriangleMesh& m = p.geometry.mesh;
+    offsets.assign(1, 0);
+    corners.clear();
+    for (const auto& t : m.triangles) {
+      corners.insert(corners.end(), t.begin(), t.end());
+      offsets.push_back(static_cast<std::uint32_t>(corners.size()));
+    }
+    g.add_polyhedron(m.vertices, offsets, corners);
+    piece.push_back(static_cast<std::int64_t>(i));
+    site.push_back(p.site_index);
+    parent.push_back(p.parent);
+    volume.push_back(p.volume);
+    interior.push_back(p.interior_area);
+    cut.push_back(std::count(p.geometry.cut.begin(), p.geometry.cut.end(), 1));
+    skipped.push_back(p.geometry.boolean_skipped ? 1 : 0);
+  }
+  g.cell_data.push_back({"piece", std::move(piece)});
+  g.cell_data.push_back({"site", std::move(site)});
+  g.cell_data.push_back({"parent", std::move(parent)});
+  g.cell_data.push_back({"volume", std::move(volume)});
+  g.cell_data.push_back({"interior_area", std::move(interior)});
+  g.cell_data.push_back({"cut_triangles", std::move(cut)});
+  g.cell_data.push_back({"boolean_skipped", std::move(skipped)});
+  write_vtu_grid(path, g, format);
 }
 
 nlohmann::json fracture_manifest(const FractureResult& r) {

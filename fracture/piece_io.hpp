@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fracture/fracture.hpp"
+#include "kernel/vtu_writer.hpp"
 
 namespace dtlab {
 
@@ -18,6 +19,11 @@ void write_pieces_mtl(const std::string& path);
 // --split: DIR/piece_0000.obj ... one closed piece per file, groups outer / cut with
 // materials from ../pieces.mtl (DIR is a subfolder of the output). Returns the file names.
 std::vector<std::string> write_piece_files(const std::string& dir, const FractureResult& r);
+// Every piece as one VTK_POLYHEDRON cell (its triangles as faces) with cell data
+// `piece`, `site` (the site's index among its level's sites), `parent` (-1 at the top
+// level), `volume`, `interior_area`, `cut_triangles` and `boolean_skipped` (1: copied
+// whole, its cell held it without a boolean).
+void write_pieces_vtu(const std::string& path, const FractureResult& r, VtuFormat format = VtuFormat::binary);
 nlohmann::json fracture_manifest(const FractureResult& r);
 
 }  // namespace dtlab

@@ -78,44 +78,34 @@ void write_png(const std::string& path, int w, int h, const std::vector<std::uin
 }
 }  // namespace
 
-void write_exploded_png(const std::string& path, const FractureResult& r, double explode, int w, int h) {
+void write_view_png(const std::string& path, const std::vector<ViewTriangle>& triangles, int w, int h) {
   const double az = 35 * M_PI / 180, el = 25 * M_PI / 180;
   const Point3 d{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};  // towards the eye
   const Point3 right{-std::sin(az), std::cos(az), 0};
   const Point3 up = cross(d, right);
   const Point3 light = (1.0 / norm(d + Point3{0.3, -0.4, 0.5})) * (d + Point3{0.3, -0.4, 0.5});
-  Point3 centre{0, 0, 0};
-  double vsum = 0;
-  for (const auto& p : r.pieces) centre += p.volume * p.centroid, vsum += p.volume;
-  if (vsum > 0) centre = (1.0 / vsum) * centre;
-  // Projected triangles with their colour.
+  // Projected triangles with their shaded colour.
   struct Tri {
     double x[3], y[3], z[3];
     std::array<double, 3> rgb;
   };
   std::vector<Tri> tris;
   double lo_x = std::numeric_limits<double>::max(), hi_x = -lo_x, lo_y = lo_x, hi_y = -lo_x;
-  for (const auto& p : r.pieces) {
-    const Point3 shift = explode * (p.centroid - centre);
-    const TriangleMesh& m = p.geometry.mesh;
-    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-      Point3 n = m.area_normal(t);
-      const double len = norm(n);
-      if (len == 0 || dot(n, d) <= 0) continue;  // back face of a closed piece
-      n = (1.0 / len) * n;
-      const double shade = 0.3 + 0.7 * std::max(0.0, dot(n, light));
-      const bool cut = p.geometry.cut[t] != 0;
-      Tri tr{};
-      tr.rgb = cut ? std::array<double, 3>{0.85 * shade, 0.35 * shade, 0.20 * shade}
-                   : std::array<double, 3>{0.70 * shade, 0.72 * shade, 0.78 * shade};
-      for (int k = 0; k < 3; ++k) {
-        const Point3 q = m.corner(t, k) + shift - centre;
-        tr.x[k] = dot(q, right), tr.y[k] = dot(q, up), tr.z[k] = dot(q, d);
-        lo_x = std::min(lo_x, tr.x[k]), hi_x = std::max(hi_x, tr.x[k]);
-        lo_y = std::min(lo_y, tr.y[k]), hi_y = std::max(hi_y, tr.y[k]);
-      }
-      tris.push_back(tr);
+  for (const ViewTriangle& v : triangles) {
+    Point3 n = cross(v.corners[1] - v.corners[0], v.corners[2] - v.corners[0]);
+    const double len = norm(n);
+    if (len == 0 || dot(n, d) <= 0) continue;  // back face of a closed surface
+    n = (1.0 / len) * n;
+    const double shade = 0.3 + 0.7 * std::max(0.0, dot(n, light));
+    Tri tr{};
+    for (int c = 0; c < 3; ++c) tr.rgb[c] = v.colour[c] * shade;
+    for (int k = 0; k < 3; ++k) {
+      const Point3& q = v.corners[k];
+      tr.x[k] = dot(q, right), tr.y[k] = dot(q, up), tr.z[k] = dot(q, d);
+      lo_x = std::min(lo_x, tr.x[k]), hi_x = std::max(hi_x, tr.x[k]);
+      lo_y = std::min(lo_y, tr.y[k]), hi_y = std::max(hi_y, tr.y[k]);
     }
+    tris.push_back(tr);
   }
   std::vector<std::uint8_t> rgb(static_cast<std::size_t>(3) * w * h, 255);
   std::vector<double> depth(static_cast<std::size_t>(w) * h, -std::numeric_limits<double>::max());
@@ -146,6 +136,58 @@ void write_exploded_png(const std::string& path, const FractureResult& r, double
       }
   }
   write_png(path, w, h, rgb);
+}
+
+void write_exploded_png(const std::string& path, const FractureResult& r, double explode, int w, int h) {
+  Point3 centre{0, 0, 0};
+  double vsum = 0;
+  for (const auto& p : r.pieces) centre += p.volume * p.centroid, vsum += p.volume;
+  if (vsum > 0) centre = (1.0 / vsum) * centre;
+  std::vector<ViewTriangle> tris;
+  for (const auto& p : r.pieces) {
+    const Point3 shift = explode * (p.centroid - centre);
+    const TriangleMesh& m = p.geometry.mesh;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      ViewTriangle v;
+      for (int k = 0; k < 3; ++k) v.corners[k] = m.corner(t, k) + shift;
+      v.colour = p.geometry.cut[t] ? kCutColour : kOuterColour;
+      tris.push_back(v);
+    }
+  }
+  write_view_png(path, tris, w, h);
+}
+
+void write_cells_png(const std::string& path, const VoronoiDiagram& vd, double shrink, int w, int h) {
+  std::vector<ViewTriangle> tris;
+  for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+    const VoronoiCell& c = vd.cells[i];
+    if (c.vertices.empty()) continue;
+    // A colour per cell: hues a golden angle apart, fairly light.
+    const double hue = std::fmod(0.618033988749895 * static_cast<double>(i), 1.0) * 6;
+    const double f = hue - std::floor(hue);
+    const double q = 1 - f;
+    std::array<double, 3> rgb;
+    switch (static_cast<int>(hue)) {
+      case 0: rgb = {1, f, 0}; break;
+      case 1: rgb = {q, 1, 0}; break;
+      case 2: rgb = {0, 1, f}; break;
+      case 3: rgb = {0, q, 1}; break;
+      case 4: rgb = {f, 0, 1}; break;
+      default: rgb = {1, 0, q}; break;
+    }
+    for (auto& x : rgb) x = 0.35 + 0.6 * x;
+    auto at = [&](std::uint32_t k) { return c.centroid + shrink * (c.vertices[k] - c.centroid); };
+    for (std::size_t f = 0; f < c.face_count(); ++f) {
+      const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
+      for (auto k = b + 1; k + 1 < e; ++k) {  // convex faces: a fan
+        ViewTriangle v;
+        v.corners = {at(c.face_vertices[b]), at(c.face_vertices[k]), at(c.face_vertices[k + 1])};
+        v.colour = rgb;
+        tris.push_back(v);
+      }
+    }
+  }
+  write_view_png(path, tris, w, h);
 }
 
 }  // namespace dtlab

@@ -11,8 +11,19 @@
 #include "kernel/line_reader.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
+#include "predicates/adaptive.hpp"
 
 namespace dtlab {
+
+namespace {
+// The tet's volume, positive for dtlab's orientation (orient3d > 0).
+double orient3d_naive_volume(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
+  const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
+  const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
+  return (adx * (bdy * cdz - bdz * cdy) + bdx * (cdy * adz - cdz * ady) + cdx * (ady * bdz - adz * bdy)) / 6;
+}
+}  // namespace
 
 void write_tetgen(const std::string& prefix, const Tetrahedralization& t) {
   write_node(prefix + ".node", t.points);
@@ -159,23 +170,24 @@ Tetrahedralization read_tetgen(const std::string& prefix) {
   return t;
 }
 
-void write_vtu(const std::string& path, const Tetrahedralization& t) {
-  OutputFile f(path);
-  std::FILE* o = f.get();
-  std::fprintf(o, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n");
-  std::fprintf(o, " <UnstructuredGrid>\n  <Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n", t.points.size(), t.tets.size());
-  std::fprintf(o, "   <Points>\n    <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
-  for (const Point3& p : t.points) std::fprintf(o, "%.17g %.17g %.17g\n", p.x, p.y, p.z);
-  std::fprintf(o, "    </DataArray>\n   </Points>\n   <Cells>\n");
-  std::fprintf(o, "    <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-  // VTK_TETRA wants the right-handed order, like TetGen's.
-  for (const Tet& k : t.tets) std::fprintf(o, "%u %u %u %u\n", k[1], k[0], k[2], k[3]);
-  std::fprintf(o, "    </DataArray>\n    <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-  for (std::size_t i = 1; i <= t.tets.size(); ++i) std::fprintf(o, "%zu\n", 4 * i);
-  std::fprintf(o, "    </DataArray>\n    <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-  for (std::size_t i = 0; i < t.tets.size(); ++i) std::fprintf(o, "10\n");
-  std::fprintf(o, "    </DataArray>\n   </Cells>\n  </Piece>\n </UnstructuredGrid>\n</VTKFile>\n");
-  f.close();
+void write_vtu(const std::string& path, const Tetrahedralization& t, VtuFormat format) {
+  VtuGrid g;
+  g.points = t.points;
+  g.connectivity.reserve(4 * t.tets.size());
+  std::vector<double> volume;
+  std::vector<std::uint8_t> defect;
+  for (const Tet& k : t.tets) {
+    // VTK_TETRA wants the right-handed order, like TetGen's.
+    for (int j : {1, 0, 2, 3}) g.connectivity.push_back(k[j]);
+    g.offsets.push_back(static_cast<std::int64_t>(g.connectivity.size()));
+    g.types.push_back(kVtkTetra);
+    const Point3 &a = t.points[k[0]], &b = t.points[k[1]], &c = t.points[k[2]], &d = t.points[k[3]];
+    volume.push_back(orient3d_naive_volume(a, b, c, d));
+    defect.push_back(adaptive_orient3d(a, b, c, d, nullptr) > 0 ? 0 : 1);
+  }
+  g.cell_data.push_back({"volume", std::move(volume)});
+  g.cell_data.push_back({"defect", std::move(defect)});
+  write_vtu_grid(path, g, format);
 }
 
 }  // namespace dtlab

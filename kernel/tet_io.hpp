@@ -8,6 +8,7 @@
 #include <string>
 
 #include "kernel/tetrahedralization.hpp"
+#include "kernel/vtu_writer.hpp"
 
 namespace dtlab {
 
@@ -18,6 +19,8 @@ void write_tetgen(const std::string& prefix, const Tetrahedralization& t);
 // checker's job.
 Tetrahedralization read_tetgen(const std::string& prefix);
 std::vector<Tet> read_ele(const std::string& path, int first_index, std::size_t point_count);
-void write_vtu(const std::string& path, const Tetrahedralization& t);
+// VTK_TETRA cells with cell data `volume` (positive in dtlab's orientation) and
+// `defect` (1: the tet is flat or inverted by the exact orientation test).
+void write_vtu(const std::string& path, const Tetrahedralization& t, VtuFormat format = VtuFormat::binary);
 
 }  // namespace dtlab

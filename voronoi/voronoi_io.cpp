@@ -1,10 +1,12 @@
 #include "voronoi/voronoi_io.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 
 #include "kernel/output_file.hpp"
+#include "voronoi/cell_check.hpp"
 
 namespace dtlab {
 
@@ -37,58 +39,26 @@ void write_cells_obj(const std::string& path, const VoronoiDiagram& vd) {
   out.file.close();
 }
 
-void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd) {
-  File out(path);
-  std::size_t npts = 0, ncells = 0;
-  for (const auto& c : vd.cells)
-    if (!c.vertices.empty()) npts += c.vertices.size(), ++ncells;
-  std::fprintf(out.f,
-               "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
-               "<UnstructuredGrid><Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n"
-               "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
-               npts, ncells);
-  for (const auto& c : vd.cells)
-    for (const auto& p : c.vertices) std::fprintf(out.f, "%.17g %.17g %.17g\n", p.x, p.y, p.z);
-  std::fprintf(out.f, "</DataArray></Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-  std::size_t base = 0;
-  for (const auto& c : vd.cells) {
-    for (std::size_t k = 0; k < c.vertices.size(); ++k) std::fprintf(out.f, "%zu ", base + k);
-    if (!c.vertices.empty()) std::fputc('\n', out.f);
-    base += c.vertices.size();
+void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd, VtuFormat format) {
+  VtuGrid g;
+  std::vector<std::int64_t> site, walls;
+  std::vector<double> volume;
+  std::vector<std::uint8_t> defect;
+  const double tol = 1e-9 * vd.box.diagonal();
+  for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+    const VoronoiCell& c = vd.cells[i];
+    if (c.vertices.empty()) continue;  // a repeated site's empty cell
+    g.add_polyhedron(c.vertices, c.face_offsets, c.face_vertices);
+    site.push_back(static_cast<std::int64_t>(i));
+    volume.push_back(c.volume);
+    walls.push_back(std::count_if(c.face_neighbor.begin(), c.face_neighbor.end(), [](std::int32_t n) { return n < 0; }));
+    defect.push_back(check_cell(c, tol).empty() ? 0 : 1);
   }
-  std::fprintf(out.f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
-  base = 0;
-  for (const auto& c : vd.cells)
-    if (!c.vertices.empty()) std::fprintf(out.f, "%zu\n", base += c.vertices.size());
-  std::fprintf(out.f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
-  for (std::size_t i = 0; i < ncells; ++i) std::fprintf(out.f, "42\n");
-  // Polyhedra: per cell [nfaces, (nverts, ids...)...] in point ids of the whole file.
-  std::fprintf(out.f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"faces\" format=\"ascii\">\n");
-  std::vector<std::size_t> faceoffsets;
-  std::size_t written = 0;
-  base = 0;
-  for (const auto& c : vd.cells) {
-    if (c.vertices.empty()) continue;
-    std::fprintf(out.f, "%zu", c.face_count());
-    ++written;
-    for (std::size_t f = 0; f < c.face_count(); ++f) {
-      std::fprintf(out.f, " %u", c.face_offsets[f + 1] - c.face_offsets[f]);
-      ++written;
-      for (auto k = c.face_offsets[f]; k < c.face_offsets[f + 1]; ++k, ++written)
-        std::fprintf(out.f, " %zu", base + c.face_vertices[k]);
-    }
-    std::fputc('\n', out.f);
-    faceoffsets.push_back(written);
-    base += c.vertices.size();
-  }
-  std::fprintf(out.f, "</DataArray>\n<DataArray type=\"Int64\" Name=\"faceoffsets\" format=\"ascii\">\n");
-  for (auto w : faceoffsets) std::fprintf(out.f, "%zu\n", w);
-  std::fprintf(out.f, "</DataArray>\n</Cells>\n<CellData Scalars=\"site\">\n"
-                      "<DataArray type=\"Int64\" Name=\"site\" format=\"ascii\">\n");
-  for (std::size_t i = 0; i < vd.cells.size(); ++i)
-    if (!vd.cells[i].vertices.empty()) std::fprintf(out.f, "%zu\n", i);
-  std::fprintf(out.f, "</DataArray>\n</CellData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n");
-  out.file.close();
+  g.cell_data.push_back({"site", std::move(site)});
+  g.cell_data.push_back({"volume", std::move(volume)});
+  g.cell_data.push_back({"walls", std::move(walls)});
+  g.cell_data.push_back({"defect", std::move(defect)});
+  write_vtu_grid(path, g, format);
 }
 
 nlohmann::json cells_manifest(const VoronoiDiagram& vd) {

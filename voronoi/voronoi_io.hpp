@@ -5,12 +5,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "kernel/vtu_writer.hpp"
 #include "voronoi/voronoi.hpp"
 
 namespace dtlab {
 
 void write_cells_obj(const std::string& path, const VoronoiDiagram& vd);
-void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd);
+// VTK_POLYHEDRON cells (repeated sites' empty cells left out) with cell data `site`
+// (the site's index), `volume`, `walls` (faces on the box) and `defect` (1: the cell
+// fails voronoi/cell_check.hpp's check_cell at 1e-9 of the box diagonal).
+void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd, VtuFormat format = VtuFormat::binary);
 // Per cell: site, volume, centroid, faces, neighbours; plus the box and totals.
 nlohmann::json cells_manifest(const VoronoiDiagram& vd);
 

@@ -53,6 +53,22 @@ printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' > "$tmp/tri.off"
 expect 2 "mesh repair refuses a single triangle" -- "$dtlab" mesh repair "$tmp/tri.off" --out "$tmp/tri_fixed.off"
 expect 0 "demo (small)" -- "$dtlab" demo --out "$tmp/demo" --points 2000 --pieces 5 --no-oracles
 [ -s "$tmp/demo/fracture/exploded.png" ] || { echo "FAIL: demo wrote no PNG"; fails=$((fails + 1)); }
+[ -s "$tmp/demo/voronoi_cells.png" ] || { echo "FAIL: demo drew no Voronoi cells"; fails=$((fails + 1)); }
+# Binary VTU (the default) against --vtu-format ascii, decoded by a Python reader.
+vtu_same() {
+  if /usr/bin/python3 "$(dirname "$0")/vtu_compare.py" "$1" "$2"; then pass=$((pass + 1)); else
+    echo "FAIL: $2 differs from $1"; fails=$((fails + 1)); fi
+}
+expect 0 "tetra --vtu" -- "$dtlab" tetra "$tmp/ok.xyz" --out "$tmp/tb" --vtu
+expect 0 "tetra --vtu-format ascii" -- "$dtlab" tetra "$tmp/ok.xyz" --out "$tmp/ta" --vtu --vtu-format ascii
+vtu_same "$tmp/ta.vtu" "$tmp/tb.vtu"
+expect 0 "voronoi --vtu" -- "$dtlab" voronoi "$tmp/ok.xyz" --out "$tmp/vb" --vtu
+expect 0 "voronoi --vtu-format ascii" -- "$dtlab" voronoi "$tmp/ok.xyz" --out "$tmp/va" --vtu --vtu-format ascii
+vtu_same "$tmp/va.vtu" "$tmp/vb.vtu"
+expect 0 "fracture --vtu" -- "$dtlab" fracture "$tmp/cube.off" --pieces 6 --out "$tmp/fb" --vtu
+expect 0 "fracture --vtu-format ascii" -- "$dtlab" fracture "$tmp/cube.off" --pieces 6 --out "$tmp/fa" --vtu --vtu-format ascii
+vtu_same "$tmp/fa/pieces.vtu" "$tmp/fb/pieces.vtu"
+expect 2 "a bad --vtu-format" -- "$dtlab" voronoi "$tmp/ok.xyz" --out "$tmp/vx" --vtu --vtu-format raw
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -1,0 +1,57 @@
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <random>
+
+#include "kernel/tests/vtu_reader.hpp"
+#include "voronoi/voronoi.hpp"
+#include "voronoi/voronoi_io.hpp"
+
+using namespace dtlab;
+
+TEST_CASE("voronoi VTU: binary decodes to the ASCII values; cell data per cell") {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Point3> sites;
+  for (int i = 0; i < 30; ++i) sites.push_back({u(rng), u(rng), u(rng)});
+  sites.push_back(sites[3]);  // a repeated site: its empty cell is left out
+  VoronoiOptions o;
+  o.predicates = PredicateSpec{"exact", 0, false, true};
+  const VoronoiDiagram vd = compute_voronoi(sites, o);
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  const std::string a = dir + "/dtlab_voronoi_vtu_ascii.vtu", b = dir + "/dtlab_voronoi_vtu_binary.vtu";
+  write_cells_vtu(a, vd, VtuFormat::ascii);
+  write_cells_vtu(b, vd);
+  const test::VtuFile fa = test::read_vtu(a), fb = test::read_vtu(b);
+  REQUIRE(fa.arrays.size() == fb.arrays.size());
+  for (const auto& [name, arr] : fa.arrays) {
+    INFO(name);
+    CHECK(arr.format == "ascii");
+    CHECK(fb.arrays.at(name).format == "binary");
+    CHECK(fb.arrays.at(name).type == arr.type);
+    CHECK(fb.arrays.at(name).values == arr.values);
+  }
+  CHECK(fb.first_lines.find("header_type=\"UInt64\"") != std::string::npos);
+  REQUIRE(fb.cells == 30);
+  const auto& site = fb.arrays.at("site").values;
+  const auto& volume = fb.arrays.at("volume").values;
+  double total = 0;
+  std::size_t points = 0;
+  for (std::size_t c = 0; c < 30; ++c) {
+    const auto i = static_cast<std::size_t>(site[c]);
+    CHECK(volume[c] == vd.cells[i].volume);
+    total += volume[c];
+    points += vd.cells[i].vertices.size();
+  }
+  CHECK(total == Approx(vd.box.volume()).epsilon(1e-12));
+  CHECK(fb.points == points);
+  CHECK(fb.arrays.at("defect").values == std::vector<double>(30, 0.0));
+  CHECK(fb.arrays.at("types").values == std::vector<double>(30, 42.0));
+  const auto& walls = fb.arrays.at("walls").values;
+  CHECK(std::count_if(walls.begin(), walls.end(), [](double w) { return w > 0; }) > 0);
+  // Face stream: the last cell's stream ends at the end of the faces array.
+  CHECK(fb.arrays.at("faceoffsets").values.back() == static_cast<double>(fb.arrays.at("faces").values.size()));
+  std::remove(a.c_str());
+  std::remove(b.c_str());
+}
