@@ -11,6 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "kernel/ids.hpp"
 #include "sampling/triangle_mesh.hpp"
 
 namespace dtlab::surface_mesh_convert {
@@ -29,13 +30,13 @@ inline double coordinate(const CGAL::Epeck::FT& v) {
 template <class M>
 TriangleMesh to_triangles(const M& m) {
   TriangleMesh out;
-  std::vector<std::uint32_t> id(m.number_of_vertices() + m.number_of_removed_vertices(), UINT32_MAX);
+  std::vector<std::uint32_t> id(m.number_of_vertices() + m.number_of_removed_vertices(), kNone);
   for (auto f : m.faces()) {
     std::array<std::uint32_t, 3> t{};
     int k = 0;
     for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) {
       if (k == 3) break;
-      if (id[v.idx()] == UINT32_MAX) {
+      if (id[v.idx()] == kNone) {
         id[v.idx()] = static_cast<std::uint32_t>(out.vertices.size());
         const auto& p = m.point(v);
         out.vertices.push_back({coordinate(p.x()), coordinate(p.y()), coordinate(p.z())});

@@ -13,6 +13,7 @@
 
 #include "fracture/deadline_visitor.hpp"
 #include "fracture/surface_mesh_convert.hpp"
+#include "kernel/ids.hpp"
 #include "sampling/bvh.hpp"
 #include "sampling/winding_number.hpp"
 
@@ -159,7 +160,7 @@ WindingSolid winding_number_solid(const TriangleMesh& mesh, double seconds) {
     std::sort(key.begin(), key.end());
     by_corners[key].push_back(tri);
   }
-  std::vector<std::uint32_t> id(refined.vertices.size(), UINT32_MAX);
+  std::vector<std::uint32_t> id(refined.vertices.size(), kNone);
   for (const auto& [key, tris] : by_corners) {
     const auto same = [&](const std::array<std::uint32_t, 3>& a) {
       for (int s = 0; s < 3; ++s)
@@ -170,7 +171,7 @@ WindingSolid winding_number_solid(const TriangleMesh& mesh, double seconds) {
     std::array<std::uint32_t, 3> t{};
     for (int k = 0; k < 3; ++k) {
       auto& v = id[tris[0][k]];
-      if (v == UINT32_MAX) {
+      if (v == kNone) {
         v = static_cast<std::uint32_t>(out.mesh.vertices.size());
         out.mesh.vertices.push_back(refined.vertices[tris[0][k]]);
       }

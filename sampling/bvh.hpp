@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "kernel/ids.hpp"
 #include "sampling/triangle_geometry.hpp"
 #include "sampling/triangle_mesh.hpp"
-#include "kernel/ids.hpp"
 
 namespace dtlab {
 

@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <numeric>
 
+#include "kernel/ids.hpp"
 #include "predicates/adaptive.hpp"
 #include "sampling/bvh.hpp"
 #include "sampling/merge_vertices.hpp"
 #include "sampling/self_intersection.hpp"
-#include "kernel/ids.hpp"
 
 namespace dtlab {
 

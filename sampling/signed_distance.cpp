@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+
 #include "kernel/ids.hpp"
 
 namespace dtlab {

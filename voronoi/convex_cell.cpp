@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "kernel/ids.hpp"
+
 namespace dtlab::vor {
 
 void ConvexCell::reset(const Box& b) {
@@ -126,10 +128,10 @@ bool ConvexCell::clip(const Point3& n, double c, std::int32_t tag, double tol) {
   build_cap(tag);
   // Drop vertices no face uses any more (kept "on" vertices of dropped faces).
   std::vector<std::uint32_t>& used = remap_;
-  used.assign(nv_.size(), UINT32_MAX);
+  used.assign(nv_.size(), kNone);
   v_.clear();
   for (auto& i : nfv_) {
-    if (used[i] == UINT32_MAX) {
+    if (used[i] == kNone) {
       used[i] = static_cast<std::uint32_t>(v_.size());
       v_.push_back(nv_[i]);
     }

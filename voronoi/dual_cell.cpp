@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernel/ids.hpp"
+
 namespace dtlab::vor {
 
 namespace {
@@ -19,7 +21,7 @@ double dist2(const Point3& a, const Point3& b) {
 
 bool DualCellBuilder::gather(std::uint32_t v, std::span<const std::uint32_t> star, std::span<const Tet> tets,
                              std::span<const char> bad) {
-  for (auto g : global_) local_[g] = UINT32_MAX;
+  for (auto g : global_) local_[g] = kNone;
   global_.clear();
   tri_.resize(3 * star.size());
   std::uint32_t* tri = tri_.data();
@@ -30,7 +32,7 @@ bool DualCellBuilder::gather(std::uint32_t v, std::span<const std::uint32_t> sta
     const int i = q[0] == v ? 0 : q[1] == v ? 1 : q[2] == v ? 2 : 3;
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t g = q[kLink[i][k]];
-      if (local_[g] == UINT32_MAX) {
+      if (local_[g] == kNone) {
         local_[g] = static_cast<std::uint32_t>(global_.size());
         global_.push_back(g);
       }
@@ -153,9 +155,9 @@ bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star
   out.face_vertices.reserve(3 * nt);
   out.face_neighbor.clear();
   out.face_neighbor.reserve(nl);
-  vid_.assign(nt, UINT32_MAX);
+  vid_.assign(nt, kNone);
   auto vertex_of = [&](std::uint32_t root) {
-    if (vid_[root] == UINT32_MAX) {
+    if (vid_[root] == kNone) {
       vid_[root] = static_cast<std::uint32_t>(out.vertices.size());
       out.vertices.push_back(lcc_[root]);
     }

@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "kernel/ids.hpp"
 #include "kernel/tetrahedralization.hpp"
 #include "voronoi/cell_buffer.hpp"
 #include "voronoi/voronoi.hpp"
@@ -24,7 +25,7 @@ namespace dtlab::vor {
 
 class DualCellBuilder {
  public:
-  explicit DualCellBuilder(std::size_t sites) : local_(sites, UINT32_MAX) {}
+  explicit DualCellBuilder(std::size_t sites) : local_(sites, kNone) {}
 
   // `star`: the tets containing v; `cc`: circumcentre per tet; `bad[t]`: centre too
   // badly conditioned to trust. On success `out` holds the unclipped cell (vertices,
@@ -44,7 +45,7 @@ class DualCellBuilder {
  private:
   std::uint32_t find(std::uint32_t t);
 
-  std::vector<std::uint32_t> local_;   // global vertex id -> local id, UINT32_MAX when unused
+  std::vector<std::uint32_t> local_;   // global vertex id -> local id, kNone when unused
   std::vector<std::uint32_t> global_;  // local -> global
   std::vector<std::uint32_t> tri_;     // 3 local ids per link triangle (= star tet)
   std::vector<Point3> lcc_;            // link triangle -> circumcentre (cells with merges)

@@ -9,6 +9,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "kernel/ids.hpp"
 #include "voronoi/cell_buffer.hpp"
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/dual_cell.hpp"
@@ -257,12 +258,12 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   const std::size_t n = sites.size();
   std::vector<std::uint32_t> order;
   order.reserve(n);
-  std::vector<std::uint32_t> rank(n, UINT32_MAX);
+  std::vector<std::uint32_t> rank(n, kNone);
   for (const auto& q : r.mesh.tets)
     for (auto v : q)
-      if (rank[v] == UINT32_MAX) rank[v] = static_cast<std::uint32_t>(order.size()), order.push_back(v);
+      if (rank[v] == kNone) rank[v] = static_cast<std::uint32_t>(order.size()), order.push_back(v);
   for (std::uint32_t v = 0; v < n; ++v)
-    if (rank[v] == UINT32_MAX) order.push_back(v);
+    if (rank[v] == kNone) order.push_back(v);
   // Sites renumbered by rank and tets in the order the cells first reach them (counting
   // sort on the lowest rank of their vertices): the stars, tets and centres of
   // consecutive cells then lie in nearby memory instead of all over the mesh.

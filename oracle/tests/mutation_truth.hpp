@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "kernel/tetrahedralization.hpp"
 #include "kernel/ids.hpp"
+#include "kernel/tetrahedralization.hpp"
 
 namespace dtlab::test {
 

@@ -2,9 +2,9 @@
 
 #include <random>
 
+#include "kernel/ids.hpp"
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/bvh.hpp"
-#include "kernel/ids.hpp"
 
 using namespace dtlab;
 
