@@ -94,7 +94,7 @@ void add_bench_command(CLI::App& app, int& rc) {
   sub->add_option("--tools", args->tools, "dtlab, cgal, tetgen")->delimiter(',')->check(CLI::IsMember({"dtlab", "cgal", "tetgen"}))->capture_default_str();
   sub->add_option("--runs", args->runs, "runs per tool and size (median reported)")->transform(count_in(1, 1000))->capture_default_str();
   sub->add_option("--points-seed", args->seed, "seed of the generated points")->capture_default_str();
-  sub->add_option("--out", args->out, "FILE: also write the rows as JSON to this file")->type_name("FILE");
+  sub->add_option("--out", args->out, "also write the rows as JSON to this file")->type_name("FILE");
   sub->add_flag("--json", args->json, "print the rows as JSON instead of a table");
   sub->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   args->kernel.add_to(*sub);

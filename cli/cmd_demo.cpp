@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -89,10 +90,8 @@ int run_steps(const DemoArgs& a, nlohmann::json& summary) {
   const std::string cmd = "/usr/bin/python3 '" + script + "' '" + o + "/fracture/exploded.obj' '" + png + "'";
   std::printf("\n$ %s\n", cmd.c_str());
   std::fflush(stdout);
-  if (std::system(cmd.c_str()) != 0) {
-    std::fprintf(stderr, "dtlab demo: rendering the picture failed (is python3-matplotlib installed?)\n");
-    return kBadInput;
-  }
+  if (std::system(cmd.c_str()) != 0)  // reported by main() (cli/cli_error.hpp), exit 2
+    throw std::runtime_error("rendering the picture failed (is python3-matplotlib installed?)");
   summary["picture"] = png;
   summary["tetrahedralization"] = o + "/torus_dt";
   std::printf("\ndtlab demo: done. Look at %s (exploded pieces), open %s/torus_dt.vtu in ParaView.\n",
@@ -117,7 +116,7 @@ int run_demo(const DemoArgs& a) {
 void add_demo_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<DemoArgs>();
   CLI::App* sub = app.add_subcommand("demo", "the whole pipeline on the built-in bumpy torus");
-  sub->add_option("--out", args->out, "DIR: output folder")->type_name("DIR")->capture_default_str();
+  sub->add_option("--out", args->out, "output folder")->type_name("DIR")->capture_default_str();
   sub->add_option("--points", args->points, "points sampled inside the torus")->transform(count_in(4, 1e8))->capture_default_str();
   sub->add_option("--pieces", args->pieces, "fracture pieces")->transform(count_in(1, 100000))->capture_default_str();
   sub->add_flag("--no-oracles", args->no_oracles, "skip the CGAL and TetGen comparison");

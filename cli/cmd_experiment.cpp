@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_error.hpp"
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/stdout_to_stderr.hpp"
@@ -55,7 +56,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
   auto no_figures = std::make_shared<bool>(false);
   CLI::App* t = sub->add_subcommand("thesis-failures", "reproduce and measure the thesis's robustness failures (chapter 5)");
   auto thesis_quiet = std::make_shared<bool>(false);
-  t->add_option("--out", thesis->out, "DIR: report folder")->type_name("DIR")->capture_default_str();
+  t->add_option("--out", thesis->out, "report folder")->type_name("DIR")->capture_default_str();
   t->add_flag("--quick", thesis->quick, "fewer sizes and cases (seconds instead of minutes)");
   t->add_option("--seed", thesis->seed, "experiment seed")->capture_default_str();
   t->add_flag("--no-figures", *no_figures, "skip the matplotlib figures");
@@ -77,19 +78,20 @@ void add_experiment_command(CLI::App& app, int& rc) {
   auto bench_no_figures = std::make_shared<bool>(false);
   CLI::App* b = sub->add_subcommand("benchmark", "time and memory of dtlab vs CGAL vs TetGen, predicate costs");
   auto bench_quiet = std::make_shared<bool>(false);
-  b->add_option("--out", bench->out, "DIR: report folder")->type_name("DIR")->capture_default_str();
+  b->add_option("--out", bench->out, "report folder")->type_name("DIR")->capture_default_str();
   b->add_flag("--large", bench->large, "also n = 10^7 uniform and 10^6 for the other distributions");
   b->add_flag("--quick", bench->quick, "n up to 10^4, fewer predicate calls (seconds instead of minutes)");
   b->add_option("--runs", bench->runs, "runs per tool and size for n <= 10^5 (larger n: 1 run)")
       ->transform(count_in(1, 1000))->capture_default_str();
   b->add_option("--points-seed,--seed", bench->seed, "seed of the generated points (--seed: the old spelling)")
       ->capture_default_str();
-  b->add_option("--max-n", bench->max_n, "largest n (0: 10^6, 10^7 with --large)")->transform(count_in(4, 1e9));
+  b->add_option("--max-n", bench->max_n, "largest n, at least 4 (0: 10^6; 10^7 with --large, 10^4 with --quick)")->transform(count_in(0, 1e9));
   b->add_flag("--no-figures", *bench_no_figures, "skip the matplotlib figures");
   auto bench_json = std::make_shared<bool>(false);
   b->add_flag("--json", *bench_json, "print a JSON summary (the report's headline facts) on stdout");
   b->add_flag("--quiet", *bench_quiet, "no progress lines on stderr");
   b->callback([bench, bench_no_figures, bench_json, bench_quiet, b, &rc] {
+    if (bench->max_n > 0 && bench->max_n < 4) throw UsageError("--max-n must be 0 or at least 4");
     bench->figures = !*bench_no_figures;
     bench->progress = !*bench_quiet;
     std::vector<std::string> args = {"--out", bench->out.string(), "--runs", std::to_string(bench->runs), "--points-seed",
@@ -107,7 +109,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
   CLI::App* l = sub->add_subcommand(
       "leaderboard", "judge the field's Delaunay codes (CGAL, TetGen, qhull, scipy, gmsh, dtlab) with the exact checker");
   auto board_quiet = std::make_shared<bool>(false);
-  l->add_option("--out", board->out, "DIR: report folder")->type_name("DIR")->capture_default_str();
+  l->add_option("--out", board->out, "report folder")->type_name("DIR")->capture_default_str();
   l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 2*10^4, short shrinks");
   l->add_option("--peers", board->peers, "peers to judge, or all")->delimiter(',');
   l->add_option("--families", board->families, "fuzz families (none given: all)")->delimiter(',');

@@ -139,8 +139,8 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_option("--boolean-seconds", args->boolean_seconds,
                   "time budget of one corefinement; past it a named failure, exit 1 (0: none)")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
-  sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file");
-  sub->add_option("--out", args->out, "DIR: output folder (pieces.obj, exploded.obj, manifest.json, adjacency.txt)")
+  sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file")->type_name("FILE");
+  sub->add_option("--out", args->out, "output folder (pieces.obj, exploded.obj, manifest.json, adjacency.txt)")
       ->type_name("DIR");
   sub->add_flag("--json", args->json, "print the manifest on stdout");
   sub->add_flag("--quiet", args->quiet, "no progress lines on stderr");

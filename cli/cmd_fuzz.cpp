@@ -378,7 +378,7 @@ void add_fuzz_command(CLI::App& app, int& rc) {
                   "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...); its failures are shrunk into "
                   "the corpus. Exit 1 when it failed, 3 when it is not installed");
   sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->transform(count_in(0, 1024))->capture_default_str();
-  sub->add_option("--out", args->out, "DIR: campaign folder (results*.jsonl, corpus/, summary.md, environment.json)")
+  sub->add_option("--out", args->out, "campaign folder (results*.jsonl, corpus/, summary.md, environment.json)")
       ->type_name("DIR");
   sub->add_option("--shard", args->shard, "K/N: run only the cases with ordinal % N == K");
   sub->add_option("--replay", args->replay, "re-run a corpus: a .node file, a corpus or campaign folder");

@@ -89,7 +89,7 @@ void add_mesh_command(CLI::App& app, int& rc) {
   CLI::App* repair = mesh->add_subcommand(
       "repair", "repair into a solid and write it (exit 2, naming what remains, when it cannot become one)");
   repair->add_option("MESH", r->mesh, "mesh (.off .obj .ply .stl) or 'builtin'")->required();
-  repair->add_option("--out", r->out, "FILE: repaired mesh (.off)")->type_name("FILE");
+  repair->add_option("--out", r->out, "repaired mesh (.off)")->type_name("FILE");
   repair->add_flag("--json", r->json, "before, repairs and after as JSON on stdout");
   repair->callback([r, &rc] { rc = run_repair(*r); });
 }

@@ -76,7 +76,7 @@ void add_tetra_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<TetraArgs>();
   CLI::App* sub = app.add_subcommand("tetra", "Delaunay tetrahedralization of a point file (.node .xyz) or of a mesh file's vertices (.off .obj .ply .stl)");
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
-  sub->add_option("--out", args->out, "PREFIX: write PREFIX.node and PREFIX.ele (TetGen format)")->type_name("PREFIX");
+  sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)")->type_name("PREFIX");
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu for ParaView");
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
   sub->add_flag("--check", args->check,

@@ -107,7 +107,7 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<VoronoiArgs>();
   CLI::App* sub = app.add_subcommand("voronoi", "Voronoi cells of a point file, clipped to a box");
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
-  sub->add_option("--out", args->out, "PREFIX: write PREFIX.obj (a group per cell), PREFIX.json (manifest)")
+  sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)")
       ->type_name("PREFIX");
   sub->add_option("--box", args->box, "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
       ->expected(6)->check(number_in(-1e300, 1e300));
