@@ -112,7 +112,9 @@ void add_experiment_command(CLI::App& app, int& rc) {
   l->add_option("--out", board->out, "report folder")->type_name("DIR")->capture_default_str();
   l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 2*10^4, short shrinks");
   l->add_option("--peers", board->peers, "peers to judge, or all")->delimiter(',');
-  l->add_option("--families", board->families, "fuzz families (none given: all)")->delimiter(',');
+  l->add_option("--family,--families", board->families,
+                "fuzz families, as fuzz --family (none given: all; --families is the old spelling)")
+      ->delimiter(',');
   l->add_option("--cases", board->cases, "seeds per (source, size) (0: 2 with --quick, 16 otherwise)")
       ->transform(count_in(0, 1e6));
   l->add_option("--seed", board->seed, "experiment seed")->capture_default_str();
@@ -139,7 +141,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
       return s;
     };
     if (board->peers != std::vector<std::string>{"all"}) args.insert(args.end(), {"--peers", join(board->peers)});
-    if (!board->families.empty()) args.insert(args.end(), {"--families", join(board->families)});
+    if (!board->families.empty()) args.insert(args.end(), {"--family", join(board->families)});
     board->command_line = command_line(l->get_name(), args);
     rc = run_experiment(*board_json, board->out, [&] { return experiments::run_leaderboard(*board).exit_code; });
   });

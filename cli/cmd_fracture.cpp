@@ -56,6 +56,7 @@ int run_fracture(const FractureArgs& a) {
   o.recurse_pieces = a.recurse_pieces;
   o.repair = a.repair;
   o.boolean_seconds = a.boolean_seconds;
+  o.progress = [&progress](std::size_t done, std::size_t total) { progress.update("booleans", done, total); };
   FractureResult r;
   progress.say("fracturing " + a.mesh + " into " + std::to_string(a.pieces) + " pieces (" + a.sampler +
                " sites, then one boolean per piece)");
