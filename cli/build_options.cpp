@@ -4,23 +4,30 @@
 
 namespace dtlab::cli {
 
-void KernelArgs::add_to(CLI::App& app) {
-  app.add_option("--predicates", predicates, "predicate backend")
-      ->check(CLI::IsMember({"naive", "epsilon", "adaptive", "exact"}))
-      ->capture_default_str();
-  app.add_option("--eps", eps, "tolerance of the epsilon backend")->check(number_in(0, 1e300))->capture_default_str();
-  app.add_option("--eps-mode", eps_mode, "epsilon band: absolute or relative to the input magnitudes")
-      ->check(CLI::IsMember({"absolute", "relative"}))
-      ->capture_default_str();
-  app.add_option("--perturb", perturb, "symbolic perturbation of insphere: none or sos")
-      ->check(CLI::IsMember({"none", "sos"}))
-      ->capture_default_str();
-  app.add_option("--boundary", boundary, "infinite, or bigtet[:FACTOR] (the thesis's enclosing tet)")
-      ->capture_default_str();
-  app.add_option("--order", order, "insertion order: input or brio (randomized, Hilbert-sorted rounds)")
-      ->check(CLI::IsMember({"input", "brio"}))
-      ->capture_default_str();
-  app.add_option("--seed", seed, "seed of the insertion order and of the walk")->capture_default_str();
+void KernelArgs::add_to(CLI::App& app, unsigned which) {
+  if (which & kPredicatesOption)
+    app.add_option("--predicates", predicates, "predicate backend")
+        ->check(CLI::IsMember({"naive", "epsilon", "adaptive", "exact"}))
+        ->capture_default_str();
+  if (which & kEpsOption) {
+    app.add_option("--eps", eps, "tolerance of the epsilon backend")->check(number_in(0, 1e300))->capture_default_str();
+    app.add_option("--eps-mode", eps_mode, "epsilon band: absolute or relative to the input magnitudes")
+        ->check(CLI::IsMember({"absolute", "relative"}))
+        ->capture_default_str();
+  }
+  if (which & kPerturbOption)
+    app.add_option("--perturb", perturb, "symbolic perturbation of insphere: none or sos")
+        ->check(CLI::IsMember({"none", "sos"}))
+        ->capture_default_str();
+  if (which & kBoundaryOption)
+    app.add_option("--boundary", boundary, "infinite, or bigtet[:FACTOR] (the thesis's enclosing tet)")
+        ->capture_default_str();
+  if (which & kOrderOption)
+    app.add_option("--order", order, "insertion order: input or brio (randomized, Hilbert-sorted rounds)")
+        ->check(CLI::IsMember({"input", "brio"}))
+        ->capture_default_str();
+  if (which & kSeedOption)
+    app.add_option("--seed", seed, "seed of the insertion order and of the walk")->capture_default_str();
 }
 
 PredicateSpec KernelArgs::predicate_spec() const {

@@ -1,7 +1,9 @@
 #pragma once
 // The kernel options shared by every subcommand that builds a tetrahedralization
-// (tetra, oracle, fuzz, voronoi, ...): --predicates, --eps, --eps-mode, --perturb,
-// --boundary, --order, --seed.
+// (tetra, oracle, bench, voronoi, fuzz): --predicates, --eps, --eps-mode, --perturb,
+// --boundary, --order, --seed. One definition, so the names, defaults and help texts
+// are the same wherever a DT is built; a command registers the subset that applies.
+#include <cstdint>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -9,6 +11,16 @@
 #include "kernel/build.hpp"
 
 namespace dtlab::cli {
+
+enum KernelOption : unsigned {
+  kPredicatesOption = 1u << 0,
+  kEpsOption = 1u << 1,        // --eps and --eps-mode
+  kPerturbOption = 1u << 2,
+  kBoundaryOption = 1u << 3,
+  kOrderOption = 1u << 4,
+  kSeedOption = 1u << 5,
+  kAllKernelOptions = (1u << 6) - 1,
+};
 
 struct KernelArgs {
   std::string predicates = "adaptive";
@@ -19,7 +31,7 @@ struct KernelArgs {
   std::string order = "brio";
   std::uint64_t seed = 1;
 
-  void add_to(CLI::App& app);
+  void add_to(CLI::App& app, unsigned which = kAllKernelOptions);
   PredicateSpec predicate_spec() const;
   BuildOptions build_options() const;  // throws CLI::ValidationError on a bad --boundary
 };

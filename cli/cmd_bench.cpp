@@ -11,6 +11,7 @@
 #include "bench/whole_run.hpp"
 #include "cli/build_options.hpp"
 #include "cli/command.hpp"
+#include "cli/progress.hpp"
 #include "kernel/output_file.hpp"
 #include "cli/number_options.hpp"
 #include "cli/point_source.hpp"
@@ -26,6 +27,7 @@ struct BenchArgs {
   int runs = 3;
   std::uint64_t seed = 1;
   bool json = false;
+  bool quiet = false;
   std::string out;
   KernelArgs kernel;
 };
@@ -38,6 +40,9 @@ int run_bench(const BenchArgs& a) {
     std::printf("| points | distribution | tool | median s | min s | max s | Mpoints/s | peak MB | tets | bytes/tet |\n");
     std::printf("| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
   }
+  Progress progress("bench", a.quiet);
+  const std::size_t total = a.dists.size() * a.sizes.size() * a.tools.size() * std::size_t(a.runs);
+  std::size_t done = 0;
   for (const std::string& dist : a.dists) {
     for (double size : a.sizes) {
       const auto n = static_cast<std::size_t>(size);
@@ -45,7 +50,11 @@ int run_bench(const BenchArgs& a) {
       malloc_trim(0);  // what generating them freed goes back to the system before the children fork
       for (const std::string& tool : a.tools) {
         BenchRow row{dist, n, tool, {}};
-        for (int r = 0; r < a.runs; ++r) row.runs.push_back(measure_run(tool, points, spec, options));
+        for (int r = 0; r < a.runs; ++r) {
+          progress.update("runs", done, total, dist + " n=" + std::to_string(n) + " " + tool);
+          row.runs.push_back(measure_run(tool, points, spec, options));
+          ++done;
+        }
         const bool any = row.median_seconds() > 0;
         const RunMeasure& last = row.runs.back();
         // Measured: the child's peak resident memory over the finite tets.
@@ -71,6 +80,7 @@ int run_bench(const BenchArgs& a) {
       }
     }
   }
+  progress.update("runs", done, total);
   if (a.json) std::printf("%s\n", all.dump(2).c_str());
   if (!a.out.empty()) write_text_file(a.out, all.dump(2) + "\n");
   return kOk;
@@ -87,8 +97,9 @@ void add_bench_command(CLI::App& app, int& rc) {
   sub->add_option("--tools", args->tools, "dtlab, cgal, tetgen")->delimiter(',')->check(CLI::IsMember({"dtlab", "cgal", "tetgen"}))->capture_default_str();
   sub->add_option("--runs", args->runs, "runs per tool and size (median reported)")->transform(count_in(1, 1000))->capture_default_str();
   sub->add_option("--points-seed", args->seed, "seed of the generated points")->capture_default_str();
-  sub->add_option("--out", args->out, "also write the rows as JSON to this file");
+  sub->add_option("--out", args->out, "also write the rows as JSON to this file")->type_name("FILE");
   sub->add_flag("--json", args->json, "print the rows as JSON instead of a table");
+  sub->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   args->kernel.add_to(*sub);
   sub->callback([args, &rc] { rc = run_bench(*args); });
 }

@@ -24,7 +24,7 @@ void add_check_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<Args>();
   sub->add_option("PREFIX", args->prefix, "reads PREFIX.node and PREFIX.ele")->required();
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
-  sub->add_option("--witnesses", args->witnesses, "defects listed per kind (all are counted)")->transform(count_in(0, 1e9));
+  sub->add_option("--witnesses", args->witnesses, "defects listed per kind (all are counted)")->transform(count_in(0, 1e9))->capture_default_str();
   sub->add_flag("--volume-identity", args->volume_identity,
                 "also compare the exact sum of tet volumes with the hull's (a slow cross-check)");
   sub->callback([args, &rc] {

@@ -4,11 +4,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_error.hpp"
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/commands.hpp"
@@ -43,8 +45,8 @@ int run_dtlab(std::vector<std::string> args) {
   std::vector<std::string> reversed(args.rbegin(), args.rend());
   try {
     app.parse(reversed);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? kOk : kBadInput;
+  } catch (const CLI::ParseError&) {
+    return report_error(current_error(args.empty() ? "" : args.front()), false);
   }
   std::fflush(stdout);
   return rc;
@@ -93,10 +95,8 @@ int run_steps(const DemoArgs& a, nlohmann::json& summary) {
   const std::string cmd = "/usr/bin/python3 '" + script + "' '" + o + "/fracture/exploded.obj' '" + png + "'";
   std::printf("\n$ %s\n", cmd.c_str());
   std::fflush(stdout);
-  if (std::system(cmd.c_str()) != 0) {
-    std::fprintf(stderr, "dtlab demo: rendering the picture failed (is python3-matplotlib installed?)\n");
-    return kBadInput;
-  }
+  if (std::system(cmd.c_str()) != 0)  // reported by main() (cli/cli_error.hpp), exit 2
+    throw std::runtime_error("rendering the picture failed (is python3-matplotlib installed?)");
   summary["picture"] = png;
   summary["cells_picture"] = o + "/voronoi_cells.png";
   summary["tetrahedralization"] = o + "/torus_dt";
@@ -123,7 +123,7 @@ int run_demo(const DemoArgs& a) {
 void add_demo_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<DemoArgs>();
   CLI::App* sub = app.add_subcommand("demo", "the whole pipeline on the built-in bumpy torus");
-  sub->add_option("--out", args->out, "output folder")->capture_default_str();
+  sub->add_option("--out", args->out, "output folder")->type_name("DIR")->capture_default_str();
   sub->add_option("--points", args->points, "points sampled inside the torus")->transform(count_in(4, 1e8))->capture_default_str();
   sub->add_option("--pieces", args->pieces, "fracture pieces")->transform(count_in(1, 100000))->capture_default_str();
   sub->add_flag("--no-oracles", args->no_oracles, "skip the CGAL and TetGen comparison");

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_error.hpp"
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/stdout_to_stderr.hpp"
@@ -32,12 +33,7 @@ int run_experiment(bool json, const std::filesystem::path& out, Run&& run) {
   int code;
   {
     StdoutToStderr quiet(json);
-    try {
-      code = run();
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "dtlab experiment: %s\n", e.what());
-      return kBadInput;
-    }
+    code = run();  // an exception is reported by main() (cli/cli_error.hpp), exit 2
     std::printf("report: %s\n", (out / "report.md").string().c_str());
   }
   if (json) {
@@ -59,15 +55,17 @@ void add_experiment_command(CLI::App& app, int& rc) {
   thesis->out = "reports/thesis-failures";
   auto no_figures = std::make_shared<bool>(false);
   CLI::App* t = sub->add_subcommand("thesis-failures", "reproduce and measure the thesis's robustness failures (chapter 5)");
-  t->add_option("--out", thesis->out, "report folder")->capture_default_str();
+  auto thesis_quiet = std::make_shared<bool>(false);
+  t->add_option("--out", thesis->out, "report folder")->type_name("DIR")->capture_default_str();
   t->add_flag("--quick", thesis->quick, "fewer sizes and cases (seconds instead of minutes)");
   t->add_option("--seed", thesis->seed, "experiment seed")->capture_default_str();
   t->add_flag("--no-figures", *no_figures, "skip the matplotlib figures");
   auto thesis_json = std::make_shared<bool>(false);
   t->add_flag("--json", *thesis_json, "print a JSON summary (the report's headline facts) on stdout");
-  t->callback([thesis, no_figures, thesis_json, t, &rc] {
+  t->add_flag("--quiet", *thesis_quiet, "no progress lines on stderr");
+  t->callback([thesis, no_figures, thesis_json, thesis_quiet, t, &rc] {
     thesis->figures = !*no_figures;
-    thesis->progress = isatty(2);
+    thesis->progress = !*thesis_quiet;
     std::vector<std::string> args = {"--out", thesis->out.string(), "--seed", std::to_string(thesis->seed)};
     if (thesis->quick) args.push_back("--quick");
     if (*no_figures) args.push_back("--no-figures");
@@ -79,20 +77,24 @@ void add_experiment_command(CLI::App& app, int& rc) {
   bench->out = "reports/benchmark";
   auto bench_no_figures = std::make_shared<bool>(false);
   CLI::App* b = sub->add_subcommand("benchmark", "time and memory of dtlab vs CGAL vs TetGen, predicate costs");
-  b->add_option("--out", bench->out, "report folder")->capture_default_str();
+  auto bench_quiet = std::make_shared<bool>(false);
+  b->add_option("--out", bench->out, "report folder")->type_name("DIR")->capture_default_str();
   b->add_flag("--large", bench->large, "also n = 10^7 uniform and 10^6 for the other distributions");
   b->add_flag("--quick", bench->quick, "n up to 10^4, fewer predicate calls (seconds instead of minutes)");
   b->add_option("--runs", bench->runs, "runs per tool and size for n <= 10^5 (larger n: 1 run)")
       ->transform(count_in(1, 1000))->capture_default_str();
-  b->add_option("--seed", bench->seed, "seed of the generated points")->capture_default_str();
-  b->add_option("--max-n", bench->max_n, "largest n (default 10^6, 10^7 with --large)")->transform(count_in(4, 1e9));
+  b->add_option("--points-seed,--seed", bench->seed, "seed of the generated points (--seed: the old spelling)")
+      ->capture_default_str();
+  b->add_option("--max-n", bench->max_n, "largest n, at least 4 (0: 10^6; 10^7 with --large, 10^4 with --quick)")->transform(count_in(0, 1e9));
   b->add_flag("--no-figures", *bench_no_figures, "skip the matplotlib figures");
   auto bench_json = std::make_shared<bool>(false);
   b->add_flag("--json", *bench_json, "print a JSON summary (the report's headline facts) on stdout");
-  b->callback([bench, bench_no_figures, bench_json, b, &rc] {
+  b->add_flag("--quiet", *bench_quiet, "no progress lines on stderr");
+  b->callback([bench, bench_no_figures, bench_json, bench_quiet, b, &rc] {
+    if (bench->max_n > 0 && bench->max_n < 4) throw UsageError("--max-n must be 0 or at least 4");
     bench->figures = !*bench_no_figures;
-    bench->progress = isatty(2);
-    std::vector<std::string> args = {"--out", bench->out.string(), "--runs", std::to_string(bench->runs), "--seed",
+    bench->progress = !*bench_quiet;
+    std::vector<std::string> args = {"--out", bench->out.string(), "--runs", std::to_string(bench->runs), "--points-seed",
                                      std::to_string(bench->seed)};
     if (bench->large) args.push_back("--large");
     if (bench->quick) args.push_back("--quick");
@@ -106,21 +108,28 @@ void add_experiment_command(CLI::App& app, int& rc) {
   auto board_no_meshes = std::make_shared<bool>(false);
   CLI::App* l = sub->add_subcommand(
       "leaderboard", "judge the field's Delaunay codes (CGAL, TetGen, qhull, scipy, gmsh, dtlab) with the exact checker");
-  l->add_option("--out", board->out, "report folder")->capture_default_str();
+  auto board_quiet = std::make_shared<bool>(false);
+  l->add_option("--out", board->out, "report folder")->type_name("DIR")->capture_default_str();
   l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 2*10^4, short shrinks");
-  l->add_option("--peers", board->peers, "peers to judge (default all)")->delimiter(',');
-  l->add_option("--families", board->families, "fuzz families (default all)")->delimiter(',');
-  l->add_option("--cases", board->cases, "seeds per (source, size); default 2 quick, 16 otherwise");
+  l->add_option("--peers", board->peers, "peers to judge, or all")->delimiter(',');
+  l->add_option("--family,--families", board->families,
+                "fuzz families, as fuzz --family (none given: all; --families is the old spelling)")
+      ->delimiter(',');
+  l->add_option("--cases", board->cases, "seeds per (source, size) (0: 2 with --quick, 16 otherwise)")
+      ->transform(count_in(0, 1e6));
   l->add_option("--seed", board->seed, "experiment seed")->capture_default_str();
-  l->add_option("--jobs", board->jobs, "peer runs at a time")->check(CLI::PositiveNumber)->capture_default_str();
-  l->add_option("--timeout", board->timeout_s, "seconds per peer run (default 20 quick, 120 otherwise)");
-  l->add_option("--speed-n", board->speed_n, "one size for the speed table (default 10^5 and 10^6; 2*10^4 with --quick)");
+  l->add_option("--jobs", board->jobs, "peer runs at a time")->transform(count_in(1, 1024))->capture_default_str();
+  l->add_option("--timeout", board->timeout_s, "seconds per peer run (0: 20 with --quick, 120 otherwise)")
+      ->check(number_in(0, 1e6));
+  l->add_option("--speed-n", board->speed_n, "one size for the speed table (0: 10^5 and 10^6; 2*10^4 with --quick)")
+      ->transform(count_in(0, 1e9));
   l->add_flag("--no-meshes", *board_no_meshes, "leave out the CGAL demo mesh samples");
   l->add_option("--cgal-data", board->cgal_data, "CGAL demo data.tar.gz (default: libcgal-demo's)");
   l->add_flag("--json", *board_json, "print a JSON summary (the report's headline facts) on stdout");
-  l->callback([board, board_json, board_no_meshes, l, &rc] {
+  l->add_flag("--quiet", *board_quiet, "no progress lines on stderr");
+  l->callback([board, board_json, board_no_meshes, board_quiet, l, &rc] {
     board->meshes = !*board_no_meshes;
-    board->progress = isatty(2);
+    board->progress = !*board_quiet;
     std::vector<std::string> args = {"--out", board->out.string(), "--seed", std::to_string(board->seed)};
     if (board->quick) args.push_back("--quick");
     if (board->cases) args.insert(args.end(), {"--cases", std::to_string(board->cases)});
@@ -132,7 +141,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
       return s;
     };
     if (board->peers != std::vector<std::string>{"all"}) args.insert(args.end(), {"--peers", join(board->peers)});
-    if (!board->families.empty()) args.insert(args.end(), {"--families", join(board->families)});
+    if (!board->families.empty()) args.insert(args.end(), {"--family", join(board->families)});
     board->command_line = command_line(l->get_name(), args);
     rc = run_experiment(*board_json, board->out, [&] { return experiments::run_leaderboard(*board).exit_code; });
   });

@@ -6,11 +6,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_error.hpp"
 #include "cli/command.hpp"
+#include "cli/progress.hpp"
 #include "kernel/output_file.hpp"
 #include "cli/number_options.hpp"
 #include "fracture/piece_io.hpp"
 #include "fracture/render_png.hpp"
+#include "kernel/input_error.hpp"
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/mesh_io.hpp"
 
@@ -21,58 +24,59 @@ struct FractureArgs {
   std::string mesh = "builtin", out, sampler = "winding", png;
   std::size_t pieces = 20, recurse_pieces = 4;
   std::uint64_t seed = 1;
-  double margin = 0, explode = 0.6;
+  double gap = 0, explode = 0.6;
   unsigned threads = 0;
   std::vector<std::size_t> recurse;
-  bool blue_noise = false, json = false, repair = false, split = false, vtu = false;
+  bool blue_noise = false, json = false, repair = false, split = false, quiet = false, vtu = false;
   std::string vtu_format = "binary";
   double boolean_seconds = 30;
 };
 
 int run_fracture(const FractureArgs& a) {
-  if (a.out.empty() && !a.json && a.png.empty()) {  // never compute without writing
-    std::fprintf(stderr, "dtlab fracture: nothing to write: give --out DIR (or --json, --png FILE)\n");
-    return kBadInput;
-  }
+  if (a.out.empty() && !a.json && a.png.empty())  // never compute without writing
+    throw UsageError("nothing to write: give --out DIR (or --json, --png FILE)");
   const auto method = parse_sample_method(a.sampler);
-  if (!method || *method == SampleMethod::surface) {
-    std::fprintf(stderr, "dtlab fracture: --sampler must be rays, sdf or winding (a volume sampler)\n");
-    return kBadInput;
-  }
+  if (!method || *method == SampleMethod::surface)
+    throw UsageError("--sampler must be rays, sdf or winding (a volume sampler)");
+  Progress progress("fracture", a.quiet);
   const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
-  if (const Box3 box = bounding_box(mesh); !(a.margin < norm(box.hi - box.lo))) {
-    std::fprintf(stderr, "dtlab fracture: --margin %g is not smaller than the mesh (bounding box diagonal %g)\n",
-                 a.margin, norm(box.hi - box.lo));
-    return kBadInput;
+  if (const Box3 box = bounding_box(mesh); !(a.gap < norm(box.hi - box.lo))) {
+    char why[160];
+    std::snprintf(why, sizeof why, "--gap %g is not smaller than the mesh (bounding box diagonal %g)", a.gap,
+                  norm(box.hi - box.lo));
+    throw UsageError(why);
   }
   FractureOptions o;
   o.pieces = a.pieces;
   o.sampler = *method;
   o.blue_noise = a.blue_noise;
   o.seed = a.seed;
-  o.margin = a.margin;
+  o.margin = a.gap;
   o.threads = a.threads;
   o.recurse = a.recurse;
   o.recurse_pieces = a.recurse_pieces;
   o.repair = a.repair;
   o.boolean_seconds = a.boolean_seconds;
+  o.progress = [&progress](std::size_t done, std::size_t total) { progress.update("booleans", done, total); };
   FractureResult r;
+  progress.say("fracturing " + a.mesh + " into " + std::to_string(a.pieces) + " pieces (" + a.sampler +
+               " sites, then one boolean per piece)");
   try {
     r = fracture_mesh(mesh, o);
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "dtlab fracture: %s: %s\n", a.mesh.c_str(), e.what());
-    return kBadInput;
+    throw InputError(a.mesh, 0, e.what());
   } catch (const std::runtime_error& e) {  // a named failure of a boolean (time budget)
     std::fprintf(stderr, "dtlab fracture: %s: %s\n", a.mesh.c_str(), e.what());
     return kDefect;
   }
   nlohmann::json m = fracture_manifest(r);
   m["input"] = a.mesh;
-  m["options"] = {{"pieces", a.pieces}, {"sampler", a.sampler}, {"seed", a.seed}, {"margin", a.margin},
+  m["options"] = {{"pieces", a.pieces}, {"sampler", a.sampler}, {"seed", a.seed}, {"gap", a.gap}, {"margin", a.gap},
                   {"blue_noise", a.blue_noise}, {"explode", a.explode}, {"recurse", a.recurse},
                   {"recurse_pieces", a.recurse_pieces}, {"repair", a.repair}, {"split", a.split}, {"vtu", a.vtu},
                   {"boolean_seconds", a.boolean_seconds}};
   if (!a.out.empty()) {
+    progress.say("writing " + std::to_string(r.pieces.size()) + " pieces to " + a.out);
     std::filesystem::create_directories(a.out);
     write_pieces_obj(a.out + "/pieces.obj", r);
     write_pieces_obj(a.out + "/exploded.obj", r, a.explode);
@@ -109,8 +113,8 @@ int run_fracture(const FractureArgs& a) {
       std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s%s}\n", a.out.c_str(),
                   a.split ? ", pieces/piece_NNNN.obj" : "", a.vtu ? ", pieces.vtu" : "");
   }
-  // With a margin the pieces are meant to lose volume; without one they must tile the mesh.
-  return a.margin == 0 && rel > 1e-9 ? kDefect : kOk;
+  // With a gap the pieces are meant to lose volume; without one they must tile the mesh.
+  return a.gap == 0 && rel > 1e-9 ? kDefect : kOk;
 }
 }  // namespace
 
@@ -119,18 +123,18 @@ void add_fracture_command(CLI::App& app, int& rc) {
   CLI::App* sub = app.add_subcommand("fracture", "Voronoi fracture of a closed mesh into closed pieces");
   sub->add_option("MESH", args->mesh, "closed mesh (.off .obj .ply .stl) or 'builtin' (bumpy torus)")
       ->capture_default_str();
-  sub->add_option("--pieces", args->pieces, "number of Voronoi sites")->check(CLI::Range(1ul, 100000ul))
+  sub->add_option("--pieces", args->pieces, "number of Voronoi sites")->transform(count_in(1, 100000))
       ->capture_default_str();
   sub->add_option("--sampler", args->sampler, "site sampler: rays | sdf | winding")->capture_default_str();
   sub->add_flag("--blue-noise", args->blue_noise, "blue-noise sites (weighted sample elimination)");
   sub->add_option("--seed", args->seed, "random seed")->capture_default_str();
-  sub->add_option("--margin", args->margin, "gap between neighbouring pieces (mesh units)")
+  sub->add_option("--gap,--margin", args->gap, "gap between neighbouring pieces (mesh units); --margin is the old spelling")
       ->check(number_in(0, 1e300))->capture_default_str();
   sub->add_option("--explode", args->explode, "exploded.obj: move pieces by this times their centroid offset")
       ->check(number_in(0, 1000))->capture_default_str();
   sub->add_option("--recurse", args->recurse, "pieces to fracture again (ids of the first level)")->delimiter(',');
   sub->add_option("--recurse-pieces", args->recurse_pieces, "pieces each --recurse piece is split into")
-      ->check(CLI::Range(1ul, 10000ul))->capture_default_str();
+      ->transform(count_in(1, 10000))->capture_default_str();
   sub->add_option("--threads", args->threads, "threads for the booleans (0: all)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--repair", args->repair,
                 "repair the mesh first (merge, drop degenerate, orient, stitch, fill holes, resolve self-intersections)");
@@ -141,9 +145,11 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_flag("--vtu", args->vtu, "also write OUT/pieces.vtu (a polyhedron cell per piece) for ParaView");
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
       ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
-  sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file");
-  sub->add_option("--out", args->out, "output folder");
+  sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file")->type_name("FILE");
+  sub->add_option("--out", args->out, "output folder (pieces.obj, exploded.obj, manifest.json, adjacency.txt)")
+      ->type_name("DIR");
   sub->add_flag("--json", args->json, "print the manifest on stdout");
+  sub->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   sub->callback([args, &rc] { rc = run_fracture(*args); });
 }
 

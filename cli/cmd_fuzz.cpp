@@ -1,7 +1,5 @@
 // `dtlab fuzz`: degeneracy fuzz campaigns (fuzz/campaign.hpp), corpus replay, and
 // the list of point-set families.
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -14,8 +12,11 @@
 #include <thread>
 #include <vector>
 
+#include "cli/build_options.hpp"
+#include "cli/cli_error.hpp"
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
+#include "cli/progress.hpp"
 #include "experiments/peer_campaign.hpp"
 #include "oracle/check.hpp"
 #include "oracle/compare.hpp"
@@ -41,9 +42,7 @@ struct FuzzArgs {
   std::size_t min_points = 8, max_points = 64;
   std::string predicates = "adaptive";
   std::string perturb = "sos";
-  double eps = 1e-12;
-  bool relative_eps = false;
-  std::string boundary = "infinite";
+  KernelArgs kernel;  // --eps, --eps-mode, --boundary, --order (the seed is set per case)
   std::string oracle = "none";
   std::string target;  // a peer: judge it instead of dtlab
   unsigned jobs = 1;
@@ -56,6 +55,7 @@ struct FuzzArgs {
   bool summarize_only = false;
   std::vector<std::string> summarize_dirs;
   bool json = false;
+  bool quiet = false;
   bool predicates_given = false;
 };
 
@@ -68,9 +68,7 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
-[[noreturn]] void usage_error(const std::string& what) {
-  throw CLI::ValidationError("dtlab fuzz", what);
-}
+[[noreturn]] void usage_error(const std::string& what) { throw UsageError(what); }
 
 std::vector<PredicateSpec> backends_of(const FuzzArgs& a) {
   std::vector<PredicateSpec> specs;
@@ -82,8 +80,8 @@ std::vector<PredicateSpec> backends_of(const FuzzArgs& a) {
       PredicateSpec spec;
       spec.backend = name;
       spec.perturb = p == "sos";
-      spec.eps = a.eps;
-      spec.relative_eps = a.relative_eps;
+      spec.eps = a.kernel.eps;
+      spec.relative_eps = a.kernel.eps_mode == "relative";
       specs.push_back(spec);
     }
   }
@@ -131,6 +129,13 @@ int run_target(const FuzzArgs& a, const std::vector<std::string>& families) {
   o.shrink = !a.no_shrink;
   o.shrink_budget = a.shrink_budget;
   o.jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t total = o.only_case ? o.sources.size() : o.cases * o.sources.size();
+  Progress progress("fuzz", a.quiet);
+  std::size_t done = 0, failed = 0;
+  o.on_case = [&](const experiments::PeerCase& c) {
+    failed += c.failed();
+    progress.update("cases", ++done, total, std::to_string(failed) + " failing");
+  };
   const auto cases = experiments::run_peer_campaign(o);
   struct Row {
     std::size_t cases = 0, failing = 0;
@@ -173,16 +178,6 @@ int run_target(const FuzzArgs& a, const std::vector<std::string>& families) {
   }
   if (not_installed == cases.size() && !cases.empty()) return 3;
   return failing ? kDefect : kOk;
-}
-
-// A one-line progress bar on stderr, only when stderr is a terminal.
-void progress_bar(std::size_t done, std::size_t total, std::size_t failing) {
-  constexpr int width = 30;
-  const int filled = total ? static_cast<int>(width * done / total) : width;
-  std::fprintf(stderr, "\r  fuzz [%s%s] %zu/%zu cases, %zu failing", std::string(filled, '#').c_str(),
-               std::string(width - filled, '.').c_str(), done, total, failing);
-  if (done == total) std::fprintf(stderr, "\n");
-  std::fflush(stderr);
 }
 
 std::string point_text(const Point3& p) {
@@ -234,11 +229,7 @@ void print_witness(const fuzz::ReplayResult& r) {
 int run_replay(const FuzzArgs& a) {
   fuzz::ReplayOptions options;
   if (a.predicates_given) options.backends = backends_of(a);
-  if (a.boundary != "infinite") {
-    BuildOptions b;
-    if (!fuzz::parse_boundary(a.boundary, b)) usage_error("bad --boundary '" + a.boundary + "'");
-    options.boundary = b;
-  }
+  if (a.kernel.boundary != "infinite") options.boundary = a.kernel.build_options();
   const auto results = fuzz::replay_corpus(a.replay, options);
   std::size_t failing = 0;
   nlohmann::json lines = nlohmann::json::array();
@@ -336,7 +327,7 @@ int run_fuzz(const FuzzArgs& a) {
   o.min_points = std::min(a.min_points, a.max_points);
   o.seed = a.seed;
   o.backends = backends_of(a);
-  if (!fuzz::parse_boundary(a.boundary, o.build)) usage_error("bad --boundary '" + a.boundary + "'");
+  o.build = a.kernel.build_options();  // boundary and order; the seed is set per case
   o.oracles = oracles_of(a.oracle);
   o.jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
   o.out_dir = a.out;
@@ -350,7 +341,10 @@ int run_fuzz(const FuzzArgs& a) {
   }
   o.shrink = !a.no_shrink;
   o.shrink_budget = a.shrink_budget;
-  if (isatty(fileno(stderr))) o.progress = progress_bar;
+  Progress progress("fuzz", a.quiet);
+  o.progress = [&progress](std::size_t done, std::size_t total, std::size_t failing) {
+    progress.update("cases", done, total, std::to_string(failing) + " failing");
+  };
 
   const fuzz::CampaignResult result = fuzz::run_campaign(o);
   print_summary(result.records, a.json, result.ran, result.resumed);
@@ -364,16 +358,18 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   CLI::App* sub = app.add_subcommand("fuzz", "degeneracy fuzz campaigns: generate, build, check, shrink");
   sub->add_option("--family", args->families, "all, or a comma-separated list (see --list)");
   sub->add_option("--cases", args->cases, "cases per family")->transform(count_in(1, 1e12))->capture_default_str();
-  sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)")->transform(count_in(0, 1e15));
+  sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)")
+      ->transform(count_in(0, 1e15))
+      ->default_str("all");
   sub->add_option("--seed", args->seed, "campaign seed")->capture_default_str();
   sub->add_option("--points", args->max_points, "largest number of points per case")->transform(count_in(1, 1e7))->capture_default_str();
   sub->add_option("--min-points", args->min_points, "smallest number of points per case")->transform(count_in(1, 1e7))->capture_default_str();
   auto* pred = sub->add_option("--predicates", args->predicates, "comma list of naive, epsilon, adaptive, exact")
                    ->capture_default_str();
   sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();
-  sub->add_option("--eps", args->eps, "epsilon backend: the band")->check(number_in(0, 1e300))->capture_default_str();
-  sub->add_flag("--relative-eps", args->relative_eps, "epsilon backend: relative band");
-  sub->add_option("--boundary", args->boundary, "infinite or bigtet[:FACTOR]")->capture_default_str();
+  args->kernel.add_to(*sub, kEpsOption | kBoundaryOption | kOrderOption);
+  sub->add_flag_callback(
+      "--relative-eps", [args] { args->kernel.eps_mode = "relative"; }, "the old spelling of --eps-mode relative");
   sub->add_option("--against,--oracle", args->oracle,
                   "none, or a comma list of peers to compare with (cgal, tetgen, qhull, ...), as in `dtlab oracle`; "
                   "--oracle is the old spelling")
@@ -382,7 +378,8 @@ void add_fuzz_command(CLI::App& app, int& rc) {
                   "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...); its failures are shrunk into "
                   "the corpus. Exit 1 when it failed, 3 when it is not installed");
   sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->transform(count_in(0, 1024))->capture_default_str();
-  sub->add_option("--out", args->out, "campaign folder: results*.jsonl and corpus/");
+  sub->add_option("--out", args->out, "campaign folder (results*.jsonl, corpus/, summary.md, environment.json)")
+      ->type_name("DIR");
   sub->add_option("--shard", args->shard, "K/N: run only the cases with ordinal % N == K");
   sub->add_option("--replay", args->replay, "re-run a corpus: a .node file, a corpus or campaign folder");
   sub->add_flag("--no-shrink", args->no_shrink, "do not shrink failing cases");
@@ -393,6 +390,7 @@ void add_fuzz_command(CLI::App& app, int& rc) {
                                     "summary.md and summary.json in --out, without running")
                         ->expected(0, -1);
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
+  sub->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   sub->callback([args, pred, summarize, &rc] {
     args->predicates_given = pred->count() > 0;
     args->summarize_only = summarize->count() > 0;

@@ -5,7 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_error.hpp"
 #include "cli/command.hpp"
+#include "cli/number_options.hpp"
 #include "fracture/mesh_repair.hpp"
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/mesh_io.hpp"
@@ -43,6 +45,8 @@ int run_check(const MeshArgs& a) {
 
 int run_repair(const MeshArgs& a) {
   const RepairResult r = repair_mesh(load(a.mesh));
+  // Not repairable: the one error style, its JSON object inside the report.
+  const CliError error{"mesh repair", a.mesh, 0, "cannot be repaired into a solid: " + r.after.why_not_solid()};
   if (r.solid() && !a.out.empty()) write_off(a.out, r.mesh);
   if (a.json) {
     nlohmann::json steps = nlohmann::json::array();
@@ -53,6 +57,7 @@ int run_repair(const MeshArgs& a) {
                         {"after", mesh_report_json(r.after)},
                         {"solid", r.solid()},
                         {"out", r.solid() ? a.out : ""}};
+    if (!r.solid()) j.update(error_json(error));
     std::printf("%s\n", j.dump(2).c_str());
   } else {
     print_report(a.mesh, r.before);
@@ -62,11 +67,7 @@ int run_repair(const MeshArgs& a) {
     std::printf("after: %s\n", r.after.summary().c_str());
     if (r.solid() && !a.out.empty()) std::printf("wrote %s\n", a.out.c_str());
   }
-  if (!r.solid()) {
-    std::fprintf(stderr, "dtlab mesh repair: %s: cannot be repaired into a solid: %s\n", a.mesh.c_str(),
-                 r.after.why_not_solid().c_str());
-    return kBadInput;
-  }
+  if (!r.solid()) return report_error(error, false);
   return kOk;
 }
 }  // namespace
@@ -80,7 +81,7 @@ void add_mesh_command(CLI::App& app, int& rc) {
       "check", "closed, manifold, oriented, self-intersections, holes, duplicates, degenerate triangles, volume "
                "(exit 0 solid, 1 not)");
   check->add_option("MESH", c->mesh, "mesh (.off .obj .ply .stl) or 'builtin'")->required();
-  check->add_option("--locations", c->locations, "locations listed per problem")->capture_default_str();
+  check->add_option("--locations", c->locations, "locations listed per problem")->transform(count_in(0, 1e9))->capture_default_str();
   check->add_flag("--json", c->json, "the report as JSON on stdout");
   check->callback([c, &rc] { rc = run_check(*c); });
 
@@ -88,7 +89,7 @@ void add_mesh_command(CLI::App& app, int& rc) {
   CLI::App* repair = mesh->add_subcommand(
       "repair", "repair into a solid and write it (exit 2, naming what remains, when it cannot become one)");
   repair->add_option("MESH", r->mesh, "mesh (.off .obj .ply .stl) or 'builtin'")->required();
-  repair->add_option("--out", r->out, "repaired mesh (.off)");
+  repair->add_option("--out", r->out, "repaired mesh (.off)")->type_name("FILE");
   repair->add_flag("--json", r->json, "before, repairs and after as JSON on stdout");
   repair->callback([r, &rc] { rc = run_repair(*r); });
 }

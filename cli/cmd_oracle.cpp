@@ -1,5 +1,4 @@
-// `dtlab oracle INPUT [--against PEERS|all] [--predicates NAME] [--perturb sos|none]
-// [--json]`: builds our DT, runs each peer in its own process (oracle/peers.hpp),
+// `dtlab oracle INPUT [--against PEERS|all] [kernel options as tetra] [--json]`: builds our DT, runs each peer in its own process (oracle/peers.hpp),
 // judges every answer with the exact checker against the input points, and compares
 // ours canonically (oracle/compare.hpp) with every peer whose answer is proven
 // Delaunay.
@@ -13,10 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "cli/build_options.hpp"
 #include "cli/command.hpp"
+#include "cli/progress.hpp"
 #include "cli/number_options.hpp"
 #include "cli/input_points.hpp"
 #include "kernel/build.hpp"
+#include "kernel/input_error.hpp"
 #include "kernel/point_io.hpp"
 #include "oracle/check.hpp"
 #include "oracle/compare.hpp"
@@ -32,12 +34,12 @@ namespace {
 struct Args {
   std::string input;
   std::vector<std::string> against = {"cgal", "tetgen"};
-  std::string predicates = "adaptive";
-  std::string perturb = "sos";
+  KernelArgs kernel;
   std::string tetgen = "tetgen";
   double timeout = 600;
   double memory_mb = 0;
   bool json = false;
+  bool quiet = false;
 };
 
 void run_oracle(const Args& a, int& rc) {
@@ -45,8 +47,8 @@ void run_oracle(const Args& a, int& rc) {
   const auto& pts = pf.points;
   OracleSessionOptions o;
   o.against = a.against;
-  o.predicates.backend = a.predicates;
-  o.predicates.perturb = a.perturb == "sos";
+  o.predicates = a.kernel.predicate_spec();
+  o.build = a.kernel.build_options();
   o.peers.timeout_s = a.timeout;
   o.peers.memory_bytes = static_cast<std::uint64_t>(a.memory_mb * 1e6);
   o.peers.tetgen = a.tetgen;
@@ -55,28 +57,30 @@ void run_oracle(const Args& a, int& rc) {
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--against", e.what());
   }
+  Progress progress("oracle", a.quiet);
+  o.progress = [&progress](const std::string& peer, std::size_t done, std::size_t total) {
+    progress.update("peers", done, total, "running " + peer);
+  };
   OracleSession s;
   try {
     s = run_oracle_session(pts, o);
   } catch (const std::invalid_argument& e) {
     // No 3D triangulation to compare (fewer than 4 points, coplanar...): bad input, as for tetra.
-    std::fprintf(stderr, "dtlab oracle: %s: %s\n", a.input.c_str(), e.what());
-    rc = kBadInput;
-    return;
+    throw InputError(a.input, 0, e.what());
   }
   rc = s.exit;
   if (a.json) {
     nlohmann::json j = to_json(s);
     j["input"] = a.input;
     j["points"] = pts.size();
-    j["predicates"] = a.predicates;
-    j["perturb"] = a.perturb;
+    j["predicates"] = a.kernel.predicates;
+    j["perturb"] = a.kernel.perturb;
     std::printf("%s\n", j.dump(2).c_str());
     return;
   }
   const BuildResult& built = s.built;
-  std::printf("%s: %zu points; dtlab %s, perturbation %s\n", a.input.c_str(), pts.size(), a.predicates.c_str(),
-              a.perturb.c_str());
+  std::printf("%s: %zu points; dtlab %s, perturbation %s\n", a.input.c_str(), pts.size(), a.kernel.predicates.c_str(),
+              a.kernel.perturb.c_str());
   std::printf("  %-16s %-15s %10s  %9s  %8s  %s\n", "peer", "verdict", "tets", "seconds", "peak", "defects / note");
   {
     const Verdict v = built.failure && s.ours.ok() ? Verdict::missing_points : verdict_of(s.ours);
@@ -102,17 +106,16 @@ void add_oracle_command(CLI::App& app, int& rc) {
   CLI::App* sub = app.add_subcommand(
       "oracle", "judge other Delaunay codes (CGAL, TetGen, qhull, scipy, gmsh, ...) with the exact checker");
   auto a = std::make_shared<Args>();
-  sub->add_option("INPUT", a->input, "point file (.node, .xyz) or mesh file (.off .obj .ply .stl)")->required();
+  sub->add_option("INPUT", a->input, kInputPointsHelp)->required();
   std::string peers;
   for (const auto& n : peer_names()) peers += (peers.empty() ? "" : ", ") + n;
   sub->add_option("--against", a->against, "peers to run, or all: " + peers)->delimiter(',')->capture_default_str();
-  sub->add_option("--predicates", a->predicates, "our backend: naive|epsilon|adaptive|exact");
-  sub->add_option("--perturb", a->perturb, "symbolic perturbation: sos|none")
-      ->check(CLI::IsMember({"sos", "none"}));
-  sub->add_option("--tetgen", a->tetgen, "the tetgen binary");
+  sub->add_option("--tetgen", a->tetgen, "the tetgen binary")->capture_default_str();
   sub->add_option("--timeout", a->timeout, "seconds before a peer counts as hung")->check(number_in(0.001, 1e6))->capture_default_str();
   sub->add_option("--memory", a->memory_mb, "memory limit per peer in MB (0: half the machine's)")->check(number_in(0, 1e9));
   sub->add_flag("--json", a->json, "print a JSON object keyed by peer on stdout");
+  sub->add_flag("--quiet", a->quiet, "no progress lines on stderr");
+  a->kernel.add_to(*sub);  // how dtlab's own DT is built, as in tetra
   sub->footer(
       "Verdicts: delaunay, triangulation, flat-tets, invalid, missing-points, extra-points, crashed, hung, refused, "
       "not-installed.\nExit: 0 ok, 1 dtlab wrong or differing, 2 bad input, 3 some peer gave no answer.");

@@ -104,7 +104,7 @@ int run_sample(const SampleArgs& a) {
 void add_sample_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<SampleArgs>();
   CLI::App* sub = app.add_subcommand("sample", "sample points on and inside a triangle mesh");
-  sub->add_option("mesh", args->mesh, "mesh file (.off .obj .ply .stl) or 'builtin' (bumpy torus)")
+  sub->add_option("MESH", args->mesh, "mesh file (.off .obj .ply .stl) or 'builtin' (bumpy torus)")
       ->capture_default_str();
   sub->add_option("--method", args->method, "surface | rays | sdf | winding")
       ->check(CLI::IsMember({"surface", "rays", "sdf", "winding"}))
@@ -115,7 +115,7 @@ void add_sample_command(CLI::App& app, int& rc) {
   sub->add_option("--blue-noise-ratio", args->ratio, "candidates per kept point for --blue-noise")
       ->check(number_in(1, 100))
       ->capture_default_str();
-  sub->add_option("--out", args->out, "output points (.xyz or .node)")->required();
+  sub->add_option("--out", args->out, "output points (.xyz or .node)")->type_name("FILE")->required();
   sub->add_flag("--no-check", args->no_check, "skip the winding-number check of the volume samples");
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
   sub->callback([args, &rc] { rc = run_sample(*args); });

@@ -11,6 +11,7 @@
 #include "cli/command.hpp"
 #include "cli/input_points.hpp"
 #include "cli/tetra_report.hpp"
+#include "kernel/input_error.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
 #include "oracle/check.hpp"
@@ -35,6 +36,8 @@ int run_tetra(const TetraArgs& a) {
   const BuildOptions options = a.kernel.build_options();
   PointFile in = read_input_points(a.input);
   BuildResult r = build_delaunay(std::move(in.points), a.kernel.predicate_spec(), options);
+  // No 3D triangulation (fewer than 4 points, all coplanar): bad input, exit 2.
+  if (r.failure && r.failure->kind == FailureKind::lower_dimensional) throw InputError(a.input, 0, r.failure->detail);
   if (!a.out.empty()) {
     write_tetgen(a.out, r.mesh);
     if (a.vtu) write_vtu(a.out + ".vtu", r.mesh, parse_vtu_format(a.vtu_format));
@@ -65,10 +68,6 @@ int run_tetra(const TetraArgs& a) {
                  "dtlab tetra: UNVERIFIED: the %s predicates can give a wrong tetrahedralization; "
                  "verify with --check (or `dtlab check PREFIX` on the --out files)\n",
                  a.kernel.predicates.c_str());
-  if (r.failure && r.failure->kind == FailureKind::lower_dimensional) {
-    std::fprintf(stderr, "dtlab tetra: %s: %s\n", a.input.c_str(), r.failure->detail.c_str());
-    return kBadInput;
-  }
   if (r.failure || (check && !check->ok())) return kDefect;
   return kOk;
 }
@@ -76,9 +75,9 @@ int run_tetra(const TetraArgs& a) {
 
 void add_tetra_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<TetraArgs>();
-  CLI::App* sub = app.add_subcommand("tetra", "Delaunay tetrahedralization of a point file (.node or .xyz)");
-  sub->add_option("INPUT", args->input, "points: .node, .xyz, or the vertices of a mesh (.off .obj .ply .stl)")->required();
-  sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)");
+  CLI::App* sub = app.add_subcommand("tetra", "Delaunay tetrahedralization of a point file (.node .xyz) or of a mesh file's vertices (.off .obj .ply .stl)");
+  sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
+  sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)")->type_name("PREFIX");
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu for ParaView");
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
       ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();

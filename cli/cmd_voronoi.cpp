@@ -7,11 +7,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/build_options.hpp"
+#include "cli/cli_error.hpp"
 #include "cli/command.hpp"
 #include "kernel/output_file.hpp"
 #include "cli/number_options.hpp"
 #include "cli/input_points.hpp"
 #include "kernel/build.hpp"
+#include "kernel/input_error.hpp"
 #include "kernel/point_io.hpp"
 #include "fracture/render_png.hpp"
 #include "voronoi/cell_check.hpp"
@@ -21,30 +24,28 @@ namespace dtlab::cli {
 
 namespace {
 struct VoronoiArgs {
-  std::string input, out, predicates = "adaptive";
+  std::string input, out;
+  KernelArgs kernel;
   std::vector<double> box;
   double margin = 0.1;
   unsigned threads = 0;
-  bool obj = true, vtu = false, json = false, check = false;
+  bool no_obj = false, vtu = false, json = false, check = false;
   std::string vtu_format = "binary", png;
   double png_shrink = 0.8;
 };
 
 int run_voronoi(const VoronoiArgs& a) {
+  const bool obj = !a.no_obj;
   PointFile in = read_input_points(a.input);
-  if (in.points.empty()) {
-    std::fprintf(stderr, "dtlab voronoi: %s: no points\n", a.input.c_str());
-    return kBadInput;
-  }
+  if (in.points.empty()) throw InputError(a.input, 0, "no points");
   VoronoiOptions o;
   o.margin = a.margin;
-  o.predicates.backend = a.predicates;
+  o.predicates = a.kernel.predicate_spec();
+  o.build = a.kernel.build_options();
   o.threads = a.threads;
   if (!a.box.empty()) {
-    if (a.box.size() != 6 || !(a.box[0] < a.box[3] && a.box[1] < a.box[4] && a.box[2] < a.box[5])) {
-      std::fprintf(stderr, "dtlab voronoi: --box needs xmin ymin zmin xmax ymax zmax with min < max\n");
-      return kBadInput;
-    }
+    if (a.box.size() != 6 || !(a.box[0] < a.box[3] && a.box[1] < a.box[4] && a.box[2] < a.box[5]))
+      throw UsageError("--box needs xmin ymin zmin xmax ymax zmax with min < max");
     o.box = vor::Box{{a.box[0], a.box[1], a.box[2]}, {a.box[3], a.box[4], a.box[5]}};
   }
   std::optional<VoronoiDiagram> built;
@@ -52,9 +53,9 @@ int run_voronoi(const VoronoiArgs& a) {
     built = compute_voronoi(in.points, o);
   } catch (const std::runtime_error&) {
     // compute_voronoi reports a failed Delaunay build as an error without its kind;
-    // the same build (deterministic, default options, as compute_voronoi runs it)
+    // the same build (deterministic, the same options, as compute_voronoi runs it)
     // names it, and a failed build is a defect (exit 1), as in `dtlab tetra`.
-    const BuildResult r = build_delaunay(in.points, o.predicates);
+    const BuildResult r = build_delaunay(in.points, o.predicates, o.build);
     if (!r.failure || r.failure->kind == FailureKind::lower_dimensional) throw;
     std::fprintf(stderr, "dtlab voronoi: %s: Delaunay build failed: %s while inserting point %lld: %s\n",
                  a.input.c_str(), failure_name(r.failure->kind), static_cast<long long>(r.failure->point),
@@ -80,7 +81,7 @@ int run_voronoi(const VoronoiArgs& a) {
     m["check"] = {{"defects", bad}, {"relative_volume_error", rel}};
   }
   if (!a.out.empty()) {
-    if (a.obj) write_cells_obj(a.out + ".obj", vd);
+    if (obj) write_cells_obj(a.out + ".obj", vd);
     if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
     write_text_file(a.out + ".json", m.dump(1) + "\n");
   }
@@ -100,7 +101,7 @@ int run_voronoi(const VoronoiArgs& a) {
       if (rel > 1e-12) std::printf("  cell volumes sum to the box volume within %.3g (relative), more than 1e-12\n", rel);
     }
     if (!a.out.empty())
-      std::printf("wrote %s.json%s%s\n", a.out.c_str(), a.obj ? ", .obj" : "", a.vtu ? ", .vtu" : "");
+      std::printf("wrote %s.json%s%s\n", a.out.c_str(), obj ? ", .obj" : "", a.vtu ? ", .vtu" : "");
     if (!a.png.empty()) std::printf("wrote %s\n", a.png.c_str());
   }
   return defects ? kDefect : kOk;
@@ -110,23 +111,25 @@ int run_voronoi(const VoronoiArgs& a) {
 void add_voronoi_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<VoronoiArgs>();
   CLI::App* sub = app.add_subcommand("voronoi", "Voronoi cells of a point file, clipped to a box");
-  sub->add_option("INPUT", args->input, "points: .node, .xyz, or the vertices of a mesh (.off .obj .ply .stl)")->required();
-  sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)");
+  sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
+  sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)")
+      ->type_name("PREFIX");
   sub->add_option("--box", args->box, "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
       ->expected(6)->check(number_in(-1e300, 1e300));
   sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->check(number_in(0, 1e6))->capture_default_str();
-  sub->add_option("--predicates", args->predicates, "Delaunay predicates: naive|epsilon|adaptive|exact")
-      ->capture_default_str();
   sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
       ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
-  sub->add_option("--png", args->png, "draw the cells (each shrunk about its centroid, own colour) to this PNG file");
+  sub->add_option("--png", args->png, "draw the cells (each shrunk about its centroid, own colour) to this PNG file")
+      ->type_name("FILE");
   sub->add_option("--png-shrink", args->png_shrink, "--png: scale of each cell about its centroid")
       ->check(number_in(0.05, 1))->capture_default_str();
-  sub->add_flag("!--no-obj", args->obj, "do not write PREFIX.obj");
+  sub->add_flag("--no-obj", args->no_obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
   sub->add_flag("--json", args->json, "print the manifest on stdout");
+  // How the Delaunay build runs, as in tetra (the cells need the infinite boundary).
+  args->kernel.add_to(*sub, kAllKernelOptions & ~kBoundaryOption);
   sub->callback([args, &rc] { rc = run_voronoi(*args); });
 }
 

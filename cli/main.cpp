@@ -1,12 +1,12 @@
 // dtlab: a verification-focused testbed for robust 3D Delaunay tetrahedralization.
 #include <cstdio>
-#include <exception>
 #include <string>
+#include <vector>
 
+#include "cli/cli_error.hpp"
 #include "cli/command.hpp"
 #include "cli/commands.hpp"
 #include "dtlab/build_info.hpp"
-#include "kernel/input_error.hpp"
 
 namespace {
 
@@ -27,17 +27,14 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", version_text, "print the version, git commit and library versions");
   int rc = kOk;
   register_commands(app, rc);
+  const std::vector<std::string> args(argv + 1, argv + argc);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kOk : kBadInput;
-  } catch (const dtlab::InputError& e) {
-    std::fprintf(stderr, "dtlab: %s\n", e.what());
-    return kBadInput;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "dtlab: error: %s\n", e.what());
-    return kBadInput;
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (...) {
+    // Every error, of usage or of an input file, in one style (cli/cli_error.hpp).
+    return report_error(current_error(command_path(app, args)), wants_json(args));
   }
   return rc;
 }

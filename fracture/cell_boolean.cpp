@@ -126,6 +126,9 @@ struct MeshClipper::Impl {
   std::unique_ptr<CGAL::Side_of_triangle_mesh<Mesh, K>> side;
   mutable std::mutex side_mutex;
   double budget = 0;
+  std::function<void(std::size_t, std::size_t)> progress;
+  mutable std::mutex progress_mutex;
+  mutable std::size_t done = 0, total = 0;  // of the running intersect_all, under progress_mutex
 };
 
 MeshClipper::MeshClipper(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
@@ -152,6 +155,9 @@ MeshClipper::MeshClipper(const TriangleMesh& mesh) : impl_(std::make_unique<Impl
 
 MeshClipper::~MeshClipper() = default;
 void MeshClipper::set_time_budget(double seconds) { impl_->budget = seconds; }
+void MeshClipper::set_progress(std::function<void(std::size_t, std::size_t)> progress) {
+  impl_->progress = std::move(progress);
+}
 const TriangleMesh& MeshClipper::mesh() const { return impl_->repaired; }
 double MeshClipper::volume() const { return impl_->volume; }
 
@@ -163,6 +169,11 @@ std::vector<PieceMesh> MeshClipper::intersect_all(const std::vector<VoronoiCell>
   for (std::uint32_t i = 0; i < cells.size(); ++i)
     if (!cells[i].vertices.empty()) ids.push_back(i);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  {
+    std::lock_guard<std::mutex> g(impl_->progress_mutex);
+    impl_->done = 0;
+    impl_->total = ids.size();
+  }
   impl_->split(impl_->sm, std::move(ids), cells, out, threads);
   return out;
 }
@@ -176,6 +187,10 @@ void MeshClipper::Impl::split(const Mesh& m, std::vector<std::uint32_t> ids, con
     for (auto i : ids) {
       try {
         out[i] = intersect_with(m, cells[i]);
+        if (progress) {
+          std::lock_guard<std::mutex> g(progress_mutex);
+          progress(++done, total);
+        }
       } catch (const BooleanTimeout& e) {
         throw std::runtime_error("cell " + std::to_string(i) + ": " + e.what());
       }

@@ -2,6 +2,8 @@
 // The boolean engine of the fracture: a closed triangle mesh intersected with one
 // convex cell at a time by CGAL's corefinement (Polygon Mesh Processing), exact
 // predicates and constructions (EPECK). CGAL stays inside cell_boolean.cpp (one translation unit).
+#include <cstddef>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -41,6 +43,9 @@ class MeshClipper {
 
   // Seconds one corefinement may take before it throws BooleanTimeout (0: no limit).
   void set_time_budget(double seconds);
+  // Called after each boolean of intersect_all (cells done, cells in all), one call at
+  // a time whatever the threads: the progress of a long fracture.
+  void set_progress(std::function<void(std::size_t, std::size_t)> progress);
 
   // The repaired input (merged vertices, outward orientation).
   const TriangleMesh& mesh() const;

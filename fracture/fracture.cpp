@@ -132,6 +132,7 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
   }
   MeshClipper clipper(o.repair ? repaired : mesh);
   clipper.set_time_budget(o.boolean_seconds);
+  clipper.set_progress(o.progress);
   r.input = clipper.mesh();
   r.mesh_volume = clipper.volume();
   Level top = fracture_once(clipper, o, o.seed, o.pieces, r);

@@ -3,6 +3,7 @@
 // to the mesh's box), each cell intersected with the mesh into one closed piece.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "fracture/cell_boolean.hpp"
@@ -22,6 +23,7 @@ struct FractureOptions {
   std::size_t recurse_pieces = 4;    // pieces each of those is split into
   bool repair = false;               // repair_mesh first (else a mesh that is not solid is refused)
   double boolean_seconds = 30;       // time budget of one corefinement (0: none); past it, a named failure
+  std::function<void(std::size_t, std::size_t)> progress;  // booleans done, in all (per level)
 };
 
 struct Piece {

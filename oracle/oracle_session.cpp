@@ -38,7 +38,7 @@ OracleSession run_oracle_session(std::span<const Point3> pts, const OracleSessio
   const std::vector<std::string> names = expand_peer_names(opt.against);
   const bool all = std::find(opt.against.begin(), opt.against.end(), "all") != opt.against.end();
   OracleSession s;
-  s.built = build_delaunay(pts, opt.predicates, BuildOptions{});
+  s.built = build_delaunay(pts, opt.predicates, opt.build);
   if (s.built.failure && s.built.failure->kind == FailureKind::lower_dimensional)
     throw std::invalid_argument(s.built.failure->detail);
   CheckOptions check_options;
@@ -46,7 +46,10 @@ OracleSession run_oracle_session(std::span<const Point3> pts, const OracleSessio
   s.ours = check_tetrahedralization(s.built.mesh, check_options);
   s.ours_ok = s.ours.ok() && !s.built.failure;
 
-  for (const auto& name : names) s.peers.push_back(run_peer(name, pts, opt.peers));
+  for (const auto& name : names) {
+    if (opt.progress) opt.progress(name, s.peers.size(), names.size());
+    s.peers.push_back(run_peer(name, pts, opt.peers));
+  }
   bool incomplete = false;
   for (std::size_t i = 0; i < s.peers.size(); ++i) {
     const PeerRun& p = s.peers[i];

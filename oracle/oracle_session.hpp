@@ -5,6 +5,7 @@
 // Delaunay. A peer that gave no answer, or a wrong one, is "not compared", never
 // "agree".
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -24,7 +25,10 @@ enum OracleExit : int { oracle_ok = 0, oracle_defect = 1, oracle_no_answer = 3 }
 struct OracleSessionOptions {
   std::vector<std::string> against = {"cgal", "tetgen"};  // peer names, or "all"
   PredicateSpec predicates;                               // our backend
+  BuildOptions build;                                     // our boundary, insertion order, seed
   PeerOptions peers;
+  // Called before each peer runs (name, peers done, peers in all): progress of long runs.
+  std::function<void(const std::string&, std::size_t, std::size_t)> progress;
 };
 
 struct OracleSession {

@@ -219,7 +219,7 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   const double band = o.tolerance * vd.box.diagonal();
 
   auto t0 = Clock::now();
-  BuildResult r = build_delaunay(sites, o.predicates);
+  BuildResult r = build_delaunay(sites, o.predicates, o.build);
   vd.tets = r.mesh.tets.size();
   if (r.failure && r.failure->kind != FailureKind::lower_dimensional)
     throw std::runtime_error("Delaunay build failed: " + r.failure->detail);

@@ -28,6 +28,7 @@ struct VoronoiOptions {
   double tolerance = 1e-12;         // relative to the box diagonal
   double shrink = 0;                // move each bisector this far towards its site
   PredicateSpec predicates{"adaptive", 1e-12, false, true};
+  BuildOptions build;               // insertion order and seed of the Delaunay build
   unsigned threads = 0;             // cells in parallel; 0: all hardware threads
 };
 

@@ -15,7 +15,7 @@ expect 2 "unknown subcommand" -- "$dtlab" frobnicate
 
 printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 one\n4 1 1 1\n' > "$tmp/bad.node"
 expect 2 "malformed .node" -- "$dtlab" tetra "$tmp/bad.node"
-if ! grep -qx "dtlab: $tmp/bad.node:5: not a number: 'one'" "$tmp/err"; then
+if ! grep -qx "dtlab tetra: $tmp/bad.node:5: not a number: 'one'" "$tmp/err"; then
   echo "FAIL: malformed .node message: $(cat "$tmp/err")"; fails=$((fails + 1))
 fi
 expect 2 "missing file" -- "$dtlab" tetra "$tmp/none.xyz"

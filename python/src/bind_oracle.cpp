@@ -33,6 +33,7 @@ py::dict oracle(py::handle points, const std::vector<std::string>& against, cons
   OracleSessionOptions o;
   o.against = against;
   o.predicates = k.predicates;
+  o.build = k.build;
   o.peers.timeout_s = timeout;
   o.peers.memory_bytes = static_cast<std::uint64_t>(memory_mb * 1e6);
   o.peers.tetgen = tetgen;
