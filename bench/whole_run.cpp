@@ -38,6 +38,21 @@ ChildReport run_in_child(const std::string& tool, std::vector<Point3>& points,
     rep.ok = !r.failure;
     rep.tets = r.mesh.tets.size();
     if (r.failure) std::snprintf(rep.note, sizeof rep.note, "%s", failure_name(r.failure->kind));
+  } else if (tool == "dtlab-cgal-order") {
+    // Our inserter fed in CGAL's spatial_sort order (timed with the sort and the copy
+    // into that order, as BRIO is timed in "dtlab"); the peak holds both copies.
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<std::uint32_t> order = cgal_spatial_sort_order(points);
+    std::vector<Point3> sorted(points.size());
+    for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = points[order[k]];
+    BuildOptions timed = options;
+    timed.count_stages = false;
+    timed.order = InsertionOrder::input;
+    BuildResult r = build_delaunay(std::move(sorted), spec, timed);
+    rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    rep.ok = !r.failure;
+    rep.tets = r.mesh.tets.size();
+    if (r.failure) std::snprintf(rep.note, sizeof rep.note, "%s", failure_name(r.failure->kind));
   } else if (tool == "cgal") {
     OracleRun r = cgal_delaunay(points);
     rep.ok = r.mesh.has_value();

@@ -94,7 +94,10 @@ void add_bench_command(CLI::App& app, int& rc) {
   sub->add_option("--sizes", args->sizes, "point counts")->delimiter(',')->transform(count_in(1, 1e9))->capture_default_str();
   sub->add_option("--dist", args->dists, "point distributions: uniform, clustered, lattice, ... (dtlab fuzz --list), mesh")
       ->delimiter(',')->capture_default_str();
-  sub->add_option("--tools", args->tools, "dtlab, cgal, tetgen")->delimiter(',')->check(CLI::IsMember({"dtlab", "cgal", "tetgen"}))->capture_default_str();
+  sub->add_option("--tools", args->tools,
+                  "dtlab, cgal, tetgen; dtlab-cgal-order: dtlab inserting in CGAL's spatial_sort order")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"dtlab", "cgal", "tetgen", "dtlab-cgal-order"}))->capture_default_str();
   sub->add_option("--runs", args->runs, "runs per tool and size (median reported)")->transform(count_in(1, 1000))->capture_default_str();
   sub->add_option("--points-seed", args->seed, "seed of the generated points")->capture_default_str();
   sub->add_option("--out", args->out, "also write the rows as JSON to this file")->type_name("FILE");

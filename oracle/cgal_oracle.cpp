@@ -2,7 +2,9 @@
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/spatial_sort.h>
 
 #include <chrono>
 #include <utility>
@@ -44,6 +46,20 @@ OracleRun cgal_delaunay(std::span<const Point3> points) {
   }
   run.mesh = std::move(t);
   return run;
+}
+
+std::vector<std::uint32_t> cgal_spatial_sort_order(std::span<const Point3> points) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<K::Point_3> pts;
+  pts.reserve(points.size());
+  for (const Point3& p : points) pts.emplace_back(p.x, p.y, p.z);
+  std::vector<std::size_t> index(points.size());  // the property map's key type
+  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
+  using Map = CGAL::Pointer_property_map<K::Point_3>::type;
+  CGAL::Spatial_sort_traits_adapter_3<K, Map> traits(CGAL::make_property_map(pts));
+  CGAL::spatial_sort(index.begin(), index.end(), traits);
+  std::vector<std::uint32_t> order(index.begin(), index.end());
+  return order;
 }
 
 }  // namespace dtlab
