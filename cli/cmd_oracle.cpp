@@ -114,7 +114,7 @@ void add_oracle_command(CLI::App& app, int& rc) {
   sub->add_option("--memory", a->memory_mb, "memory limit per peer in MB (0: half the machine's)")->check(number_in(0, 1e9));
   sub->add_flag("--json", a->json, "print a JSON object keyed by peer on stdout");
   sub->footer(
-      "Verdicts: delaunay, triangulation, flat-tets, invalid, missing-points, extra-points, crashed, hung, refused, "
+      "Verdicts: delaunay, triangulation, flat-tets, invalid, unproven, missing-points, extra-points, crashed, hung, refused, "
       "not-installed.\nExit: 0 ok, 1 dtlab wrong or differing, 2 bad input, 3 some peer gave no answer.");
   sub->callback([a, &rc] { run_oracle(*a, rc); });
 }

@@ -251,6 +251,19 @@ TEST_CASE("served peers give the verdicts of fresh processes", "[oracle][peers]"
     }
 }
 
+TEST_CASE("the checker's unproven is its own verdict, below invalid", "[oracle][peers]") {
+  CheckReport r;
+  const auto set = [&](DefectKind k, std::uint64_t n) { r.counts[static_cast<int>(k)] = n; };
+  CHECK(verdict_of(r) == Verdict::delaunay);
+  set(DefectKind::unproven, 1);
+  set(DefectKind::missing_point, 2);
+  set(DefectKind::flat, 3);
+  CHECK(verdict_of(r) == Verdict::unproven);
+  CHECK(std::string(verdict_name(Verdict::unproven)) == "unproven");
+  set(DefectKind::overlap, 1);
+  CHECK(verdict_of(r) == Verdict::invalid);
+}
+
 TEST_CASE("every installed peer names its version", "[oracle][peers]") {
   for (const std::string& name : peer_names()) {
     const std::string v = peer_version(name);
