@@ -107,24 +107,33 @@ void add_experiment_command(CLI::App& app, int& rc) {
   CLI::App* l = sub->add_subcommand(
       "leaderboard", "judge the field's Delaunay codes (CGAL, TetGen, qhull, scipy, gmsh, dtlab) with the exact checker");
   l->add_option("--out", board->out, "report folder")->capture_default_str();
-  l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 2*10^4, short shrinks");
+  l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 10^4, short shrinks");
   l->add_option("--peers", board->peers, "peers to judge (default all)")->delimiter(',');
   l->add_option("--families", board->families, "fuzz families (default all)")->delimiter(',');
-  l->add_option("--cases", board->cases, "seeds per (source, size); default 2 quick, 16 otherwise");
+  l->add_option("--cases", board->cases, "seeds per (source, size); default 2 quick, 4 otherwise");
   l->add_option("--seed", board->seed, "experiment seed")->capture_default_str();
   l->add_option("--jobs", board->jobs, "peer runs at a time")->check(CLI::PositiveNumber)->capture_default_str();
-  l->add_option("--timeout", board->timeout_s, "seconds per peer run (default 20 quick, 120 otherwise)");
-  l->add_option("--speed-n", board->speed_n, "one size for the speed table (default 10^5 and 10^6; 2*10^4 with --quick)");
+  l->add_option("--timeout", board->timeout_s, "seconds per peer run (default 10 quick, 120 otherwise)");
+  l->add_option("--shrink-runs", board->shrink_runs, "peer runs per shrunk (peer, source) (default 48 quick, 300 otherwise)");
+  l->add_option("--shrink-seconds", board->shrink_seconds,
+                "wall-clock budget of the whole shrink stage (default 30 quick, 600 otherwise)");
+  auto board_progress = std::make_shared<bool>(false);
+  l->add_flag("--progress", *board_progress, "print each stage on stderr (default: when stderr is a terminal)");
+  l->add_option("--speed-n", board->speed_n, "one size for the speed table (default 10^5 and 10^6; 10^4 with --quick)");
   l->add_flag("--no-meshes", *board_no_meshes, "leave out the CGAL demo mesh samples");
   l->add_option("--cgal-data", board->cgal_data, "CGAL demo data.tar.gz (default: libcgal-demo's)");
   l->add_flag("--json", *board_json, "print a JSON summary (the report's headline facts) on stdout");
-  l->callback([board, board_json, board_no_meshes, l, &rc] {
+  l->callback([board, board_json, board_no_meshes, board_progress, l, &rc] {
     board->meshes = !*board_no_meshes;
-    board->progress = isatty(2);
+    board->progress = *board_progress || isatty(2);
     std::vector<std::string> args = {"--out", board->out.string(), "--seed", std::to_string(board->seed)};
     if (board->quick) args.push_back("--quick");
     if (board->cases) args.insert(args.end(), {"--cases", std::to_string(board->cases)});
     if (board->speed_n) args.insert(args.end(), {"--speed-n", std::to_string(board->speed_n)});
+    if (board->timeout_s > 0) args.insert(args.end(), {"--timeout", number_options_detail::fmt(board->timeout_s)});
+    if (board->shrink_runs) args.insert(args.end(), {"--shrink-runs", std::to_string(board->shrink_runs)});
+    if (board->shrink_seconds > 0) args.insert(args.end(), {"--shrink-seconds", number_options_detail::fmt(board->shrink_seconds)});
+    if (board->jobs != 2) args.insert(args.end(), {"--jobs", std::to_string(board->jobs)});
     if (*board_no_meshes) args.push_back("--no-meshes");
     const auto join = [](const std::vector<std::string>& v) {
       std::string s;

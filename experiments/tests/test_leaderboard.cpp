@@ -57,6 +57,8 @@ TEST_CASE("leaderboard: report, csv, environment and shrunk failures", "[experim
     const PeerRun again = run_peer(side["peer"], points);
     CHECK(std::string(verdict_name(again.verdict)) == side["verdict"].get<std::string>());
     CHECK(points.size() <= side["points_original"].get<std::size_t>());
+    CHECK(side["shrunk_run"]["verdict"] == side["verdict"]);  // the fresh re-run agrees
+    if (!side["minimal"].get<bool>()) CHECK(!side["shrink_stopped_by"].get<std::string>().empty());
     ++checked;
   }
   const std::string report = [&] {
@@ -66,6 +68,9 @@ TEST_CASE("leaderboard: report, csv, environment and shrunk failures", "[experim
   }();
   CHECK(report.find("quick run") != std::string::npos);
   CHECK(report.find("Wilson") != std::string::npos);
+  CHECK(report.find("Where the time went") != std::string::npos);
+  // Every failing (peer, source) has an input saved, shrunk or with the reason why not.
+  CHECK(r.facts["saved_cells"] == r.facts["failing_cells"]);
   // naive without perturbation fails somewhere on these families at n = 48 in 3 seeds.
   if (r.facts["failing_cells"].get<std::size_t>() > 0) CHECK(checked > 0);
 }
