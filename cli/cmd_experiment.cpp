@@ -110,13 +110,13 @@ void add_experiment_command(CLI::App& app, int& rc) {
   l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 10^4, short shrinks");
   l->add_option("--peers", board->peers, "peers to judge (default all)")->delimiter(',');
   l->add_option("--families", board->families, "fuzz families (default all)")->delimiter(',');
-  l->add_option("--cases", board->cases, "seeds per (source, size); default 2 quick, 4 otherwise");
+  l->add_option("--cases", board->cases, "seeds per (source, size); default 2 quick, 3 otherwise");
   l->add_option("--seed", board->seed, "experiment seed")->capture_default_str();
   l->add_option("--jobs", board->jobs, "peer runs at a time")->check(CLI::PositiveNumber)->capture_default_str();
-  l->add_option("--timeout", board->timeout_s, "seconds per peer run (default 10 quick, 120 otherwise)");
+  l->add_option("--timeout", board->timeout_s, "seconds per peer run (default 10 quick, 30 otherwise)");
   l->add_option("--shrink-runs", board->shrink_runs, "peer runs per shrunk (peer, source) (default 48 quick, 300 otherwise)");
   l->add_option("--shrink-seconds", board->shrink_seconds,
-                "wall-clock budget of the whole shrink stage (default 30 quick, 600 otherwise)");
+                "wall-clock budget of the whole shrink stage (default 30 quick, 300 otherwise)");
   auto board_progress = std::make_shared<bool>(false);
   l->add_flag("--progress", *board_progress, "print each stage on stderr (default: when stderr is a terminal)");
   l->add_option("--speed-n", board->speed_n, "one size for the speed table (default 10^5 and 10^6; 10^4 with --quick)");

@@ -116,16 +116,16 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), what.c_str());
   };
   const std::vector<std::string> peers = expand_peer_names(options.peers);
-  const std::size_t cases = options.cases ? options.cases : options.quick ? 2 : 4;
+  const std::size_t cases = options.cases ? options.cases : options.quick ? 2 : 3;
   const std::vector<std::size_t> family_sizes =
       options.quick ? std::vector<std::size_t>{48} : std::vector<std::size_t>{48, 1000};
   const std::vector<std::size_t> mesh_sizes =
-      options.quick ? std::vector<std::size_t>{3000} : std::vector<std::size_t>{3000, 20000};
+      options.quick ? std::vector<std::size_t>{3000} : std::vector<std::size_t>{3000, 10000};
   std::vector<std::size_t> speed_sizes =
       options.quick ? std::vector<std::size_t>{10000} : std::vector<std::size_t>{100000, 1000000};
   if (options.speed_n) speed_sizes = {options.speed_n};
   PeerOptions po;
-  po.timeout_s = options.timeout_s > 0 ? options.timeout_s : options.quick ? 10 : 120;
+  po.timeout_s = options.timeout_s > 0 ? options.timeout_s : options.quick ? 10 : 30;
 
   // Point sources: every fuzz family, then surface and volume samples of the meshes.
   step("meshes");
@@ -215,7 +215,7 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
   std::vector<PeerCase*> to_shrink;
   for (auto& [key, c] : first_failure) to_shrink.push_back(c);
   const std::size_t shrink_runs = options.shrink_runs ? options.shrink_runs : options.quick ? 48 : 300;
-  const double shrink_stage_s = options.shrink_seconds > 0 ? options.shrink_seconds : options.quick ? 30 : 600;
+  const double shrink_stage_s = options.shrink_seconds > 0 ? options.shrink_seconds : options.quick ? 30 : 300;
   fs::create_directories(dir / "corpus");
   std::atomic<std::size_t> pairs_left{to_shrink.size()};
   // One set of served helpers per worker thread, kept across its pairs (which come in
