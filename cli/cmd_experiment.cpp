@@ -110,18 +110,24 @@ void add_experiment_command(CLI::App& app, int& rc) {
       "leaderboard", "judge the field's Delaunay codes (CGAL, TetGen, qhull, scipy, gmsh, dtlab) with the exact checker");
   auto board_quiet = std::make_shared<bool>(false);
   l->add_option("--out", board->out, "report folder")->type_name("DIR")->capture_default_str();
-  l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 2*10^4, short shrinks");
+  l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 10^4, short shrinks");
   l->add_option("--peers", board->peers, "peers to judge, or all")->delimiter(',');
   l->add_option("--family,--families", board->families,
                 "fuzz families, as fuzz --family (none given: all; --families is the old spelling)")
       ->delimiter(',');
-  l->add_option("--cases", board->cases, "seeds per (source, size) (0: 2 with --quick, 16 otherwise)")
+  l->add_option("--cases", board->cases, "seeds per (source, size) (0: 2 with --quick, 3 otherwise)")
       ->transform(count_in(0, 1e6));
   l->add_option("--seed", board->seed, "experiment seed")->capture_default_str();
   l->add_option("--jobs", board->jobs, "peer runs at a time")->transform(count_in(1, 1024))->capture_default_str();
-  l->add_option("--timeout", board->timeout_s, "seconds per peer run (0: 20 with --quick, 120 otherwise)")
+  l->add_option("--timeout", board->timeout_s, "seconds per peer run (0: 10 with --quick, 30 otherwise)")
       ->check(number_in(0, 1e6));
-  l->add_option("--speed-n", board->speed_n, "one size for the speed table (0: 10^5 and 10^6; 2*10^4 with --quick)")
+  l->add_option("--shrink-runs", board->shrink_runs,
+                "peer runs per shrunk (peer, source) (0: 48 with --quick, 300 otherwise)")
+      ->transform(count_in(0, 1e9));
+  l->add_option("--shrink-seconds", board->shrink_seconds,
+                "wall-clock budget of the whole shrink stage (0: 30 with --quick, 300 otherwise)")
+      ->check(number_in(0, 1e6));
+  l->add_option("--speed-n", board->speed_n, "one size for the speed table (0: 10^5 and 10^6; 10^4 with --quick)")
       ->transform(count_in(0, 1e9));
   l->add_flag("--no-meshes", *board_no_meshes, "leave out the CGAL demo mesh samples");
   l->add_option("--cgal-data", board->cgal_data, "CGAL demo data.tar.gz (default: libcgal-demo's)");
@@ -134,6 +140,10 @@ void add_experiment_command(CLI::App& app, int& rc) {
     if (board->quick) args.push_back("--quick");
     if (board->cases) args.insert(args.end(), {"--cases", std::to_string(board->cases)});
     if (board->speed_n) args.insert(args.end(), {"--speed-n", std::to_string(board->speed_n)});
+    if (board->timeout_s > 0) args.insert(args.end(), {"--timeout", number_options_detail::fmt(board->timeout_s)});
+    if (board->shrink_runs) args.insert(args.end(), {"--shrink-runs", std::to_string(board->shrink_runs)});
+    if (board->shrink_seconds > 0) args.insert(args.end(), {"--shrink-seconds", number_options_detail::fmt(board->shrink_seconds)});
+    if (board->jobs != 2) args.insert(args.end(), {"--jobs", std::to_string(board->jobs)});
     if (*board_no_meshes) args.push_back("--no-meshes");
     const auto join = [](const std::vector<std::string>& v) {
       std::string s;

@@ -117,7 +117,7 @@ void add_oracle_command(CLI::App& app, int& rc) {
   sub->add_flag("--quiet", a->quiet, "no progress lines on stderr");
   a->kernel.add_to(*sub);  // how dtlab's own DT is built, as in tetra
   sub->footer(
-      "Verdicts: delaunay, triangulation, flat-tets, invalid, missing-points, extra-points, crashed, hung, refused, "
+      "Verdicts: delaunay, triangulation, flat-tets, invalid, unproven, missing-points, extra-points, crashed, hung, refused, "
       "not-installed.\nExit: 0 ok, 1 dtlab wrong or differing, 2 bad input, 3 some peer gave no answer.");
   sub->callback([a, &rc] { run_oracle(*a, rc); });
 }

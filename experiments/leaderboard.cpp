@@ -1,12 +1,15 @@
 #include "experiments/leaderboard.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <sstream>
+#include <thread>
 
 #include "kernel/output_file.hpp"
 #include "experiments/peer_campaign.hpp"
@@ -14,8 +17,10 @@
 #include "experiments/thesis_parts.hpp"
 #include "experiments/wilson_interval.hpp"
 #include "fuzz/families.hpp"
+#include "fuzz/work_queue.hpp"
 #include "oracle/child_process.hpp"
 #include "oracle/peer_json.hpp"
+#include "oracle/served_child.hpp"
 #include "oracle/temp_dir.hpp"
 #include "sampling/mesh_io.hpp"
 #include "sampling/mesh_sampler.hpp"
@@ -111,16 +116,16 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), what.c_str());
   };
   const std::vector<std::string> peers = expand_peer_names(options.peers);
-  const std::size_t cases = options.cases ? options.cases : options.quick ? 2 : 16;
+  const std::size_t cases = options.cases ? options.cases : options.quick ? 2 : 3;
   const std::vector<std::size_t> family_sizes =
       options.quick ? std::vector<std::size_t>{48} : std::vector<std::size_t>{48, 1000};
   const std::vector<std::size_t> mesh_sizes =
-      options.quick ? std::vector<std::size_t>{3000} : std::vector<std::size_t>{3000, 50000};
+      options.quick ? std::vector<std::size_t>{3000} : std::vector<std::size_t>{3000, 10000};
   std::vector<std::size_t> speed_sizes =
-      options.quick ? std::vector<std::size_t>{20000} : std::vector<std::size_t>{100000, 1000000};
+      options.quick ? std::vector<std::size_t>{10000} : std::vector<std::size_t>{100000, 1000000};
   if (options.speed_n) speed_sizes = {options.speed_n};
   PeerOptions po;
-  po.timeout_s = options.timeout_s > 0 ? options.timeout_s : options.quick ? 20 : 120;
+  po.timeout_s = options.timeout_s > 0 ? options.timeout_s : options.quick ? 10 : 30;
 
   // Point sources: every fuzz family, then surface and volume samples of the meshes.
   step("meshes");
@@ -148,60 +153,104 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
 
   // Robustness: peers x sources x sizes x seeds.
   std::vector<PeerCase> all;
+  json stage_seconds = json::object();  // where the time went: runs per peer, shrinking, speed
+  const auto seconds_since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  // A peer that is not installed is run once and reported as such.
+  std::vector<std::string> runnable;
   for (const std::string& peer : peers) {
-    step("peer " + peer);
-    const auto run_sources = [&](const std::vector<PointSource>& sources, std::size_t n) {
-      PeerCampaignOptions o;
-      o.peer = peer;
-      o.sources = sources;
-      o.cases = cases;
-      o.min_points = o.max_points = n;
-      o.seed = options.seed;
-      o.out_dir = "";  // shrinking below: one input per (peer, source)
-      o.peer_options = po;
-      o.jobs = options.jobs;
-      auto got = run_peer_campaign(o);
-      for (auto& c : got) all.push_back(std::move(c));
-    };
-    // A peer that is not installed is run once and reported as such.
     const PeerRun probe = run_peer(peer, families.front().generate(8, 1), po);
-    if (probe.verdict == Verdict::not_installed) {
-      PeerCase c;
-      c.peer = peer;
-      c.source = "(any)";
-      c.run = probe;
-      all.push_back(c);
+    if (probe.verdict != Verdict::not_installed) {
+      runnable.push_back(peer);
       continue;
     }
-    for (std::size_t n : family_sizes) run_sources(families, n);
-    for (std::size_t n : mesh_sizes) run_sources(mesh_sources, n);
+    PeerCase c;
+    c.peer = peer;
+    c.source = "(any)";
+    c.run = probe;
+    all.push_back(c);
   }
+  // Every peer's cases of one size in one work queue, so that a slow or hung run of
+  // one peer overlaps with the others'.
+  const auto runs_t0 = std::chrono::steady_clock::now();
+  const auto run_sources = [&](const std::vector<PointSource>& sources, std::size_t n) {
+    if (runnable.empty() || sources.empty()) return;
+    step("runs at n = " + std::to_string(n) + " (" + std::to_string(sources.size()) + " sources)");
+    PeerCampaignOptions o;
+    o.peers = runnable;
+    o.sources = sources;
+    o.cases = cases;
+    o.min_points = o.max_points = n;
+    o.seed = options.seed;
+    o.out_dir = "";  // shrinking below: one input per (peer, source)
+    o.peer_options = po;
+    o.jobs = options.jobs;
+    auto got = run_peer_campaign(o);
+    for (auto& c : got) all.push_back(std::move(c));
+  };
+  for (std::size_t n : family_sizes) run_sources(families, n);
+  for (std::size_t n : mesh_sizes) run_sources(mesh_sources, n);
+  stage_seconds["runs"] = seconds_since(runs_t0);
+  // Rows in the order of the peers; the process seconds each peer's runs took.
+  std::stable_sort(all.begin(), all.end(), [&](const PeerCase& a, const PeerCase& b) {
+    return std::find(peers.begin(), peers.end(), a.peer) < std::find(peers.begin(), peers.end(), b.peer);
+  });
+  json& per_peer_seconds = stage_seconds["runs_process_seconds"] = json::object();
+  for (const PeerCase& c : all)
+    per_peer_seconds[c.peer] = per_peer_seconds.value(c.peer, 0.0) + c.run.wall_seconds;
 
-  // The smallest failing input per (peer, source): shrink the first failure of the
-  // smallest size (hung cases are not shrunk: each try would cost the time limit).
+  // The smallest failing input per (peer, source): the first failure of the smallest
+  // size, shrunk (a hung one saved unshrunk). The pairs share the stage's time budget:
+  // each gets the time left over the pairs left, times the jobs, when it starts.
   step("shrinking failures");
+  const auto shrink_t0 = std::chrono::steady_clock::now();
   std::map<std::pair<std::string, std::string>, PeerCase*> first_failure;
   for (PeerCase& c : all)
-    if (c.failed() && c.run.verdict != Verdict::hung) {
+    if (c.failed()) {
       auto& slot = first_failure[{c.peer, c.source}];
-      if (!slot || c.n < slot->n) slot = &c;
+      const auto rank = [](const PeerCase* p) { return std::make_pair(p->run.verdict == Verdict::hung, p->n); };
+      if (!slot || rank(&c) < rank(slot)) slot = &c;
     }
-  const std::size_t budget = options.quick ? 16 : 300;
-  for (auto& [key, c] : first_failure) {
+  std::vector<PeerCase*> to_shrink;
+  for (auto& [key, c] : first_failure) to_shrink.push_back(c);
+  const std::size_t shrink_runs = options.shrink_runs ? options.shrink_runs : options.quick ? 48 : 300;
+  const double shrink_stage_s = options.shrink_seconds > 0 ? options.shrink_seconds : options.quick ? 30 : 300;
+  fs::create_directories(dir / "corpus");
+  std::atomic<std::size_t> pairs_left{to_shrink.size()};
+  // One set of served helpers per worker thread, kept across its pairs (which come in
+  // peer order), so a helper starts about once per peer and worker.
+  std::mutex servers_lock;
+  std::map<std::thread::id, std::unique_ptr<ServedChildren>> servers;
+  const auto my_servers = [&] {
+    std::lock_guard<std::mutex> g(servers_lock);
+    auto& s = servers[std::this_thread::get_id()];
+    if (!s) s = std::make_unique<ServedChildren>();
+    return s.get();
+  };
+  fuzz::run_work_queue(to_shrink.size(), options.jobs, [&](std::size_t i) {
+    PeerCase& c = *to_shrink[i];
     const PointSource* src = nullptr;
     for (const auto& s : families)
-      if (s.name == c->source) src = &s;
+      if (s.name == c.source) src = &s;
     for (const auto& s : mesh_sources)
-      if (s.name == c->source) src = &s;
-    if (!src) continue;
-    const std::vector<Point3> points = src->generate(c->n, c->seed);
-    const std::string cmd = "dtlab experiment leaderboard --seed " + std::to_string(options.seed) + " (" +
-                            c->source + ", n " + std::to_string(c->n) + ", case " + std::to_string(c->index) + ")";
-    shrink_and_save(*c, points, po, budget, dir.string(), cmd);
-  }
+      if (s.name == c.source) src = &s;
+    if (!src) return;
+    const double left = std::max(0.0, shrink_stage_s - seconds_since(shrink_t0));
+    const double share =
+        std::min(left, left * std::max(1u, options.jobs) / static_cast<double>(std::max<std::size_t>(pairs_left--, 1)));
+    const std::vector<Point3> points = src->generate(c.n, c.seed);
+    const std::string cmd = "dtlab experiment leaderboard --seed " + std::to_string(options.seed) + " (" + c.source +
+                            ", n " + std::to_string(c.n) + ", case " + std::to_string(c.index) + ")";
+    // With no time left a pair still gets its input saved (its time budget spent at once).
+    shrink_and_save(c, points, po, {shrink_runs, std::max(share, 1e-9)}, dir.string(), cmd, my_servers());
+  });
+  servers.clear();
+  stage_seconds["shrinking"] = seconds_since(shrink_t0);
 
   // Speed: ratio to CGAL in the same run, uniform and mesh-sampled.
   step("speed");
+  const auto speed_t0 = std::chrono::steady_clock::now();
   struct SpeedRow {
     std::string source;
     std::size_t n;
@@ -223,17 +272,20 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
       }
     }
 
+  stage_seconds["speed"] = seconds_since(speed_t0);
+
   // leaderboard.csv
   {
     std::ostringstream csv;
     csv << "peer,source,n,case,seed,lower_dimensional,verdict,defects,tets,seconds,wall_seconds,peak_rss_bytes,"
-           "message,shrunk_points,corpus_file\n";
+           "message,shrunk_points,shrink_stopped_by,shrunk_verdict_fresh,corpus_file\n";
     for (const PeerCase& c : all)
       csv << c.peer << "," << c.source << "," << c.n << "," << c.index << "," << c.seed << ","
           << (c.lower_dimensional ? 1 : 0) << "," << verdict_name(c.run.verdict) << ","
           << csv_escape(counts_field(c.run)) << "," << (c.run.report ? c.run.report->stats.tets : 0) << ","
           << c.run.seconds << "," << c.run.wall_seconds << "," << c.run.peak_rss_bytes << ","
-          << csv_escape(c.run.message) << "," << c.shrunk_points << "," << c.corpus_file << "\n";
+          << csv_escape(c.run.message) << "," << c.shrunk_points << "," << c.shrink_stop << ","
+          << (c.corpus_file.empty() ? "" : verdict_name(c.shrunk_verdict)) << "," << c.corpus_file << "\n";
     write_text_file((dir / "leaderboard.csv").string(), csv.str());
     std::ostringstream sp;
     sp << "peer,source,n,verdict,tets,seconds,wall_seconds,peak_rss_bytes\n";
@@ -314,23 +366,43 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
        "Each cell: failing/cases and the Wilson 95% interval. The HTML report colours the cells.\n\n";
   o << "HEATMAP-TABLE\n\n";
   o << "## Smallest failing input per (peer, source)\n\n"
-       "The first failing case of each (peer, source) at its smallest size, shrunk by delta debugging to a subset "
-       "with the same verdict (budget " << budget << " peer runs; `minimal`: 1-minimal). Reproduce with the command "
-       "in the sidecar .json, e.g. `dtlab oracle corpus/FILE.node --against PEER`.\n\n";
-  o << table_row({"peer", "source", "verdict", "points", "shrunk to", "minimal", "file"}) << table_rule(7, 3);
-  std::size_t failing_cells = 0, shrunk = 0;
+       "The first failing case of each (peer, source) at its smallest size (a hung case only when the pair has no "
+       "other failure), shrunk by delta debugging to a subset with the same verdict. Budget: at most "
+    << shrink_runs << " peer runs per pair, and " << fmt("%.0f", shrink_stage_s)
+    << " s of wall clock for the whole stage, shared among the pairs (" << options.jobs
+    << " at a time). Tries of gmsh, gmsh-hxt and scipy run in one served helper per pair (their start costs "
+       "more than a small run); `fresh` is the saved input judged again in a fresh process, as every counted "
+       "verdict is. `minimal`: 1-minimal; else what stopped the shrink (`runs` or `time` budget spent; `hung`: "
+       "saved unshrunk, as each try would cost the time limit). Reproduce with the command in the sidecar "
+       ".json, e.g. `dtlab oracle corpus/FILE.node --against PEER`.\n\n";
+  o << table_row({"peer", "source", "verdict", "points", "shrunk to", "minimal", "fresh", "file"})
+    << table_rule(8, 3);
+  std::size_t failing_cells = 0, shrunk = 0, saved = 0;
+  std::map<std::string, std::size_t> stops;
   for (const auto& [key, cell] : cells) {
     if (!cell.failing) continue;
     ++failing_cells;
     const PeerCase* c = cell.smallest;
     if (!c) {
-      o << table_row({"`" + key.first + "`", key.second, "hung", "-", "-", "-", "not shrunk (hung)"});
+      o << table_row({"`" + key.first + "`", key.second, "-", "-", "-", "-", "-", "none saved"});
       continue;
     }
-    ++shrunk;
+    ++saved;
+    if (c->shrunk_minimal) ++shrunk;
+    else ++stops[c->shrink_stop];
+    const std::string minimal = c->shrunk_minimal ? "yes"
+                                : c->shrink_stop == "hung"
+                                    ? "no: hung"
+                                    : "no: " + c->shrink_stop + " (" + std::to_string(c->shrink_runs) + " runs, " +
+                                          fmt("%.1f", c->shrink_seconds) + " s)";
     o << table_row({"`" + key.first + "`", key.second, verdict_name(c->run.verdict), std::to_string(c->n),
-                    std::to_string(c->shrunk_points), c->shrunk_minimal ? "yes" : "no", "`" + c->corpus_file + "`"});
+                    std::to_string(c->shrunk_points), minimal, verdict_name(c->shrunk_verdict),
+                    "`" + c->corpus_file + "`"});
   }
+  o << "\n" << failing_cells << " failing (peer, source) pairs, " << saved << " with an input saved, " << shrunk
+    << " shrunk to 1-minimal";
+  for (const auto& [why, k] : stops) o << ", " << k << " stopped by " << (why == "hung" ? "a hang" : why + " budget");
+  o << ".\n";
   o << "\n## Speed (ratio to CGAL in the same run)\n\n"
        "Seconds: the triangulation as the peer times it (TetGen: its whole process, file reading and writing "
        "included; scipy: the `Delaunay()` call). Peak MB: the peer process's peak resident memory (for scipy "
@@ -348,6 +420,18 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
                     answered ? fmt("%.0f", s.run.peak_rss_bytes / 1e6) : "-",
                     answered && tets ? fmt("%.0f", double(s.run.peak_rss_bytes) / double(tets)) : "-"});
   }
+  o << "\n## Where the time went\n\n"
+       "Wall seconds of this run's stages (the machine's load changes them; see the environment below).\n\n";
+  o << table_row({"stage", "seconds"}) << table_rule(2, 1);
+  o << table_row({"runs (" + std::to_string(all.size()) + " cases, " + std::to_string(options.jobs) + " at a time)",
+                  fmt("%.1f", stage_seconds["runs"].get<double>())});
+  for (const auto& p : peers)
+    if (per_peer_seconds.contains(p))
+      o << table_row({"&nbsp;&nbsp;`" + p + "`: its processes' wall seconds, summed",
+                      fmt("%.1f", per_peer_seconds[p].get<double>())});
+  o << table_row({"shrinking (" + std::to_string(to_shrink.size()) + " pairs)",
+                  fmt("%.1f", stage_seconds["shrinking"].get<double>())});
+  o << table_row({"speed", fmt("%.1f", stage_seconds["speed"].get<double>())});
   o << "\n## Data\n\n`leaderboard.csv` (one row per case: peer, source, n, case, seed, verdict, defect counts, "
        "seconds, peak RSS, shrunk input), `data/speed.csv`, `corpus/` (shrunk failing inputs with sidecars), "
        "`environment.json` (machine, versions of every peer).\n\n";
@@ -403,6 +487,8 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
   json facts = {{"cases", all.size()},
                 {"failing_cells", failing_cells},
                 {"shrunk_cells", shrunk},
+                {"saved_cells", saved},
+                {"stage_seconds", stage_seconds},
                 {"robust_dtlab_failed", robust_failed},
                 {"quick", options.quick}};
   json per = json::object();

@@ -15,16 +15,18 @@ namespace dtlab::experiments {
 
 struct LeaderboardOptions {
   std::filesystem::path out = "reports/leaderboard";
-  bool quick = false;                      // 2 cases per cell, n = 48 and 3000, speed at 2*10^4, short shrinks
+  bool quick = false;                      // 2 cases per cell, n = 48 and 3000, speed at 10^4, short shrinks
   std::vector<std::string> peers = {"all"};
-  std::size_t cases = 0;                   // seeds per (source, size); 0: 2 quick, 16 otherwise
+  std::size_t cases = 0;                   // seeds per (source, size); 0: 2 quick, 3 otherwise
   std::uint64_t seed = 1;
   unsigned jobs = 2;
-  double timeout_s = 0;                    // per peer run; 0: 20 s quick, 120 s otherwise
+  double timeout_s = 0;                    // per peer run; 0: 10 s quick, 30 s otherwise
   std::vector<std::string> families;       // fuzz families; empty: all
   bool meshes = true;                      // CGAL demo mesh samples
   std::string cgal_data;                   // CGAL demo data.tar.gz; "": the libcgal-demo one
-  std::size_t speed_n = 0;                 // one size for the speed table; 0: 2*10^4 quick, else 10^5 and 10^6
+  std::size_t shrink_runs = 0;             // peer runs per shrunk (peer, source); 0: 48 quick, 300 otherwise
+  double shrink_seconds = 0;               // the shrink stage's wall-clock budget; 0: 30 s quick, 300 otherwise
+  std::size_t speed_n = 0;                 // one size for the speed table; 0: 10^4 quick, else 10^5 and 10^6
   bool progress = false;
   std::string command_line;
 };

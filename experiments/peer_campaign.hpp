@@ -31,9 +31,14 @@ struct PeerCase {
   std::size_t n = 0;
   bool lower_dimensional = false;  // the input spans no volume: no tets is right
   PeerRun run;                     // its mesh dropped once judged
-  std::string corpus_file;         // relative to out_dir; "" when not shrunk
+  std::string corpus_file;         // relative to out_dir; "" when not saved
   std::size_t shrunk_points = 0;
   bool shrunk_minimal = false;
+  std::string shrink_stop;         // why it is not 1-minimal: "runs", "time" (budget spent),
+                                   // "hung" (not shrunk: each try would cost the time limit)
+  std::size_t shrink_runs = 0;     // peer runs the shrink made
+  double shrink_seconds = 0;
+  Verdict shrunk_verdict = Verdict::not_installed;  // the saved input run afresh
   bool failed() const;
 };
 
@@ -43,6 +48,8 @@ bool peer_failed(Verdict v, bool lower_dimensional);
 
 struct PeerCampaignOptions {
   std::string peer;
+  std::vector<std::string> peers;  // when not empty: each of these instead of `peer`,
+                                   // peers x sources x cases in one work queue
   std::vector<PointSource> sources;
   std::size_t cases = 10;
   std::optional<std::size_t> only_case;          // run just this case index
@@ -58,10 +65,22 @@ struct PeerCampaignOptions {
 
 std::vector<PeerCase> run_peer_campaign(const PeerCampaignOptions& options);
 
+struct ShrinkBudget {
+  std::size_t runs = 200;  // peer runs at most
+  double seconds = 0;      // wall clock at most; 0: no limit
+};
+
 // Shrinks `points` (on which c.peer gave c.run.verdict) to a smallest subset with the
-// same verdict that still spans a volume (if `points` did), and writes <out_dir>/corpus/<stem>.node + .json;
-// fills c.corpus_file, c.shrunk_points, c.shrunk_minimal.
+// same verdict that still spans a volume (if `points` did), and writes
+// <out_dir>/corpus/<stem>.node + .json; fills c's corpus_file, shrunk_* and shrink_*
+// fields. The tries run the slow-start peers in served helpers (PeerOptions::servers),
+// each under a time limit of 10x the original run's (2 s at least, options.timeout_s at
+// most); a shrunk input is judged once more in a fresh process (shrunk_verdict; an
+// unshrunk one keeps the verdict of its fresh run). A hung case is saved unshrunk.
+// `servers`: the served helpers to use (kept by the caller across shrinks, one set per
+// thread); nullptr: the shrink's own.
 void shrink_and_save(PeerCase& c, const std::vector<Point3>& points, const PeerOptions& options,
-                     std::size_t budget, const std::string& out_dir, const std::string& original_command);
+                     ShrinkBudget budget, const std::string& out_dir, const std::string& original_command,
+                     ServedChildren* servers = nullptr);
 
 }  // namespace dtlab::experiments

@@ -22,17 +22,25 @@ namespace dtlab {
 namespace {
 
 // Everything the child does between fork and exec must be async-signal-safe: the
-// argument vector and the paths are prepared before the fork.
-[[noreturn]] void exec_child(char* const* argv, const char* log, std::uint64_t memory, int error_fd) {
+// argument vector and the paths are prepared before the fork. Every descriptor of
+// the parent is close-on-exec (pipe2, socketpair with SOCK_CLOEXEC); dup2 clears the
+// flag on the copies the program gets.
+[[noreturn]] void exec_child(char* const* argv, const char* log, std::uint64_t memory, int stdin_fd, int reply_fd,
+                             int error_fd) {
   setpgid(0, 0);
-  const int fd = open(log ? log : "/dev/null", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int fd = open(log ? log : "/dev/null", O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd >= 0) {
     dup2(fd, 1);
     dup2(fd, 2);
-    if (fd > 2) close(fd);
   }
-  const int in = open("/dev/null", O_RDONLY);
-  if (in >= 0 && in != 0) dup2(in, 0), close(in);
+  if (stdin_fd >= 0) {
+    dup2(stdin_fd, 0);
+  } else {
+    const int in = open("/dev/null", O_RDONLY | O_CLOEXEC);
+    if (in >= 0) dup2(in, 0);
+  }
+  if (reply_fd == 3) fcntl(3, F_SETFD, 0);
+  else if (reply_fd >= 0) dup2(reply_fd, 3);
   if (memory) {
     rlimit r{static_cast<rlim_t>(memory), static_cast<rlim_t>(memory)};
     setrlimit(RLIMIT_AS, &r);
@@ -45,11 +53,9 @@ namespace {
   _exit(127);
 }
 
-// The peak resident memory of the program the child now runs (VmHWM of its own
-// address space, from /proc), 0 when it cannot be read (the child has exited).
-// rusage's ru_maxrss cannot serve: it includes the parent's pages the child held
-// between fork and exec.
-std::uint64_t vm_hwm_bytes(pid_t pid) {
+}  // namespace
+
+std::uint64_t vm_hwm_bytes(int pid) {
   char path[64];
   std::snprintf(path, sizeof path, "/proc/%d/status", static_cast<int>(pid));
   std::FILE* f = std::fopen(path, "r");
@@ -65,32 +71,26 @@ std::uint64_t vm_hwm_bytes(pid_t pid) {
   return kb * 1024;
 }
 
-}  // namespace
-
-ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& limits) {
+int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits, int stdin_fd, int reply_fd,
+                std::string& message) {
   if (args.empty()) throw std::invalid_argument("run_child: no program");
-  if (!std::isfinite(limits.timeout_s) || limits.timeout_s <= 0)
-    throw std::invalid_argument("run_child: the timeout must be a positive number of seconds");
   std::vector<std::string> copy = args;
   std::vector<char*> argv;
   for (auto& a : copy) argv.push_back(a.data());
   argv.push_back(nullptr);
-
   int pipe_fd[2];
   if (pipe2(pipe_fd, O_CLOEXEC) != 0) throw std::runtime_error("run_child: pipe failed");
-  ChildResult r;
-  const auto start = std::chrono::steady_clock::now();
   const pid_t pid = fork();
   if (pid < 0) {
     close(pipe_fd[0]);
     close(pipe_fd[1]);
-    r.message = std::string("fork failed: ") + std::strerror(errno);
-    return r;
+    message = std::string("fork failed: ") + std::strerror(errno);
+    return -1;
   }
   if (pid == 0) {
     close(pipe_fd[0]);
     exec_child(argv.data(), limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes,
-               pipe_fd[1]);
+               stdin_fd, reply_fd, pipe_fd[1]);
   }
   // Both sides set the group, so a kill right after fork reaches it.
   setpgid(pid, pid);
@@ -98,13 +98,29 @@ ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& l
   int exec_errno = 0;
   const ssize_t got = read(pipe_fd[0], &exec_errno, sizeof exec_errno);  // EOF when exec succeeded
   close(pipe_fd[0]);
+  if (got == static_cast<ssize_t>(sizeof exec_errno)) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);
+    return -1;
+  }
+  return pid;
+}
+
+ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& limits) {
+  if (!std::isfinite(limits.timeout_s) || limits.timeout_s <= 0)
+    throw std::invalid_argument("run_child: the timeout must be a positive number of seconds");
+  ChildResult r;
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = spawn_child(args, limits, -1, -1, r.message);
+  if (pid < 0) return r;  // not_started
 
   int status = 0;
   rusage usage{};
   bool timed_out = false;
   for (;;) {
     // Sampled before each wait: the last sample is at most one poll interval old.
-    if (got != static_cast<ssize_t>(sizeof exec_errno)) r.peak_rss_bytes = std::max(r.peak_rss_bytes, vm_hwm_bytes(pid));
+    r.peak_rss_bytes = std::max(r.peak_rss_bytes, vm_hwm_bytes(pid));
     const pid_t w = wait4(pid, &status, WNOHANG, &usage);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (w == pid) break;
@@ -123,10 +139,7 @@ ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& l
   }
   // The group may hold grandchildren that outlived their parent.
   kill(-pid, SIGKILL);
-  if (got == static_cast<ssize_t>(sizeof exec_errno)) {
-    r.status = ChildStatus::not_started;
-    r.message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);
-  } else if (timed_out) {
+  if (timed_out) {
     r.status = ChildStatus::timed_out;
   } else if (WIFSIGNALED(status)) {
     r.status = ChildStatus::signaled;

@@ -45,6 +45,19 @@ struct ChildResult {
 // an empty argv or a NaN, infinite, zero or negative timeout.
 ChildResult run_child(const std::vector<std::string>& argv, const ChildLimits& limits);
 
+// The lower level of run_child (and of ServedChild, oracle/served_child.hpp): starts
+// argv in its own process group under limits' memory limit, stdout and stderr to
+// limits.log_path, stdin from `stdin_fd` (-1: /dev/null) and, when reply_fd >= 0, that
+// descriptor as the program's fd 3. Returns its pid, or -1 with `message` set when it
+// did not start. The caller waits for it.
+int spawn_child(const std::vector<std::string>& argv, const ChildLimits& limits, int stdin_fd, int reply_fd,
+                std::string& message);
+
+// The peak resident memory of the program process `pid` now runs (VmHWM, from /proc),
+// 0 when it cannot be read. rusage's ru_maxrss cannot serve: it includes the parent's
+// pages the child held between fork and exec.
+std::uint64_t vm_hwm_bytes(int pid);
+
 // The last non-empty line of a text file (at most the last 4 KiB are read); "" when
 // the file is missing or empty. A refusing program's message.
 std::string last_line_of(const std::string& path);

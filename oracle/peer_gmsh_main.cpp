@@ -1,6 +1,7 @@
 // dtlab_peer_gmsh: the gmsh peers in their own helper (libgmsh loads OpenCASCADE and
-// more, about a second per start, which the other peers should not pay).
+// more, about half a second per start, which the other peers should not pay).
 //   dtlab_peer_gmsh gmsh|gmsh-hxt IN OUT     dtlab_peer_gmsh --version gmsh
+//   dtlab_peer_gmsh --serve gmsh|gmsh-hxt    many runs in one process (oracle/peer_serve.hpp)
 // Exit codes as dtlab_peer's: 0 answered, 2 bad usage, 3 refused, 4 not built in.
 #include <cstdio>
 #include <cstring>
@@ -8,26 +9,38 @@
 #include <string>
 
 #include "oracle/peer_programs.hpp"
+#include "oracle/peer_serve.hpp"
 
 int main(int argc, char** argv) {
   using namespace dtlab;
-  try {
-    if (argc == 3 && std::strcmp(argv[1], "--version") == 0) {
+  const auto usage = [] {
+    std::fprintf(stderr,
+                 "usage: dtlab_peer_gmsh gmsh|gmsh-hxt IN OUT | dtlab_peer_gmsh --serve gmsh|gmsh-hxt | "
+                 "dtlab_peer_gmsh --version gmsh\n");
+    return 2;
+  };
+  if (argc == 3 && std::strcmp(argv[1], "--version") == 0) {
+    try {
       std::printf("%s\n", gmsh_version().c_str());
       return 0;
+    } catch (const PeerNotInstalled& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return 4;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return 3;
     }
-    const std::string name = argc == 4 ? argv[1] : "";
-    if (name != "gmsh" && name != "gmsh-hxt") {
-      std::fprintf(stderr, "usage: dtlab_peer_gmsh gmsh|gmsh-hxt IN OUT | dtlab_peer_gmsh --version gmsh\n");
-      return 2;
-    }
-    write_peer_answer(argv[3], peer_gmsh(read_peer_points(argv[2]), name == "gmsh-hxt"));
-    return 0;
-  } catch (const PeerNotInstalled& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 4;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 3;
   }
+  const bool serve = argc == 3 && std::strcmp(argv[1], "--serve") == 0;
+  if (!serve && argc != 4) return usage();
+  const std::string name = argv[serve ? 2 : 1];
+  if (name != "gmsh" && name != "gmsh-hxt") return usage();
+  const PeerRequest run = [hxt = name == "gmsh-hxt"](const std::string& in, const std::string& out) {
+    write_peer_answer(out, peer_gmsh(read_peer_points(in), hxt));
+  };
+  if (serve) return serve_peer_requests(run);
+  std::string message;
+  const int code = run_peer_request(run, argv[2], argv[3], message);
+  if (!message.empty()) std::fprintf(stderr, "%s\n", message.c_str());
+  return code;
 }

@@ -9,11 +9,13 @@
 #include <stdexcept>
 
 #include "kernel/input_error.hpp"
+#include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
 #include "oracle/child_process.hpp"
 #include "oracle/peer_adapter.hpp"
 #include "oracle/peer_exchange.hpp"
+#include "oracle/served_child.hpp"
 #include "oracle/temp_dir.hpp"
 
 #ifndef DTLAB_PEER_BINARY
@@ -32,6 +34,7 @@ struct PeerSpec {
   const char* name;
   Runner runner;
   PeerOrientation orientation;
+  bool slow_start = false;  // its helper has a --serve mode (PeerOptions::servers)
 };
 
 const PeerSpec kPeers[] = {
@@ -41,9 +44,9 @@ const PeerSpec kPeers[] = {
     {"tetgen-flip", Runner::tetgen, PeerOrientation::dtlab},
     {"qhull", Runner::helper, PeerOrientation::by_sign},
     {"qhull-qj", Runner::helper, PeerOrientation::by_sign},
-    {"scipy", Runner::python, PeerOrientation::by_sign},
-    {"gmsh", Runner::helper, PeerOrientation::by_sign},
-    {"gmsh-hxt", Runner::helper, PeerOrientation::by_sign},
+    {"scipy", Runner::python, PeerOrientation::by_sign, true},
+    {"gmsh", Runner::helper, PeerOrientation::by_sign, true},
+    {"gmsh-hxt", Runner::helper, PeerOrientation::by_sign, true},
     {"dtlab:naive", Runner::helper, PeerOrientation::dtlab},
     {"dtlab:epsilon", Runner::helper, PeerOrientation::dtlab},
     {"dtlab:adaptive", Runner::helper, PeerOrientation::dtlab},
@@ -63,32 +66,53 @@ std::optional<PeerSpec> find_peer(const std::string& name) {
 }
 
 // scipy.spatial.Delaunay with its defaults; exit 4: not installed, 3: refused.
+// `--serve`: requests "IN<TAB>OUT" on stdin, replies "CODE MESSAGE" on fd 3
+// (oracle/peer_serve.hpp's protocol).
 const char* kScipyScript = R"PY(
-import sys, struct, time
+import os, sys, struct, time
 try:
     import numpy as np
     import scipy
     from scipy.spatial import Delaunay
 except Exception as e:
     print("not installed: %s" % e, file=sys.stderr); sys.exit(4)
+
+def run(inp, out):
+    data = open(inp, "rb").read()
+    if data[:4] != b"DTLP":
+        return 2, "not a dtlab peer file"
+    n = struct.unpack("<Q", data[4:12])[0]
+    pts = np.frombuffer(data, dtype="<f8", count=3 * n, offset=12).reshape(n, 3)
+    t = time.perf_counter()
+    try:
+        d = Delaunay(pts)
+    except Exception as e:
+        lines = [l for l in str(e).splitlines() if l.strip()]
+        qh = [l for l in lines if l.startswith("QH")]
+        return 3, "%s: %s" % (type(e).__name__, (qh or lines or ["?"])[0])
+    sec = time.perf_counter() - t
+    s = np.ascontiguousarray(d.simplices, dtype="<u4")
+    with open(out, "wb") as f:
+        f.write(b"DTLA"); f.write(struct.pack("<dQ", sec, 0)); f.write(struct.pack("<Q", s.shape[0])); f.write(s.tobytes())
+    return 0, ""
+
 if sys.argv[1] == "--version":
     print("scipy %s (numpy %s)" % (scipy.__version__, np.__version__)); sys.exit(0)
-data = open(sys.argv[1], "rb").read()
-if data[:4] != b"DTLP":
-    print("not a dtlab peer file", file=sys.stderr); sys.exit(2)
-n = struct.unpack("<Q", data[4:12])[0]
-pts = np.frombuffer(data, dtype="<f8", count=3 * n, offset=12).reshape(n, 3)
-t = time.perf_counter()
-try:
-    d = Delaunay(pts)
-except Exception as e:
-    lines = [l for l in str(e).splitlines() if l.strip()]
-    qh = [l for l in lines if l.startswith("QH")]
-    print("%s: %s" % (type(e).__name__, (qh or lines or ["?"])[0]), file=sys.stderr); sys.exit(3)
-sec = time.perf_counter() - t
-s = np.ascontiguousarray(d.simplices, dtype="<u4")
-with open(sys.argv[2], "wb") as f:
-    f.write(b"DTLA"); f.write(struct.pack("<dQ", sec, 0)); f.write(struct.pack("<Q", s.shape[0])); f.write(s.tobytes())
+if sys.argv[1] == "--serve":
+    reply = os.fdopen(3, "w")
+    for line in sys.stdin:
+        parts = line.rstrip("\n").split("\t")
+        try:
+            code, msg = run(*parts) if len(parts) == 2 else (2, "bad request")
+        except Exception as e:
+            code, msg = 3, "%s: %s" % (type(e).__name__, e)
+        sys.stdout.flush(); sys.stderr.flush()
+        reply.write("%d %s\n" % (code, " ".join(msg.split()))); reply.flush()
+    sys.exit(0)
+code, msg = run(sys.argv[1], sys.argv[2])
+if msg:
+    print(msg, file=sys.stderr)
+sys.exit(code)
 )PY";
 
 std::uint64_t default_memory() {
@@ -221,9 +245,20 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
   const std::string in = dir.file("in.bin"), out = dir.file("out.bin");
   write_peer_points(in, pts);
   std::vector<std::string> argv;
-  if (spec->runner == Runner::python) argv = {options.python, "-c", kScipyScript, in, out};
-  else argv = {peer_binary(options, name), name, in, out};
-  const ChildResult c = run_child(argv, limits);
+  if (spec->runner == Runner::python) argv = {options.python, "-c", kScipyScript};
+  else argv = {peer_binary(options, name)};
+  ChildResult c;
+  if (options.servers && spec->slow_start) {
+    argv.push_back("--serve");
+    if (spec->runner == Runner::helper) argv.push_back(name);
+    std::string reply;
+    c = options.servers->get(name, argv, limits).ask(in + "\t" + out, limits.timeout_s, reply);
+    write_text_file(log, reply + "\n");  // where failure_of looks for the message
+  } else {
+    if (spec->runner == Runner::helper) argv.push_back(name);
+    argv.insert(argv.end(), {in, out});
+    c = run_child(argv, limits);
+  }
   if (auto v = failure_of(c, log, run)) {
     run.verdict = *v;
     return run;

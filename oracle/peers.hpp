@@ -26,6 +26,8 @@
 
 namespace dtlab {
 
+class ServedChildren;
+
 struct PeerOptions {
   double timeout_s = 600;
   std::uint64_t memory_bytes = 0;  // 0: half of the machine's memory
@@ -34,6 +36,13 @@ struct PeerOptions {
   std::string peer_binary;         // the helper for every helper peer (tests); "": $DTLAB_PEER,
                                    // $DTLAB_PEER_GMSH (gmsh peers), else those built with dtlab
   bool check = true;               // judge the answer with the exact checker
+  // When set, the peers whose start costs most of a small run (gmsh, gmsh-hxt: their
+  // libraries; scipy: its import) run in a helper kept from one call to the next
+  // (oracle/served_child.hpp), under the same limits; a crash or hang ends that
+  // helper and the next call starts a fresh one. For shrinking, where hundreds of
+  // small runs would each pay the start; verdicts a report counts come from a fresh
+  // process per run (nullptr). Not thread-safe: one per thread.
+  ServedChildren* servers = nullptr;
 };
 
 struct PeerRun {

@@ -8,6 +8,7 @@ const char* verdict_name(Verdict v) {
     case Verdict::triangulation: return "triangulation";
     case Verdict::flat_tets: return "flat-tets";
     case Verdict::invalid: return "invalid";
+    case Verdict::unproven: return "unproven";
     case Verdict::missing_points: return "missing-points";
     case Verdict::extra_points: return "extra-points";
     case Verdict::crashed: return "crashed";
@@ -27,10 +28,12 @@ Verdict verdict_of(const CheckReport& report) {
   std::uint64_t structural = 0;
   for (int k = 0; k < kDefectKinds; ++k) {
     const auto kind = static_cast<DefectKind>(k);
-    if (kind != DefectKind::non_delaunay && kind != DefectKind::flat && kind != DefectKind::missing_point)
+    if (kind != DefectKind::non_delaunay && kind != DefectKind::flat && kind != DefectKind::missing_point &&
+        kind != DefectKind::unproven)
       structural += report.counts[k];
   }
   if (structural) return Verdict::invalid;
+  if (count(DefectKind::unproven)) return Verdict::unproven;
   if (count(DefectKind::missing_point)) return Verdict::missing_points;
   if (count(DefectKind::flat)) return Verdict::flat_tets;
   if (count(DefectKind::non_delaunay)) return Verdict::triangulation;

@@ -12,6 +12,8 @@ enum class Verdict {
   triangulation,   // valid, covers the hull once, some non-Delaunay facets
   flat_tets,       // zero-volume tets (maybe non-Delaunay facets), nothing else wrong
   invalid,         // overlaps, gaps, inverted tets, a non-convex or broken boundary
+  unproven,        // no such defect found, but the checker could not prove that the tets
+                   // cover the hull once (its `unproven` defect): not shown valid
   missing_points,  // else valid, but input points that are no vertex
   extra_points,    // tets on vertices that are not input points (box corners, ...)
   crashed,         // killed by a signal
@@ -25,7 +27,7 @@ const char* verdict_name(Verdict v);
 bool no_answer(Verdict v);
 
 // The verdict of an answer the checker judged: the worst class of defect decides
-// (invalid before missing-points before flat-tets before triangulation).
+// (invalid before unproven before missing-points before flat-tets before triangulation).
 Verdict verdict_of(const CheckReport& report);
 
 // "overlap 3, gap 1, non-delaunay 211": the non-zero defect counts, by kind.

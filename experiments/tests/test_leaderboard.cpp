@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "experiments/leaderboard.hpp"
+#include "experiments/peer_campaign.hpp"
 #include "kernel/point_io.hpp"
 #include "oracle/peers.hpp"
 #include "oracle/temp_dir.hpp"
@@ -57,6 +58,8 @@ TEST_CASE("leaderboard: report, csv, environment and shrunk failures", "[experim
     const PeerRun again = run_peer(side["peer"], points);
     CHECK(std::string(verdict_name(again.verdict)) == side["verdict"].get<std::string>());
     CHECK(points.size() <= side["points_original"].get<std::size_t>());
+    CHECK(side["shrunk_run"]["verdict"] == side["verdict"]);  // the fresh re-run agrees
+    if (!side["minimal"].get<bool>()) CHECK(!side["shrink_stopped_by"].get<std::string>().empty());
     ++checked;
   }
   const std::string report = [&] {
@@ -66,6 +69,54 @@ TEST_CASE("leaderboard: report, csv, environment and shrunk failures", "[experim
   }();
   CHECK(report.find("quick run") != std::string::npos);
   CHECK(report.find("Wilson") != std::string::npos);
+  CHECK(report.find("Where the time went") != std::string::npos);
+  // Every failing (peer, source) has an input saved, shrunk or with the reason why not.
+  CHECK(r.facts["saved_cells"] == r.facts["failing_cells"]);
   // naive without perturbation fails somewhere on these families at n = 48 in 3 seeds.
   if (r.facts["failing_cells"].get<std::size_t>() > 0) CHECK(checked > 0);
+}
+
+TEST_CASE("shrink_and_save saves every failing input and says what stopped the shrink",
+          "[experiments][leaderboard]") {
+  TempDir dir;
+  // A stand-in helper that refuses every input: any 3D subset still "fails".
+  const std::string helper = dir.file("refuse.sh");
+  std::ofstream(helper) << "#!/bin/sh\necho 'no thanks' >&2\nexit 3\n";
+  std::filesystem::permissions(helper, std::filesystem::perms::owner_all);
+  PeerOptions o;
+  o.peer_binary = helper;
+  o.timeout_s = 30;
+  const auto points = experiments::fuzz_family_sources({"uniform"})[0].generate(20, 1);
+  const auto failing_case = [&] {
+    experiments::PeerCase c;
+    c.peer = "cgal";
+    c.source = "uniform";
+    c.n = points.size();
+    c.run = run_peer("cgal", points, o);
+    return c;
+  };
+  experiments::PeerCase c = failing_case();
+  REQUIRE(c.run.verdict == Verdict::refused);
+  experiments::shrink_and_save(c, points, o, {200, 0}, dir.path().string(), "test");
+  CHECK(c.shrunk_minimal);
+  CHECK(c.shrunk_points == 4);  // the smallest input that spans a volume
+  CHECK(c.shrink_stop.empty());
+  CHECK(c.shrunk_verdict == Verdict::refused);
+  CHECK(std::filesystem::exists(dir.path() / c.corpus_file));
+
+  c = failing_case();
+  c.index = 1;
+  experiments::shrink_and_save(c, points, o, {200, 1e-9}, dir.path().string(), "test");
+  CHECK(!c.shrunk_minimal);
+  CHECK(c.shrink_stop == "time");
+  CHECK(c.shrunk_points == points.size());
+  CHECK(std::filesystem::exists(dir.path() / c.corpus_file));
+
+  c = failing_case();
+  c.index = 2;
+  c.run.verdict = Verdict::hung;
+  experiments::shrink_and_save(c, points, o, {200, 0}, dir.path().string(), "test");
+  CHECK(c.shrink_stop == "hung");
+  CHECK(c.shrink_runs == 0);
+  CHECK(c.shrunk_points == points.size());
 }

@@ -13,6 +13,7 @@
 
 #include "oracle/peer_adapter.hpp"
 #include "oracle/peers.hpp"
+#include "oracle/served_child.hpp"
 #include "oracle/temp_dir.hpp"
 #include "oracle/tests/point_sets.hpp"
 
@@ -229,6 +230,38 @@ TEST_CASE("crashes, hangs, refusals and missing programs are verdicts", "[oracle
   CHECK_THROWS_AS(expand_peer_names({"cgal", "nope"}), std::invalid_argument);
   CHECK(expand_peer_names({"all"}) == peer_names());
   CHECK(is_peer_name("dtlab:naive+none"));
+}
+
+TEST_CASE("served peers give the verdicts of fresh processes", "[oracle][peers]") {
+  // gmsh, gmsh-hxt and scipy in one helper each, kept between runs (shrinking's mode).
+  ServedChildren servers;
+  PeerOptions served;
+  served.timeout_s = 120;
+  served.servers = &servers;
+  PeerOptions fresh = served;
+  fresh.servers = nullptr;
+  const std::vector<std::vector<Point3>> inputs = {test::uniform_points(60, 5), test::uniform_points(4, 9),
+                                                   test::uniform_points(200, 7)};
+  for (const std::string name : {"gmsh", "gmsh-hxt", "scipy"})
+    for (const auto& points : inputs) {
+      const PeerRun a = run_peer(name, points, fresh), b = run_peer(name, points, served);
+      INFO(describe(a) << " / " << describe(b));
+      CHECK(a.verdict == b.verdict);
+      if (a.report && b.report) CHECK(a.report->counts == b.report->counts);
+    }
+}
+
+TEST_CASE("the checker's unproven is its own verdict, below invalid", "[oracle][peers]") {
+  CheckReport r;
+  const auto set = [&](DefectKind k, std::uint64_t n) { r.counts[static_cast<int>(k)] = n; };
+  CHECK(verdict_of(r) == Verdict::delaunay);
+  set(DefectKind::unproven, 1);
+  set(DefectKind::missing_point, 2);
+  set(DefectKind::flat, 3);
+  CHECK(verdict_of(r) == Verdict::unproven);
+  CHECK(std::string(verdict_name(Verdict::unproven)) == "unproven");
+  set(DefectKind::overlap, 1);
+  CHECK(verdict_of(r) == Verdict::invalid);
 }
 
 TEST_CASE("every installed peer names its version", "[oracle][peers]") {

@@ -177,7 +177,7 @@ class Comparison:
 @dataclass(frozen=True)
 class OracleRun:
     """One producer in dtlab.oracle (dtlab itself or a peer): its verdict (delaunay,
-    triangulation, flat-tets, invalid, missing-points, extra-points, crashed, hung,
+    triangulation, flat-tets, invalid, unproven, missing-points, extra-points, crashed, hung,
     refused, not-installed), message (a refusal's text, a signal, a note), seconds,
     tets ((m, 4) uint32 over the input points, positive orientation, or None when it
     gave no answer), defects ({kind: count}), its exact check, and `agree` (whether
