@@ -14,7 +14,10 @@ namespace {
 
 std::string cell_text(const std::vector<std::uint32_t>& c) {
   std::string s = "{";
-  for (std::size_t i = 0; i < c.size(); ++i) s += (i ? " " : "") + std::to_string(c[i]);
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (i) s += ' ';
+    s += std::to_string(c[i]);
+  }
   return s + "}";
 }
 
