@@ -27,17 +27,19 @@ struct ChildReport {
 ChildReport run_in_child(const std::string& tool, std::vector<Point3>& points,
                          const PredicateSpec& spec, const BuildOptions& options) {
   ChildReport rep{};
+  const auto report_build = [&rep](const BuildResult& r, std::chrono::steady_clock::time_point t0) {
+    rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    rep.ok = !r.failure;
+    rep.tets = r.mesh.tets.size();
+    if (r.failure) std::snprintf(rep.note, sizeof rep.note, "%s", failure_name(r.failure->kind));
+  };
   if (tool == "dtlab") {
     BuildOptions timed = options;
     timed.count_stages = false;  // no per-call counting in timed runs
     const auto t0 = std::chrono::steady_clock::now();
     // The child's copy of the caller's points is handed to the build, as a program that
     // read them would: one copy of the points at the peak.
-    BuildResult r = build_delaunay(std::move(points), spec, timed);
-    rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    rep.ok = !r.failure;
-    rep.tets = r.mesh.tets.size();
-    if (r.failure) std::snprintf(rep.note, sizeof rep.note, "%s", failure_name(r.failure->kind));
+    report_build(build_delaunay(std::move(points), spec, timed), t0);
   } else if (tool == "dtlab-cgal-order") {
     // Our inserter fed in CGAL's spatial_sort order (timed with the sort and the copy
     // into that order, as BRIO is timed in "dtlab"); the peak holds both copies.
@@ -48,11 +50,7 @@ ChildReport run_in_child(const std::string& tool, std::vector<Point3>& points,
     BuildOptions timed = options;
     timed.count_stages = false;
     timed.order = InsertionOrder::input;
-    BuildResult r = build_delaunay(std::move(sorted), spec, timed);
-    rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    rep.ok = !r.failure;
-    rep.tets = r.mesh.tets.size();
-    if (r.failure) std::snprintf(rep.note, sizeof rep.note, "%s", failure_name(r.failure->kind));
+    report_build(build_delaunay(std::move(sorted), spec, timed), t0);
   } else if (tool == "cgal") {
     OracleRun r = cgal_delaunay(points);
     rep.ok = r.mesh.has_value();
