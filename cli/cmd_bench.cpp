@@ -92,7 +92,9 @@ void add_bench_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* sub = app.add_subcommand("bench", "whole runs of dtlab, CGAL and TetGen on the same points (time, memory)");
   sub->add_option("--sizes", args->sizes, "point counts")->delimiter(',')->transform(count_in(1, 1e9))->capture_default_str();
-  sub->add_option("--dist", args->dists, "point distributions: uniform, clustered, lattice, ... (dtlab fuzz --list), mesh")
+  sub->add_option("--family,--dist", args->dists,
+                  "point families, as fuzz --family: uniform, clustered, lattice, ... (dtlab fuzz --list), mesh "
+                  "(--dist is the old spelling)")
       ->delimiter(',')->capture_default_str();
   sub->add_option("--tools", args->tools,
                   "dtlab, cgal, tetgen; dtlab-cgal-order: dtlab inserting in CGAL's spatial_sort order")

@@ -122,9 +122,10 @@ def compare(points: Any, tets_a: Any, tets_b: Any, orientation: str = "any") -> 
 
 
 def oracle(points: Any, against: Sequence[str] | str = ("cgal", "tetgen"), *, predicates: str = "adaptive",
-           perturb: str = "sos", tetgen: str = "tetgen", timeout: float = 600.0,
+           perturb: str = "sos", boundary: str = "infinite", order: str = "brio", seed: int = 1,
+           eps: float = 1e-12, eps_mode: str = "absolute", tetgen: str = "tetgen", timeout: float = 600.0,
            memory_mb: float = 0.0) -> OracleReport:
-    """`dtlab oracle` on an array: builds ours (predicates, perturb, default options),
+    """`dtlab oracle` on an array: builds ours (the kernel options of tetrahedralize()),
     runs every peer in `against` ("all", or names such as cgal, cgal-inexact, tetgen,
     tetgen-flip, qhull, qhull-qj, scipy, gmsh, gmsh-hxt, dtlab:naive) in its own
     process with `timeout` seconds and `memory_mb` MB (0: half the machine's), judges
@@ -133,7 +134,8 @@ def oracle(points: Any, against: Sequence[str] | str = ("cgal", "tetgen"), *, pr
     or is missing gives no answer (exit 3), never a failure of ours."""
     if isinstance(against, str):
         against = [a for a in against.split(",") if a]
-    raw = _core.oracle(points, list(against), predicates, perturb, tetgen, float(timeout), float(memory_mb))
+    raw = _core.oracle(points, list(against), predicates, perturb, boundary, order, int(seed), float(eps), eps_mode,
+                       tetgen, float(timeout), float(memory_mb))
     checks = raw["peer_checks"]
 
     def run(name: str, r: dict[str, Any], tets: Any, check: dict[str, Any] | None) -> OracleRun:

@@ -18,9 +18,11 @@ namespace dtlab::python {
 namespace {
 
 py::dict oracle(py::handle points, const std::vector<std::string>& against, const std::string& predicates,
-                const std::string& perturb, const std::string& tetgen, double timeout, double memory_mb) {
-  // The CLI's `dtlab oracle` builds with the default options and these two choices.
-  const KernelChoice k = kernel_choice(predicates, perturb, "infinite", "brio", BuildOptions{}.seed, 1e-12, "absolute");
+                const std::string& perturb, const std::string& boundary, const std::string& order,
+                std::uint64_t seed, double eps, const std::string& eps_mode, const std::string& tetgen,
+                double timeout, double memory_mb) {
+  // The same kernel options as `dtlab oracle` (and tetrahedralize()).
+  const KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
   if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("--timeout: must be a number in [0.001, 1e6]");
   if (!(memory_mb >= 0 && memory_mb <= 1e9)) throw py::value_error("--memory: must be a number in [0, 1e9]");
   try {
@@ -63,6 +65,7 @@ py::dict oracle(py::handle points, const std::vector<std::string>& against, cons
 
 void bind_oracle(py::module_& m) {
   m.def("oracle", &oracle, py::arg("points"), py::arg("against"), py::arg("predicates"), py::arg("perturb"),
+        py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"),
         py::arg("tetgen"), py::arg("timeout"), py::arg("memory_mb"), "`dtlab oracle` on an array (see dtlab.oracle).");
 }
 

@@ -21,6 +21,16 @@ def test_agrees_with_cgal_and_tetgen(uniform):
     assert dtlab.check(uniform, r.peers["cgal"].tets, orientation="positive").ok
 
 
+def test_kernel_options_reach_our_build(uniform):
+    # The thesis's enclosing tet with a factor too small drops hull tets: ours is wrong,
+    # the peer is not (the same call with the defaults agrees, above).
+    r = dtlab.oracle(uniform, against=["cgal"], boundary="bigtet:1", order="input", seed=5)
+    assert not r.ok and r.exit == 1
+    assert r.dtlab.verdict != "delaunay" and r.peers["cgal"].verdict == "delaunay"
+    with pytest.raises(ValueError):
+        dtlab.oracle(uniform, against=["cgal"], order="sideways")
+
+
 def test_missing_peer_is_no_answer(uniform):
     r = dtlab.oracle(uniform, against="tetgen", tetgen="/nonexistent/tetgen")
     assert not r.ok and r.exit == 3 and r.problems == []
