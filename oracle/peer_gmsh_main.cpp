@@ -19,18 +19,7 @@ int main(int argc, char** argv) {
                  "dtlab_peer_gmsh --version gmsh\n");
     return 2;
   };
-  if (argc == 3 && std::strcmp(argv[1], "--version") == 0) {
-    try {
-      std::printf("%s\n", gmsh_version().c_str());
-      return 0;
-    } catch (const PeerNotInstalled& e) {
-      std::fprintf(stderr, "%s\n", e.what());
-      return 4;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "%s\n", e.what());
-      return 3;
-    }
-  }
+  if (argc == 3 && std::strcmp(argv[1], "--version") == 0) return print_peer_version(gmsh_version, 3);
   const bool serve = argc == 3 && std::strcmp(argv[1], "--serve") == 0;
   if (!serve && argc != 4) return usage();
   const std::string name = argv[serve ? 2 : 1];

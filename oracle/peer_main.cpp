@@ -62,18 +62,8 @@ std::string version(const std::string& name) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc == 3 && std::strcmp(argv[1], "--version") == 0) {
-    try {
-      std::printf("%s\n", version(argv[2]).c_str());
-      return 0;
-    } catch (const PeerNotInstalled& e) {
-      std::fprintf(stderr, "%s\n", e.what());
-      return 4;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "%s\n", e.what());
-      return 2;
-    }
-  }
+  if (argc == 3 && std::strcmp(argv[1], "--version") == 0)
+    return print_peer_version([&] { return version(argv[2]); }, 2);
   if (argc != 4) {
     std::fprintf(stderr, "usage: dtlab_peer PEER IN OUT | dtlab_peer --version PEER\n");
     return 2;

@@ -4,6 +4,8 @@
 // (oracle/peer_exchange.hpp), input indices 0-based. A refusal (the peer reports an
 // error) throws PeerRefusal; a peer built without its library throws
 // PeerNotInstalled. A crash or a hang is not caught: the parent sees it.
+#include <cstdio>
+#include <exception>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +20,22 @@ struct PeerRefusal : std::runtime_error {
 struct PeerNotInstalled : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// A helper program's `--version`: the version on stdout and exit 0; exit 4 when the peer
+// is not installed, `error_exit` on any other error (the message on stderr).
+template <class Version>
+int print_peer_version(Version&& version, int error_exit) {
+  try {
+    std::printf("%s\n", version().c_str());
+    return 0;
+  } catch (const PeerNotInstalled& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 4;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return error_exit;
+  }
+}
 
 // CGAL Delaunay_triangulation_3 over Simple_cartesian<double>; cells in CGAL's
 // order (its positive orientation: swap two vertices for dtlab's).

@@ -5,26 +5,15 @@
 #include "oracle/check.hpp"
 #include "oracle/facet_table.hpp"
 #include "oracle/hull_degree.hpp"
+#include "oracle/tests/check_helpers.hpp"
 #include "predicates/exact.hpp"
 
 using namespace dtlab;
+using dtlab::test::count;
+using dtlab::test::orient;
+using dtlab::test::summary;
 
 namespace {
-
-std::uint64_t count(const CheckReport& r, DefectKind k) { return r.counts[static_cast<std::size_t>(k)]; }
-
-std::string summary(const CheckReport& r) {
-  std::string s;
-  for (const auto& d : r.defects) s += std::string(defect_name(d.kind)) + ": " + d.detail + "\n";
-  return s;
-}
-
-// Swaps two vertices where needed so that every tet has orient3d > 0.
-void orient(Tetrahedralization& t) {
-  for (Tet& k : t.tets)
-    if (ExactPredicates{}.orient3d(t.points[k[0]], t.points[k[1]], t.points[k[2]], t.points[k[3]]) < 0)
-      std::swap(k[0], k[1]);
-}
 
 // A tet split 1-4 around an interior point: the only triangulation of its 5 points.
 Tetrahedralization star() {
