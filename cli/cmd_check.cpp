@@ -28,11 +28,10 @@ void add_check_command(CLI::App& app, int& rc) {
   sub->add_flag("--volume-identity", args->volume_identity,
                 "also compare the exact sum of tet volumes with the hull's (a slow cross-check)");
   sub->callback([args, &rc] {
-    const Tetrahedralization t = read_tetgen(args->prefix);
     CheckOptions opt;
     opt.witnesses_per_kind = args->witnesses;
     opt.volume_identity = args->volume_identity;
-    const CheckReport r = check_tetrahedralization(t, opt);
+    const CheckReport r = check_tetrahedralization(read_tetgen(args->prefix), opt);
     if (args->json) {
       nlohmann::json j = to_json(r);
       j["prefix"] = args->prefix;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "kernel/ids.hpp"
+
 #include "oracle/check_impl.hpp"
 #include "oracle/filtered_exact.hpp"
 
@@ -40,7 +42,7 @@ void check_points(const Tetrahedralization& t, const std::vector<char>& used,
   std::vector<std::uint32_t> order(P.size());
   std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return lex_less(P[a], P[b]) || (P[a] == P[b] && a < b);
+    return lex_less(P[a], P[b]) || (P[a] == P[b] && out.id(a) < out.id(b));
   });
   for (std::size_t i = 0; i < order.size();) {
     std::size_t j = i + 1;
@@ -87,11 +89,79 @@ std::optional<std::array<std::uint32_t, 4>> spanning_points(std::span<const Poin
 
 }  // namespace check_detail
 
-CheckReport check_tetrahedralization(const Tetrahedralization& t, const CheckOptions& options) {
+namespace {
+
+void require_finite(const Tetrahedralization& t) {
   for (const Point3& p : t.points)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw std::invalid_argument("check: input has a non-finite coordinate");
+}
+
+// Renumbers t's vertices by first appearance in its tets (points in no tet follow, in
+// their order) and moves the points to match; returns original[new id] = old id.
+// Producers write tets in a spatially coherent order, so after this consecutive tets
+// read nearby points and ranks: the checker's loads become mostly sequential.
+std::vector<std::uint32_t> renumber_by_first_appearance(Tetrahedralization& t) {
+  const std::size_t n = t.points.size();
+  std::vector<std::uint32_t> rank(n, kNone);
+  std::uint32_t next = 0;
+  for (Tet& k : t.tets)
+    for (auto& v : k) {
+      if (rank[v] == kNone) rank[v] = next++;
+      v = rank[v];
+    }
+  for (auto& r : rank)
+    if (r == kNone) r = next++;
+  std::vector<std::uint32_t> original(n);
+  for (std::size_t i = 0; i < n; ++i) original[rank[i]] = static_cast<std::uint32_t>(i);
+  // points[new] = old points[original[new]], in place: follow each cycle once.
+  std::vector<bool> moved(n, false);
+  for (std::size_t start = 0; start < n; ++start) {
+    if (moved[start]) continue;
+    const Point3 first = t.points[start];
+    std::size_t at = start;
+    for (;;) {
+      moved[at] = true;
+      const std::size_t from = original[at];
+      if (from == start) break;
+      t.points[at] = t.points[from];
+      at = from;
+    }
+    t.points[at] = first;
+  }
+  return original;
+}
+
+bool indices_in_range(const Tetrahedralization& t) {
+  const std::size_t n = t.points.size();
+  if (n >= (1u << 31) || t.tets.size() >= (1u << 30)) return false;
+  for (const Tet& k : t.tets)
+    for (auto v : k)
+      if (v >= n) return false;
+  return true;
+}
+
+}  // namespace
+
+CheckReport check_tetrahedralization(const Tetrahedralization& t, const CheckOptions& options) {
+  require_finite(t);
   return check_tetrahedralization_with(t, options, FilteredExact{});
+}
+
+CheckReport check_tetrahedralization(Tetrahedralization&& t, const CheckOptions& options) {
+  require_finite(t);
+  // Out-of-range ids are stage 1's to report, in the caller's numbering.
+  if (!indices_in_range(t)) return check_tetrahedralization_with(t, options, FilteredExact{});
+  const std::vector<std::uint32_t> original = renumber_by_first_appearance(t);
+  std::vector<std::uint32_t> renamed;
+  renamed.reserve(options.duplicates.size());
+  // original is a permutation: its inverse maps a caller's id to ours.
+  std::vector<std::uint32_t> ours(options.duplicates.empty() ? 0 : original.size());
+  for (std::size_t i = 0; i < ours.size(); ++i) ours[original[i]] = static_cast<std::uint32_t>(i);
+  for (auto d : options.duplicates) renamed.push_back(d < ours.size() ? ours[d] : d);
+  CheckOptions o = options;
+  o.duplicates = renamed;
+  return check_tetrahedralization_with(t, o, FilteredExact{}, original);
 }
 
 }  // namespace dtlab

@@ -87,5 +87,11 @@ struct CheckReport {
 
 // Exact: every sign comes from FilteredExact (oracle/filtered_exact.hpp).
 CheckReport check_tetrahedralization(const Tetrahedralization& t, const CheckOptions& options = {});
+// The same check on a tetrahedralization the caller gives up: its vertices are
+// renumbered in place by first appearance in the tets, which makes the checker's
+// memory accesses local (about a quarter less time at 5*10^6 points, oracle/README.md),
+// and the report is in the caller's numbering. Counts and stats are those of the
+// overload above; witnesses past `witnesses_per_kind` may be other ones.
+CheckReport check_tetrahedralization(Tetrahedralization&& t, const CheckOptions& options = {});
 
 }  // namespace dtlab

@@ -31,20 +31,29 @@ namespace dtlab {
 
 namespace check_detail {
 
+// Counts every defect, keeps the first witnesses of each kind, and writes vertex ids
+// in the caller's numbering: `original[v]` when the checker runs on a renumbered copy
+// (check.cpp), v itself when `original` is empty.
 class Collector {
  public:
-  Collector(CheckReport& r, std::size_t per_kind) : r_(r), per_kind_(per_kind) {}
+  Collector(CheckReport& r, std::size_t per_kind, std::span<const std::uint32_t> original)
+      : r_(r), per_kind_(per_kind), original_(original) {}
   void add(DefectKind k, std::vector<std::uint32_t> tets, std::vector<std::uint32_t> vertices,
            int sign, std::string detail) {
     const auto i = static_cast<std::size_t>(k);
-    if (r_.counts[i]++ < per_kind_)
+    if (r_.counts[i]++ < per_kind_) {
+      for (auto& v : vertices) v = id(v);
       r_.defects.push_back({k, std::move(tets), std::move(vertices), sign, std::move(detail)});
+    }
   }
   std::uint64_t count(DefectKind k) const { return r_.counts[static_cast<std::size_t>(k)]; }
+  std::uint32_t id(std::uint32_t v) const { return original_.empty() ? v : original_[v]; }
+  std::string name(std::uint32_t v) const { return std::to_string(id(v)); }
 
  private:
   CheckReport& r_;
   std::size_t per_kind_;
+  std::span<const std::uint32_t> original_;
 };
 
 std::vector<std::uint32_t> tet_vertices(const Tet& k);
@@ -57,14 +66,16 @@ std::optional<std::array<std::uint32_t, 4>> spanning_points(std::span<const Poin
 
 }  // namespace check_detail
 
+// `original`: when not empty, t is a renumbering of the caller's tetrahedralization
+// and original[v] is vertex v's id there (defects and their texts use those ids).
 template <PredicateBackend B>
 CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const CheckOptions& opt,
-                                          const B& pred) {
+                                          const B& pred, std::span<const std::uint32_t> original = {}) {
   using namespace check_detail;
   const auto start = std::chrono::steady_clock::now();
   CheckReport report;
   CheckStats& st = report.stats;
-  Collector out(report, opt.witnesses_per_kind);
+  Collector out(report, opt.witnesses_per_kind, original);
   const auto& P = t.points;
   const auto& T = t.tets;
   const std::size_t n = P.size();
@@ -130,7 +141,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     const int s = pred.insphere(P[k0], P[k1], P[k2], P[k3], P[e]);
     if (s > 0)
       out.add(DefectKind::non_delaunay, {t1, t2}, {k0, k1, k2, k3, e}, s,
-              "insphere(tet " + std::to_string(t1) + ", opposite vertex " + std::to_string(e) + ") > 0");
+              "insphere(tet " + std::to_string(t1) + ", opposite vertex " + out.name(e) + ") > 0");
     else if (s == 0)
       report.cospherical_pairs.emplace_back(t1, t2);
   };
@@ -158,7 +169,8 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   st.boundary_edges = bs.edges;
   st.boundary_components = bs.components;
   for (const auto& e : bs.bad_edges)
-    out.add(DefectKind::broken_adjacency, {}, {e[0], e[1]}, 0,
+    out.add(DefectKind::broken_adjacency, {},
+            out.id(e[0]) < out.id(e[1]) ? std::vector{e[0], e[1]} : std::vector{e[1], e[0]}, 0,
             "boundary edge not shared by exactly two boundary facets in opposite directions");
   for (auto v : bs.bad_vertices)
     out.add(DefectKind::broken_adjacency, {}, {v}, 0, "boundary is not a 2-manifold at this vertex");
@@ -193,7 +205,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
       const int s = pred.orient3d(P[F[0]], P[F[1]], P[F[2]], P[apex]);
       if (s < 0)
         out.add(DefectKind::hull_not_convex, {bs.tet_of[f], bs.tet_of[g]}, {F[0], F[1], F[2], apex}, s,
-                "reflex boundary edge (" + std::to_string(F[e]) + "," + std::to_string(F[(e + 1) % 3]) +
+                "reflex boundary edge (" + out.name(F[e]) + "," + out.name(F[(e + 1) % 3]) +
                     "): orient3d(facet, apex of neighbour facet) < 0");
     }
   }
@@ -229,7 +241,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
         if (s < 0) {
           inside = false;
           out.add(DefectKind::hull_not_convex, {bs.tet_of[f], t0}, {G[0], G[1], G[2], v}, s,
-                  "vertex " + std::to_string(v) + " lies outside the plane of a boundary facet");
+                  "vertex " + out.name(v) + " lies outside the plane of a boundary facet");
         }
       }
     }

@@ -157,6 +157,32 @@ TEST_CASE("missing points and duplicates", "[check]") {
   CHECK(w.defects[0].detail.find("reported as a duplicate") != std::string::npos);
 }
 
+TEST_CASE("the renumbering check reports in the caller's numbering", "[check]") {
+  // The star with its points reversed: first appearance in the tets is not id order.
+  Tetrahedralization t = star();
+  const std::uint32_t n = static_cast<std::uint32_t>(t.points.size());
+  std::reverse(t.points.begin(), t.points.end());
+  for (Tet& k : t.tets)
+    for (auto& v : k) v = n - 1 - v;
+  t.points.insert(t.points.begin(), {1, 1, 1});  // id 0: a duplicate of (1,1,1), now vertex 1
+  for (Tet& k : t.tets)
+    for (auto& v : k) ++v;
+  const std::vector<std::uint32_t> dup{0};
+  CHECK(test::check_both_ways(t, {.duplicates = dup}).ok());
+  // Moving one vertex makes the reported duplicate a missing point, by its own id.
+  Tetrahedralization moved = t;
+  moved.points[0].z += 0x1p-40;
+  const CheckReport r = test::check_both_ways(moved, {.duplicates = dup});
+  REQUIRE(count(r, DefectKind::missing_point) == 1);
+  const CheckReport owned = check_tetrahedralization(std::move(moved), {.duplicates = dup});
+  REQUIRE(owned.defects.size() == 1);
+  CHECK(owned.defects[0].vertices == std::vector<std::uint32_t>{0});
+  // An out-of-range id is reported before any renumbering, also by the owning overload.
+  Tetrahedralization bad = t;
+  bad.tets[0][2] = 99;
+  CHECK(count(check_tetrahedralization(std::move(bad)), DefectKind::broken_adjacency) == 1);
+}
+
 TEST_CASE("duplicate vertices", "[check]") {
   Tetrahedralization t;
   t.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};

@@ -18,6 +18,7 @@
 #include "oracle/cgal_oracle.hpp"
 #include "oracle/check.hpp"
 #include "oracle/facet_table.hpp"
+#include "oracle/tests/check_helpers.hpp"
 #include "oracle/tests/mutation_truth.hpp"
 #include "oracle/tests/point_sets.hpp"
 #include "oracle/tetgen_oracle.hpp"
@@ -238,7 +239,7 @@ void run(const std::string& family, const std::vector<Point3>& points, int per_k
       Tetrahedralization t;
       t.points = mu.mesh.points;
       t.tets = mu.mesh.tets;
-      const CheckReport r = check_tetrahedralization(t);
+      const CheckReport r = test::check_both_ways(t);
       std::string defects;
       for (const Defect& d : r.defects) defects += std::string(defect_name(d.kind)) + ": " + d.detail + "\n";
       INFO(family << " / " << src.name << " / " << mu.kind << ": truth " << (truth.valid ? "valid" : truth.why)
