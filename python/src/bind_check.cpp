@@ -2,6 +2,7 @@
 // numpy arrays, with any tool's tet orientation (python/src/orientation.hpp).
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 #include "oracle/check.hpp"
 #include "oracle/compare.hpp"
@@ -54,8 +55,10 @@ py::dict check(py::handle points, py::handle tets, const std::string& orientatio
   Checked c;
   {
     py::gil_scoped_release nogil;
-    c = check_oriented(t, orientation,
-                       {.duplicates = dups, .delaunay = delaunay, .witnesses_per_kind = witnesses});
+    // t is ours: the owning check renumbers it for locality (the report keeps the caller's ids).
+    c.orientation = orient_tets(t, orientation);
+    c.report = check_tetrahedralization(std::move(t), {.duplicates = dups, .delaunay = delaunay,
+                                                       .witnesses_per_kind = witnesses});
   }
   return report_dict(c);
 }
