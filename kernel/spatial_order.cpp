@@ -96,10 +96,14 @@ std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint6
   for (std::size_t i = 0; i < points.size(); ++i) keys[i] = keyed(grid.key(points[i]), static_cast<std::uint32_t>(i));
   std::mt19937_64 rng(seed);
   std::shuffle(keys.begin(), keys.end(), rng);
-  // Rounds [n/2^(k+1), n/2^k), the first one holding everything below 128 points.
+  // Rounds [n/8^(k+1), n/8^k), the first one holding everything below 128 points.
+  // Ratio 1/8 (as CGAL's spatial_sort) rather than BRIO's 1/2: the last round, sorted
+  // along one curve, then holds 7/8 of the points. Measured at 10^6 points (kernel/README.md):
+  // 14% fewer walk steps on uniform points, 17% on mesh samples, and the build time of
+  // inserting in CGAL's own order, against 1/2.
   std::size_t end = keys.size();
   while (end > 0) {
-    const std::size_t begin = end > 128 ? end / 2 : 0;
+    const std::size_t begin = end > 128 ? end / 8 : 0;
     std::sort(keys.begin() + static_cast<std::ptrdiff_t>(begin), keys.begin() + static_cast<std::ptrdiff_t>(end));
     end = begin;
   }

@@ -14,8 +14,8 @@ namespace dtlab {
 // Hilbert index (3*bits bits) of a point with `bits`-bit integer coordinates, bits <= 21.
 std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits);
 
-// A BRIO permutation of 0..n-1: random rounds of sizes ~n/2^k, last round largest,
-// each round Hilbert-sorted.
+// A BRIO permutation of 0..n-1: random rounds [n/8^(k+1), n/8^k), the last (7/8 of
+// the points) largest, each round Hilbert-sorted.
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed);
 
 }  // namespace dtlab
