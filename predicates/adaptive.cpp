@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <vector>
 
 #include "predicates/exact.hpp"
@@ -192,6 +193,19 @@ double estimate(int len, const double* e) {
 // Exact sign: the largest component dominates the rest.
 int expansion_sign(int len, const double* e) { return sign_of(e[len - 1]); }
 
+// Every coordinate an integer of magnitude below 2^51 (then every difference of two is
+// exact). r + 2^52 rounds r < 2^51 to an integer (the spacing there is 1); subtracting
+// 2^52 is exact, so the round trip returns r exactly when r is an integer.
+bool integer_coordinates(std::initializer_list<const Point3*> pts) {
+  auto integer = [](double v) {
+    const double r = std::fabs(v);
+    return r < 0x1p51 && (r + 0x1p52) - 0x1p52 == r;
+  };
+  for (const Point3* p : pts)
+    if (!integer(p->x) || !integer(p->y) || !integer(p->z)) return false;
+  return true;
+}
+
 // 2x2 minor p*q - s*t as an expansion of at most 4 components.
 int minor2(double p, double q, double s, double t, double* h) {
   double x[2], y[2];
@@ -286,6 +300,13 @@ int adaptive_orient3d_stages(const Point3& a, const Point3& b, const Point3& c,
                       std::fabs(cdx) * (std::fabs(ady * bdz) + std::fabs(adz * bdy));
   double bound = kO3dA * perm;
   if (det > bound || -det > bound) return count(stats, false, AdaptiveStage::kA, sign_of(det));
+  // Integer: with integer coordinates below 2^51 and every |difference| <= M = 2^16, det3
+  // rounds nowhere: the differences are exact, 2x2 minors <= 2M^2, their products
+  // <= 2M^3, the sums <= 6M^3 = 6 * 2^48 < 2^52, all integers, all representable.
+  if (adaptive_detail::max3(std::fabs(adx), std::fabs(bdx), std::fabs(cdx)) <= 0x1p16 &&
+      adaptive_detail::max3(std::fabs(ady), std::fabs(bdy), std::fabs(cdy)) <= 0x1p16 &&
+      adaptive_detail::max3(std::fabs(adz), std::fabs(bdz), std::fabs(cdz)) <= 0x1p16 && integer_coordinates({&a, &b, &c, &d}))
+    return count(stats, false, AdaptiveStage::kInteger, sign_of(det));
 
   // B: det of the rounded differences, exactly. Expand along the x column:
   // adx*(bdy cdz - bdz cdy) + bdx*(cdy adz - cdz ady) + cdx*(ady bdz - adz bdy).
@@ -344,6 +365,20 @@ inline double det4(const double* X, const double* Y, const double* Z, const doub
   const double cda = Z[2] * da + Z[3] * ac + Z[0] * cd;
   const double dab = Z[3] * ab + Z[0] * bd + Z[1] * da;
   return (L[3] * abc - L[2] * dab) + (L[1] * cda - L[0] * bcd);
+}
+
+// Insphere: when every coordinate of the five points is an integer of magnitude below
+// 2^51 and every |difference| to e is at most M = 2^9, det4 and the lifts are computed
+// without a single rounding: the differences are exact integers (|a - e| < 2^52), and
+// every intermediate is an integer bounded by its own sum of |monomials|: lifts <= 3M^2,
+// 2x2 minors <= 2M^2, 3x3 minors <= 6M^3, lift * minor <= 18M^5, the two partial sums
+// <= 36M^5 and the result <= 72M^5 = 72 * 2^45 < 2^52, all representable. So `det` from
+// stage A is the exact determinant.
+bool small_integer_differences(std::initializer_list<const Point3*> pts, const double* aX, const double* aY,
+                               const double* aZ) {
+  for (int i = 0; i < 4; ++i)
+    if (std::max(std::max(aX[i], aY[i]), aZ[i]) > 0x1p9) return false;
+  return integer_coordinates(pts);
 }
 
 // Exact value of z-weighted 3x3 minor: z0*m0 - z1*m1 + z2*m2 (minors as expansions).
@@ -415,6 +450,11 @@ int adaptive_insphere_stages(const Point3& a, const Point3& b, const Point3& c,
   const double perm = (L[3] * pabc + L[2] * pdab) + (L[1] * pcda + L[0] * pbcd);
   double bound = kIspA * perm;
   if (det > bound || -det > bound) return count(stats, true, AdaptiveStage::kA, sign_of(det));
+
+  // Integer: lattices and integer-sampled spheres, where insphere is often exactly 0,
+  // would otherwise pay stage B's expansions on every tie.
+  if (small_integer_differences({&a, &b, &c, &d, &e}, aX, aY, aZ))
+    return count(stats, true, AdaptiveStage::kInteger, sign_of(det));
 
   // B: exact determinant of the rounded differences.
   double ab[4], bc[4], cd[4], da[4], ac[4], bd[4];

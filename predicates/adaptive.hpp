@@ -8,6 +8,7 @@
 //                coordinate differences (orient3d) or the largest lift (insphere)
 //                (cheapest; valid when those lie in a safe range)
 //   A: the naive determinant against a bound from its permanent
+//   integer: small integer coordinates: the naive determinant is exact
 //   B: the exact determinant of the rounded differences (expansion arithmetic)
 //   C: B plus the first-order effect of the differences' roundoff tails
 //   D: the exact determinant (expansion arithmetic)
@@ -27,10 +28,12 @@ namespace dtlab {
 
 // Which step of the pipeline decided a call. kZero: a column of the matrix of
 // differences is exactly zero (all points share a coordinate), so the answer is 0.
-enum class AdaptiveStage : int { kZero, kSemiStatic, kA, kB, kC, kD, kExact, kCount };
+// kInteger: small integer coordinates, where stage A's double evaluation is exact
+// (bounds in adaptive.cpp).
+enum class AdaptiveStage : int { kZero, kSemiStatic, kA, kInteger, kB, kC, kD, kExact, kCount };
 
 constexpr std::array<std::string_view, static_cast<int>(AdaptiveStage::kCount)>
-    kAdaptiveStageNames = {"zero", "semistatic", "A", "B", "C", "D", "exact"};
+    kAdaptiveStageNames = {"zero", "semistatic", "A", "integer", "B", "C", "D", "exact"};
 
 struct AdaptiveStats {
   std::array<std::uint64_t, static_cast<int>(AdaptiveStage::kCount)> orient3d{};

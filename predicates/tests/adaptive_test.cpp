@@ -168,3 +168,71 @@ TEST_CASE("fused insphere-and-sides filter: every sign it decides is exact", "[a
   }
   CHECK(bad == 0);
 }
+
+namespace {
+
+// Integer points on the sphere x^2 + y^2 + z^2 = r^2, moved by `offset` (an integer).
+std::vector<Point3> integer_sphere(int r, double offset) {
+  std::vector<Point3> out;
+  for (int x = -r; x <= r; ++x)
+    for (int y = -r; y <= r; ++y)
+      for (int z = -r; z <= r; ++z)
+        if (x * x + y * y + z * z == r * r) out.push_back({offset + x, offset + y, offset + z});
+  return out;
+}
+
+struct StageRun {
+  int wrong = 0;
+  std::uint64_t integer = 0, later = 0;  // decided by the integer stage / by B..exact
+};
+
+// Random quints (and the quads of their first four points) drawn from `pts`, against
+// the exact predicates; counts which stage decided the calls that stage A left open.
+StageRun run_on(const std::vector<Point3>& pts, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  AdaptiveStats st;
+  const AdaptivePredicates ad{&st};
+  const ExactPredicates ex;
+  StageRun r;
+  for (int i = 0; i < 4000; ++i) {
+    Point3 q[5];
+    for (auto& p : q) p = pts[rng() % pts.size()];
+    r.wrong += ad.insphere(q[0], q[1], q[2], q[3], q[4]) != ex.insphere(q[0], q[1], q[2], q[3], q[4]);
+    r.wrong += ad.orient3d(q[0], q[1], q[2], q[3]) != ex.orient3d(q[0], q[1], q[2], q[3]);
+  }
+  const auto k = [](AdaptiveStage s) { return static_cast<int>(s); };
+  r.integer = st.insphere[k(AdaptiveStage::kInteger)] + st.orient3d[k(AdaptiveStage::kInteger)];
+  for (int s = k(AdaptiveStage::kB); s <= k(AdaptiveStage::kExact); ++s) r.later += st.insphere[s] + st.orient3d[s];
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("adaptive: the integer stage is exact where it applies and steps aside elsewhere", "[adaptive]") {
+  // Cospherical integer points (insphere exactly 0 on every quint of distinct points),
+  // near the origin and near the end of the integer range (offset 2^50 - 2^10).
+  for (const double offset : {0.0, -12345.0, 0x1p50 - 0x1p10}) {
+    const StageRun r = run_on(integer_sphere(25, offset), 1);
+    INFO("offset " << offset);
+    CHECK(r.wrong == 0);
+    CHECK(r.integer > 0);
+  }
+  // Differences up to 600 > 2^9: insphere ties go on to stage B (orient3d may still
+  // use the integer stage, whose bound is 2^16), and every answer stays exact.
+  {
+    const std::vector<Point3> wide = integer_sphere(300, 7);
+    std::vector<Point3> some;
+    for (std::size_t i = 0; i < wide.size(); i += 7) some.push_back(wide[i]);
+    const StageRun r = run_on(some, 2);
+    CHECK(r.wrong == 0);
+    CHECK(r.later > 0);
+  }
+  // Half-integers and coordinates at 2^51 and beyond are not taken.
+  for (const double offset : {0.5, 0x1p51}) {
+    const StageRun r = run_on(integer_sphere(5, offset), 3);
+    INFO("offset " << offset);
+    CHECK(r.wrong == 0);
+    CHECK(r.integer == 0);
+    CHECK(r.later > 0);
+  }
+}
