@@ -86,6 +86,36 @@ class HilbertGrid {
 // Key in the high 30 bits, index in the low 32: one integer sort.
 std::uint64_t keyed(std::uint64_t key, std::uint32_t index) { return key << 32 | index; }
 
+// A cell of the grid holding many points (a tight cluster: the grid spans the whole
+// input) would leave them in random order. Such runs of equal keys are sorted again
+// along a curve on a grid over their own bounding box, recursively; each level adds
+// 10 bits of resolution, so 6 levels cover a double's 53. Identical points end it.
+void refine_runs(std::vector<std::uint64_t>& keys, std::size_t begin, std::size_t end,
+                 std::span<const Point3> points, int depth) {
+  constexpr std::size_t kRun = 16;
+  constexpr int kDepth = 6;
+  std::vector<Point3> run;
+  for (std::size_t i = begin; i < end;) {
+    std::size_t j = i + 1;
+    while (j < end && keys[j] >> 32 == keys[i] >> 32) ++j;
+    if (j - i > kRun && depth < kDepth) {
+      run.clear();
+      for (std::size_t k = i; k < j; ++k) run.push_back(points[static_cast<std::uint32_t>(keys[k])]);
+      const HilbertGrid grid(run);
+      bool split = false;
+      for (std::size_t k = i; k < j; ++k) {
+        keys[k] = keyed(grid.key(run[k - i]), static_cast<std::uint32_t>(keys[k]));
+        split = split || keys[k] >> 32 != keys[i] >> 32;
+      }
+      if (split) {
+        std::sort(keys.begin() + static_cast<std::ptrdiff_t>(i), keys.begin() + static_cast<std::ptrdiff_t>(j));
+        refine_runs(keys, i, j, points, depth + 1);
+      }
+    }
+    i = j;
+  }
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed) {
@@ -105,6 +135,7 @@ std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint6
   while (end > 0) {
     const std::size_t begin = end > 128 ? end / 8 : 0;
     std::sort(keys.begin() + static_cast<std::ptrdiff_t>(begin), keys.begin() + static_cast<std::ptrdiff_t>(end));
+    refine_runs(keys, begin, end, points, 0);
     end = begin;
   }
   std::vector<std::uint32_t> order(keys.size());
