@@ -29,10 +29,10 @@
 //          \|/               pdca (edge pd)    (4 tets around yz)
 //           d
 //
-// The 1-4, 2-3 and 3-2 flips are written out with their adjacency (one function each,
-// with its contract); only the rare 4-4 goes through retriangulate(), which matches
-// facets by their vertices. The orientations s_x mostly come for free: the insphere
-// evaluation of Ta against p forms them as its minors, and a backend with a fused
+// The 1-4, 2-3, 3-2 and 4-4 flips are written out with their adjacency (one function
+// each, with its contract; the 4-4 is degenerate but frequent on lattices). The
+// orientations s_x mostly come for free: the insphere evaluation of Ta against p forms
+// them as its minors, and a backend with a fused
 // filter (predicates/adaptive.hpp) returns the signs its semi-static bound decides.
 // Flips and walks are bounded; a non-robust backend that would loop forever stops
 // with a named failure instead.
@@ -45,7 +45,7 @@
 #include "kernel/geometry.hpp"
 #include "kernel/id_stack.hpp"
 #include "kernel/ids.hpp"
-#include "kernel/retriangulate.hpp"
+#include "kernel/facet_key.hpp"
 #include "kernel/tet_mesh.hpp"
 
 namespace dtlab {
@@ -361,12 +361,26 @@ class Inserter {
 
   // Flip 4-4 (case 3): p, d and the edge yz of T (opposite p and x = T[x_pos]) are
   // coplanar, T is not flat. If yz has exactly the four tets T, Ta, N2 = (y,z,d,e),
-  // N1 = (p,y,z,e) and the two new tets on N1's side are positive, swap the
-  // octahedron's diagonal yz for pd (retriangulate() glues the four new tets).
-  // Otherwise does nothing (a later flip removes T). Returns false only on a broken
-  // mesh. Pushes the new facets opposite p.
+  // N1 = (p,y,z,e) and the two new tets on N1's side are positive, the octahedron's
+  // diagonal yz is swapped for pd. Otherwise does nothing (a later flip removes T).
+  // Returns false only on a broken mesh. Pushes the new facets opposite p.
+  //
+  //            x                         x
+  //          /   \                     / | \        before: 4 tets around yz
+  //   T, Ta /     \             MT_z  /  |  \  MT_y
+  //        /       \                 /   |   \      after: 4 tets around pd
+  //       y---------z      ->       y---p,d---z     (seen along pd, p in front;
+  //        \       /                 \   |   /       y, z, p, d coplanar)
+  //   N1,N2 \     /             MN_z  \  |  /  MN_y
+  //          \   /                     \ | /
+  //            e                         e
+  //
+  // MT_y, MT_z: T with y, resp. z, replaced by d; MN_y, MN_z: N1 likewise. MT_y's facet
+  // opposite d is T's old facet opposite y, opposite p Ta's facet opposite y, opposite x
+  // MN_y's facet opposite e, opposite z MT_z's facet opposite y; MN_y's facet opposite
+  // d is N1's old facet opposite y, opposite p N2's facet opposite y, opposite z MN_z's
+  // facet opposite y (and the same with y and z swapped).
   bool flip44(const Roles& r, int x_pos, std::uint32_t p) {
-    const std::uint32_t* tv = mesh_.verts(r.t);
     const std::uint32_t n1f = mesh_.adj(4 * r.t + x_pos);
     if (n1f == kNone) return true;
     const std::uint32_t n2f = mesh_.adj(4 * r.ta + r.in_ta[x_pos]);
@@ -374,27 +388,65 @@ class Inserter {
     const std::uint32_t n1 = n1f >> 2, n2 = n2f >> 2;
     const std::uint32_t e = mesh_.apex(n1f);
     if (mesh_.apex(n2f) != e) return true;
-    const std::uint32_t* n1v = mesh_.verts(n1);
-    // The new tets: T and N1 with y, resp. z, replaced by d.
-    std::array<std::uint32_t, 4> made[4];
-    int k = 0;
-    const auto with_d = [&](const std::uint32_t* v, int j) {
-      made[k] = {v[0], v[1], v[2], v[3]};
-      made[k++][j] = r.d;
-    };
-    for (int j = 0; j < 4; ++j)
-      if (j != r.i && j != x_pos) with_d(tv, j);
-    for (int j = 0; j < 4; ++j)
-      if (n1v[j] == tv[(r.i + 1) & 3] || n1v[j] == tv[(r.i + 2) & 3] || n1v[j] == tv[(r.i + 3) & 3])
-        if (n1v[j] != tv[x_pos] && k < 4) with_d(n1v, j);
-    if (k != 4) return true;
-    if (geo_.orientation(made[2].data()) <= 0 || geo_.orientation(made[3].data()) <= 0) return true;
-    const std::uint32_t old[4] = {r.t, r.ta, n2, n1};
-    std::uint32_t created[4];
-    if (!retriangulate(mesh_, old, 4, made, 4, created))
+    std::uint32_t tv[4], nv[4];
+    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(r.t, k), nv[k] = mesh_.vertex(n1, k);
+    int s[2], q = 0;  // T's slots of y and z
+    for (int k = 0; k < 4; ++k)
+      if (k != r.i && k != x_pos) s[q++] = k;
+    int n1s[2], n2s[2];  // N1's and N2's slots of y and z
+    for (int m = 0; m < 2; ++m) {
+      n1s[m] = mesh_.index_of(n1, tv[s[m]]);
+      n2s[m] = mesh_.index_of(n2, tv[s[m]]);
+      if (n1s[m] < 0 || n2s[m] < 0) return fail(FailureKind::inconsistent_adjacency, "flip 4-4: a tet lacks y or z");
+    }
+    const int n1p = mesh_.index_of(n1, p), n1e = n1f & 3;
+    if (n1p < 0) return fail(FailureKind::inconsistent_adjacency, "flip 4-4: N1 lacks p");
+    // In a simplicial complex e is not x, N2 holds d, N1 and N2 share their facet yze,
+    // and no outer facet of the four tets leads back into them; a mesh that a
+    // non-robust backend has tangled can break each.
+    const std::uint32_t n12 = mesh_.adj(4 * n1 + n1p);  // N1's facet yze: N2's, closing the ring
+    if (e == tv[x_pos] || mesh_.index_of(n2, r.d) < 0 || n12 == kNone || n12 >> 2 != n2 ||
+        mesh_.adj(n12) != 4 * n1 + static_cast<std::uint32_t>(n1p))
       return fail(FailureKind::inconsistent_adjacency, "flip 4-4: facets did not match up");
-    for (std::uint32_t c : created) stack_.push_back(4 * c + mesh_.index_of(c, p));
-    last_ = created[0];
+    std::uint32_t mn_v[2][4];
+    for (int m = 0; m < 2; ++m) {
+      std::copy(nv, nv + 4, mn_v[m]);
+      mn_v[m][n1s[m]] = r.d;
+    }
+    if (geo_.orientation(mn_v[0]) <= 0 || geo_.orientation(mn_v[1]) <= 0) return true;
+    std::uint32_t outer_t[2], outer_ta[2], outer_n1[2], outer_n2[2];
+    for (int m = 0; m < 2; ++m) {
+      outer_t[m] = mesh_.adj(4 * r.t + s[m]);
+      outer_ta[m] = mesh_.adj(4 * r.ta + r.in_ta[s[m]]);
+      outer_n1[m] = mesh_.adj(4 * n1 + n1s[m]);
+      outer_n2[m] = mesh_.adj(4 * n2 + n2s[m]);
+      for (const std::uint32_t f : {outer_t[m], outer_ta[m], outer_n1[m], outer_n2[m]})
+        if (f != kNone && (f >> 2 == r.t || f >> 2 == r.ta || f >> 2 == n1 || f >> 2 == n2))
+          return fail(FailureKind::inconsistent_adjacency, "flip 4-4: facets did not match up");
+    }
+    mesh_.destroy(r.t);
+    mesh_.destroy(r.ta);
+    mesh_.destroy(n1);
+    mesh_.destroy(n2);
+    std::uint32_t mt[2], mn[2];
+    for (int m = 0; m < 2; ++m) {
+      std::uint32_t w[4] = {tv[0], tv[1], tv[2], tv[3]};
+      w[s[m]] = r.d;
+      mt[m] = mesh_.create(w[0], w[1], w[2], w[3]);
+      mn[m] = mesh_.create(mn_v[m][0], mn_v[m][1], mn_v[m][2], mn_v[m][3]);
+    }
+    for (int m = 0; m < 2; ++m) {
+      mesh_.link(4 * mt[m] + s[m], outer_t[m]);
+      mesh_.link(4 * mt[m] + r.i, outer_ta[m]);
+      mesh_.link(4 * mt[m] + x_pos, 4 * mn[m] + n1e);
+      mesh_.link(4 * mn[m] + n1s[m], outer_n1[m]);
+      mesh_.link(4 * mn[m] + n1p, outer_n2[m]);
+    }
+    for (int m = 0; m < 2; ++m) stack_.push_back(4 * mt[m] + r.i);
+    for (int m = 0; m < 2; ++m) stack_.push_back(4 * mn[m] + n1p);
+    mesh_.link(4 * mt[0] + s[1], 4 * mt[1] + s[0]);
+    mesh_.link(4 * mn[0] + n1s[1], 4 * mn[1] + n1s[0]);
+    last_ = mt[0];
     ++stats_.flips44;
     return true;
   }
