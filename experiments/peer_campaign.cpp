@@ -106,10 +106,15 @@ void shrink_pass(PeerCase& c, const std::vector<Point3>& original, const PeerOpt
   const auto shrink_with = [&](const PeerOptions& run_options, std::size_t run_budget, fuzz::ShrinkPosition from) {
     const auto fails = [&](const std::vector<Point3>& candidate) {
       if (!flat && fuzz::is_lower_dimensional(candidate)) return false;
-      ++runs;
       // Each try ends within the budget: one cut short by it tells nothing, and ends the pass.
+      const double left = seconds_left();
+      if (left <= 0) {
+        out_of_time = true;
+        return false;
+      }
+      ++runs;
       PeerOptions o = run_options;
-      o.timeout_s = std::min(run_options.timeout_s, seconds_left());
+      o.timeout_s = std::min(run_options.timeout_s, left);
       const Verdict v = run_peer(c.peer, candidate, o).verdict;
       if (v == Verdict::hung && o.timeout_s < run_options.timeout_s) {
         out_of_time = true;
