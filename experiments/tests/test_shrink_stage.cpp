@@ -49,33 +49,33 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 TEST_CASE("shrink stage: later passes go on with the pairs the first stopped by time", "[experiments][shrink]") {
   TempDir dir;
-  // Refuses 30 points or more (slowly), crashes on fewer: a refusal shrinks to 30
-  // points, and proving that 1-minimal takes 30 runs, 1.5 s at least.
+  // Refuses 12 points or more (slowly), crashes on fewer: a refusal on 16 points
+  // shrinks to 12, and proving those 1-minimal takes 12 runs more: 2.4 s at least.
   ShrinkStageOptions o;
-  o.peer_options.peer_binary = stand_in(dir, "peer.sh", "sleep 0.05\n[ $n -ge 30 ] && exit 3\nkill -SEGV $$");
+  o.peer_options.peer_binary = stand_in(dir, "peer.sh", "sleep 0.1\n[ $n -ge 12 ] && exit 3\nkill -SEGV $$");
   o.peer_options.timeout_s = 30;
   o.jobs = 1;
-  o.seconds = 8;
+  o.seconds = 12;
   o.out_dir = dir.path().string();
-  // Pair 0 first, then seven that are done at once (4 points: every subset is flat):
-  // pass one gives pair 0 a share of 8 s / 8 pairs, too little; pass two the rest.
+  // Pair 0 first, then eleven that are done at once (4 points: every subset is flat):
+  // pass one gives pair 0 a share of 12 s / 12 pairs, too little; pass two the rest.
   std::vector<PeerCase> cases;
-  cases.push_back(failing_case(0, 40, Verdict::refused, 0.05));
-  for (std::size_t i = 1; i < 8; ++i) cases.push_back(failing_case(i, 4, Verdict::crashed, 0.05));
+  cases.push_back(failing_case(0, 16, Verdict::refused, 0.1));
+  for (std::size_t i = 1; i < 12; ++i) cases.push_back(failing_case(i, 4, Verdict::crashed, 0.1));
   std::vector<ShrinkPair> pairs;
   for (auto& c : cases) pairs.push_back({&c, uniform(c.n, c.index + 1), "test", 0});
   const auto t0 = std::chrono::steady_clock::now();
   const ShrinkStageResult r = run_shrink_stage(pairs, o);
   CHECK(seconds_since(t0) < o.seconds + 2);
   REQUIRE(r.pass_seconds.size() >= 2);
-  CHECK(r.pass_pairs[0] == 8);
+  CHECK(r.pass_pairs[0] == 12);
   CHECK(r.pass_pairs[1] == 1);
   const PeerCase& c = cases[0];
   CHECK(c.shrunk_minimal);
   CHECK(c.shrink_stop.empty());
-  CHECK(c.shrunk_points == 30);
+  CHECK(c.shrunk_points == 12);
   CHECK(c.shrink_passes == r.pass_seconds.size());
-  CHECK(c.shrink_runs >= 30);
+  CHECK(c.shrink_runs >= 12);
   CHECK(c.shrunk_verdict == Verdict::refused);
   for (std::size_t i = 1; i < cases.size(); ++i) {
     CHECK(cases[i].shrunk_minimal);
@@ -116,7 +116,7 @@ TEST_CASE("shrink stage: a hang shrinks under a short limit and is confirmed und
   o.seconds = 8;
   o.out_dir = dir.path().string();
   std::vector<PeerCase> cases = {failing_case(0, 12, Verdict::hung, 1.5)};
-  std::vector<ShrinkPair> pairs = {{&cases[0], uniform(12, 1), "test", 0.3}};
+  std::vector<ShrinkPair> pairs = {{&cases[0], uniform(12, 1), "test", 0.5}};
   const auto t0 = std::chrono::steady_clock::now();
   const ShrinkStageResult r = run_shrink_stage(pairs, o);
   CHECK(seconds_since(t0) < o.seconds + 1);
@@ -126,7 +126,7 @@ TEST_CASE("shrink stage: a hang shrinks under a short limit and is confirmed und
   CHECK(c.shrunk_minimal);
   CHECK(c.shrink_stop.empty());
   CHECK(c.shrunk_points == 6);
-  CHECK(c.hung_try_seconds == Approx(0.3));
+  CHECK(c.hung_try_seconds == Approx(0.5));
   CHECK(c.shrunk_verdict == Verdict::hung);
   CHECK(c.shrunk_run.wall_seconds >= 1.5);
   CHECK(c.shrink_note.empty());
@@ -136,14 +136,14 @@ TEST_CASE("shrink stage: a hang shrinks under a short limit and is confirmed und
 TEST_CASE("a hang whose shrunk input does not hang under the full limit keeps its original input",
           "[experiments][shrink]") {
   TempDir dir;
-  // Slow (1 s) from 5 points on, hangs from 10: under a 0.3 s limit per try it
+  // Slow (1 s) from 5 points on, hangs from 10: under a 0.5 s limit per try it
   // "hangs" on 5 points, which then answer (a refusal) under the full 2 s limit.
   PeerOptions o;
   o.peer_binary = stand_in(dir, "peer.sh", "[ $n -ge 10 ] && exec sleep 60\n[ $n -ge 5 ] && sleep 1\nexit 3");
   o.timeout_s = 2;
   const auto points = uniform(12, 1);
   PeerCase c = failing_case(0, 12, Verdict::hung, 2);
-  shrink_and_save(c, points, o, {200, 0, 0.3}, dir.path().string(), "test");
+  shrink_and_save(c, points, o, {200, 0, 0.5}, dir.path().string(), "test");
   CHECK_FALSE(c.shrunk_minimal);
   CHECK(c.shrink_stop == "unconfirmed");
   CHECK(c.shrunk_points == 12);
@@ -154,7 +154,7 @@ TEST_CASE("a hang whose shrunk input does not hang under the full limit keeps it
 
   // No confirming run when it could not end in the time left: the original is kept.
   PeerCase d = failing_case(1, 12, Verdict::hung, 2);
-  shrink_pass(d, points, o, {200, 0, 0.3});
+  shrink_pass(d, points, o, {200, 0, 0.5});
   REQUIRE(d.shrunk_points == 5);
   const std::size_t runs = d.shrink_runs;
   confirm_hang(d, points, o, 1.0);
