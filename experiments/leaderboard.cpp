@@ -419,7 +419,7 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
     if (c->shrunk_minimal) ++shrunk;
     else ++stops[c->shrink_stop];
     std::string minimal = c->shrunk_minimal ? "yes" : "no: " + c->shrink_stop;
-    if (c->hung_try_seconds > 0) minimal += " (tries under " + fmt("%g", c->hung_try_seconds) + " s)";
+    if (c->hung_try_seconds > 0) minimal += " (tries under " + fmt("%.1f", c->hung_try_seconds) + " s)";
     if (!c->shrink_note.empty()) notes.push_back("`" + key.first + "` on " + key.second + ": " + c->shrink_note);
     o << table_row({"`" + key.first + "`", key.second, verdict_name(c->run.verdict), std::to_string(c->n),
                     std::to_string(c->shrunk_points), minimal,

@@ -169,7 +169,7 @@ void confirm_hang(PeerCase& c, const std::vector<Point3>& original, const PeerOp
     why = std::string("that input gave ") + verdict_name(r.verdict) + " after " + fmt("%.1f", r.wall_seconds) +
           " s in a fresh process under the " + fmt("%g", options.timeout_s) + " s limit";
   }
-  c.shrink_note = "shrunk to " + std::to_string(shrunk) + " points under a " + fmt("%g", c.hung_try_seconds) +
+  c.shrink_note = "shrunk to " + std::to_string(shrunk) + " points under a " + fmt("%.1f", c.hung_try_seconds) +
                   " s limit per try, but " + why + "; the original input is saved";
   c.shrunk_input = original;
   c.shrunk_points = original.size();

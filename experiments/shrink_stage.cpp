@@ -54,10 +54,12 @@ ShrinkStageResult run_shrink_stage(std::vector<ShrinkPair>& pairs, const ShrinkS
   ShrinkStageResult result;
   const unsigned jobs = std::max(1u, o.jobs);
   const double full_limit = o.peer_options.timeout_s;
-  // Each shrunk hang needs one run that may last the full limit, `jobs` at a time.
+  // Each shrunk hang needs one run that may last the full limit, `jobs` at a time, and
+  // a confirming run starts only when it can end within the stage: 2 s more per round
+  // for starting and judging, and for passes that end a little late.
   const auto hangs = static_cast<std::size_t>(std::count_if(pairs.begin(), pairs.end(), shrinks_hang));
   result.reserved_seconds =
-      hangs ? std::min(o.seconds / 2, full_limit * std::ceil(double(hangs) / jobs)) : 0.0;
+      hangs ? std::min(o.seconds / 2, (full_limit + 2) * std::ceil(double(hangs) / jobs)) : 0.0;
   const double passes_end = o.seconds - result.reserved_seconds;
   HelperPool helpers;
 
