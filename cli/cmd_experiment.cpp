@@ -122,10 +122,10 @@ void add_experiment_command(CLI::App& app, int& rc) {
   l->add_option("--timeout", board->timeout_s, "seconds per peer run (0: 10 with --quick, 30 otherwise)")
       ->check(number_in(0, 1e6));
   l->add_option("--shrink-runs", board->shrink_runs,
-                "peer runs per shrunk (peer, source) (0: 48 with --quick, 300 otherwise)")
+                "peer runs per shrunk (peer, source) and pass (0: 48 with --quick, 300 otherwise)")
       ->transform(count_in(0, 1e9));
   l->add_option("--shrink-seconds", board->shrink_seconds,
-                "wall-clock budget of the whole shrink stage (0: 30 with --quick, 300 otherwise)")
+                "wall-clock budget of the whole shrink stage (0: 30 with --quick, 600 otherwise)")
       ->check(number_in(0, 1e6));
   l->add_option("--speed-n", board->speed_n, "one size for the speed table (0: 10^5 and 10^6; 10^4 with --quick)")
       ->transform(count_in(0, 1e9));

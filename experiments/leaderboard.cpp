@@ -14,6 +14,7 @@
 #include "kernel/output_file.hpp"
 #include "experiments/peer_campaign.hpp"
 #include "experiments/report.hpp"
+#include "experiments/shrink_stage.hpp"
 #include "experiments/thesis_parts.hpp"
 #include "experiments/wilson_interval.hpp"
 #include "fuzz/families.hpp"
@@ -97,6 +98,9 @@ std::string heat_colour(double share) {
   std::snprintf(b, sizeof b, "#ff%02x%02x", g, g);
   return share == 0 ? "#e8f5e9" : b;
 }
+
+// How a pair's shrink ended: 1-minimal, or what stopped it.
+std::string shrink_ending(const PeerCase& c) { return c.shrunk_minimal ? "1-minimal" : c.shrink_stop; }
 
 struct Cell {
   std::size_t cases = 0, failing = 0;
@@ -201,52 +205,53 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
     per_peer_seconds[c.peer] = per_peer_seconds.value(c.peer, 0.0) + c.run.wall_seconds;
 
   // The smallest failing input per (peer, source): the first failure of the smallest
-  // size, shrunk (a hung one saved unshrunk). The pairs share the stage's time budget:
-  // each gets the time left over the pairs left, times the jobs, when it starts.
+  // size (a hang only when the pair has no other failure), shrunk in passes under the
+  // stage's time budget (experiments/shrink_stage.hpp).
   step("shrinking failures");
   const auto shrink_t0 = std::chrono::steady_clock::now();
   std::map<std::pair<std::string, std::string>, PeerCase*> first_failure;
-  for (PeerCase& c : all)
+  std::map<std::pair<std::string, std::string>, double> slowest_answer;  // non-hung runs, for a hang's tries
+  for (PeerCase& c : all) {
+    if (c.run.verdict != Verdict::hung) {
+      double& t = slowest_answer[{c.peer, c.source}];
+      t = std::max(t, c.run.wall_seconds);
+    }
     if (c.failed()) {
       auto& slot = first_failure[{c.peer, c.source}];
       const auto rank = [](const PeerCase* p) { return std::make_pair(p->run.verdict == Verdict::hung, p->n); };
       if (!slot || rank(&c) < rank(slot)) slot = &c;
     }
-  std::vector<PeerCase*> to_shrink;
-  for (auto& [key, c] : first_failure) to_shrink.push_back(c);
+  }
   const std::size_t shrink_runs = options.shrink_runs ? options.shrink_runs : options.quick ? 48 : 300;
-  const double shrink_stage_s = options.shrink_seconds > 0 ? options.shrink_seconds : options.quick ? 30 : 300;
-  fs::create_directories(dir / "corpus");
-  std::atomic<std::size_t> pairs_left{to_shrink.size()};
-  // One set of served helpers per worker thread, kept across its pairs (which come in
-  // peer order), so a helper starts about once per peer and worker.
-  std::mutex servers_lock;
-  std::map<std::thread::id, std::unique_ptr<ServedChildren>> servers;
-  const auto my_servers = [&] {
-    std::lock_guard<std::mutex> g(servers_lock);
-    auto& s = servers[std::this_thread::get_id()];
-    if (!s) s = std::make_unique<ServedChildren>();
-    return s.get();
-  };
-  fuzz::run_work_queue(to_shrink.size(), options.jobs, [&](std::size_t i) {
-    PeerCase& c = *to_shrink[i];
+  const double shrink_stage_s = options.shrink_seconds > 0 ? options.shrink_seconds : options.quick ? 30 : 600;
+  std::vector<ShrinkPair> to_shrink;
+  for (auto& [key, c] : first_failure) {
     const PointSource* src = nullptr;
     for (const auto& s : families)
-      if (s.name == c.source) src = &s;
+      if (s.name == c->source) src = &s;
     for (const auto& s : mesh_sources)
-      if (s.name == c.source) src = &s;
-    if (!src) return;
-    const double left = std::max(0.0, shrink_stage_s - seconds_since(shrink_t0));
-    const double share =
-        std::min(left, left * std::max(1u, options.jobs) / static_cast<double>(std::max<std::size_t>(pairs_left--, 1)));
-    const std::vector<Point3> points = src->generate(c.n, c.seed);
-    const std::string cmd = "dtlab experiment leaderboard --seed " + std::to_string(options.seed) + " (" + c.source +
-                            ", n " + std::to_string(c.n) + ", case " + std::to_string(c.index) + ")";
-    // With no time left a pair still gets its input saved (its time budget spent at once).
-    shrink_and_save(c, points, po, {shrink_runs, std::max(share, 1e-9)}, dir.string(), cmd, my_servers());
-  });
-  servers.clear();
+      if (s.name == c->source) src = &s;
+    if (!src) continue;
+    ShrinkPair p;
+    p.failure = c;
+    p.points = src->generate(c->n, c->seed);
+    p.command = "dtlab experiment leaderboard --seed " + std::to_string(options.seed) + " (" + c->source + ", n " +
+                std::to_string(c->n) + ", case " + std::to_string(c->index) + ")";
+    if (c->run.verdict == Verdict::hung) p.hung_try_seconds = hung_try_limit(slowest_answer[key], po.timeout_s);
+    to_shrink.push_back(std::move(p));
+  }
+  ShrinkStageOptions stage;
+  stage.seconds = shrink_stage_s;
+  stage.runs_per_pass = shrink_runs;
+  stage.jobs = options.jobs;
+  stage.peer_options = po;
+  stage.out_dir = dir.string();
+  const ShrinkStageResult shrunk_stage = run_shrink_stage(to_shrink, stage);
   stage_seconds["shrinking"] = seconds_since(shrink_t0);
+  stage_seconds["shrink_passes"] = shrunk_stage.pass_seconds;
+  stage_seconds["shrink_pass_pairs"] = shrunk_stage.pass_pairs;
+  stage_seconds["shrink_confirm"] = shrunk_stage.confirm_seconds;
+  stage_seconds["shrink_reserved_for_confirming"] = shrunk_stage.reserved_seconds;
 
   // Speed: ratio to CGAL in the same run, uniform and mesh-sampled.
   step("speed");
@@ -278,14 +283,22 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
   {
     std::ostringstream csv;
     csv << "peer,source,n,case,seed,lower_dimensional,verdict,defects,tets,seconds,wall_seconds,peak_rss_bytes,"
-           "message,shrunk_points,shrink_stopped_by,shrunk_verdict_fresh,corpus_file\n";
-    for (const PeerCase& c : all)
+           "message,shrunk_points,shrink_ended,shrink_passes,shrink_runs,shrink_seconds,hung_try_seconds,"
+           "shrunk_verdict_fresh,corpus_file\n";
+    for (const PeerCase& c : all) {
       csv << c.peer << "," << c.source << "," << c.n << "," << c.index << "," << c.seed << ","
           << (c.lower_dimensional ? 1 : 0) << "," << verdict_name(c.run.verdict) << ","
           << csv_escape(counts_field(c.run)) << "," << (c.run.report ? c.run.report->stats.tets : 0) << ","
           << c.run.seconds << "," << c.run.wall_seconds << "," << c.run.peak_rss_bytes << ","
-          << csv_escape(c.run.message) << "," << c.shrunk_points << "," << c.shrink_stop << ","
-          << (c.corpus_file.empty() ? "" : verdict_name(c.shrunk_verdict)) << "," << c.corpus_file << "\n";
+          << csv_escape(c.run.message) << ",";
+      if (c.corpus_file.empty()) {
+        csv << ",,,,,,,\n";
+        continue;
+      }
+      csv << c.shrunk_points << "," << shrink_ending(c) << "," << c.shrink_passes << "," << c.shrink_runs << ","
+          << c.shrink_seconds << "," << c.hung_try_seconds << "," << verdict_name(c.shrunk_verdict) << ","
+          << c.corpus_file << "\n";
+    }
     write_text_file((dir / "leaderboard.csv").string(), csv.str());
     std::ostringstream sp;
     sp << "peer,source,n,verdict,tets,seconds,wall_seconds,peak_rss_bytes\n";
@@ -367,42 +380,63 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
   o << "HEATMAP-TABLE\n\n";
   o << "## Smallest failing input per (peer, source)\n\n"
        "The first failing case of each (peer, source) at its smallest size (a hung case only when the pair has no "
-       "other failure), shrunk by delta debugging to a subset with the same verdict. Budget: at most "
-    << shrink_runs << " peer runs per pair, and " << fmt("%.0f", shrink_stage_s)
-    << " s of wall clock for the whole stage, shared among the pairs (" << options.jobs
-    << " at a time). Tries of gmsh, gmsh-hxt and scipy run in one served helper per pair (their start costs "
-       "more than a small run); `fresh` is the saved input judged again in a fresh process, as every counted "
-       "verdict is. `minimal`: 1-minimal; else what stopped the shrink (`runs` or `time` budget spent; `hung`: "
-       "saved unshrunk, as each try would cost the time limit). Reproduce with the command in the sidecar "
-       ".json, e.g. `dtlab oracle corpus/FILE.node --against PEER`.\n\n";
-  o << table_row({"peer", "source", "verdict", "points", "shrunk to", "minimal", "fresh", "file"})
-    << table_rule(8, 3);
+       "other failure), shrunk by delta debugging to a subset with the same verdict. Budget: "
+    << fmt("%.0f", shrink_stage_s) << " s of wall clock for the whole stage and at most " << shrink_runs
+    << " peer runs per pair and pass, " << options.jobs
+    << " pairs at a time. Pass one gives each pair, as it starts, the time left times the jobs over the pairs "
+       "left; each later pass gives the time left the same way to the pairs the pass before stopped by time or "
+       "runs, going on from their smallest failing input (passes: "
+    << shrunk_stage.pass_seconds.size() << ", of ";
+  for (std::size_t i = 0; i < shrunk_stage.pass_pairs.size(); ++i)
+    o << (i ? ", " : "") << shrunk_stage.pass_pairs[i] << (shrunk_stage.pass_pairs[i] == 1 ? " pair" : " pairs")
+      << " in " << fmt("%.1f", shrunk_stage.pass_seconds[i]) << " s";
+  o << "). A hang shrinks under a short limit per try (10x the slowest answered run of that peer on that source, "
+       "2 s at least, half the full limit at most; exceeding it counts as still hung), and its shrunk input is run "
+       "once more in a fresh process under the full "
+    << fmt("%g", po.timeout_s) << " s limit: when it does not hang there, the original input is saved ("
+    << fmt("%.0f", shrunk_stage.reserved_seconds) << " s of the stage kept for these runs, "
+    << fmt("%.1f", shrunk_stage.confirm_seconds)
+    << " s used). Tries of gmsh, gmsh-hxt and scipy run in served helpers (their start costs more than a small "
+       "run); `fresh` is the saved input judged again in a fresh process, as every counted verdict is. "
+       "`minimal`: 1-minimal; else what stopped the shrink (`runs` or `time` budget spent; `hung`: saved "
+       "unshrunk; `unconfirmed`: a hang's shrunk input that did not hang under the full limit, the original "
+       "saved). Reproduce with the command in the sidecar .json, e.g. `dtlab oracle corpus/FILE.node --against "
+       "PEER`.\n\n";
+  o << table_row({"peer", "source", "verdict", "points", "shrunk to", "minimal", "passes, runs, s", "fresh", "file"})
+    << table_rule(9, 3);
   std::size_t failing_cells = 0, shrunk = 0, saved = 0;
   std::map<std::string, std::size_t> stops;
+  std::vector<std::string> notes;
   for (const auto& [key, cell] : cells) {
     if (!cell.failing) continue;
     ++failing_cells;
     const PeerCase* c = cell.smallest;
     if (!c) {
-      o << table_row({"`" + key.first + "`", key.second, "-", "-", "-", "-", "-", "none saved"});
+      o << table_row({"`" + key.first + "`", key.second, "-", "-", "-", "-", "-", "-", "none saved"});
       continue;
     }
     ++saved;
     if (c->shrunk_minimal) ++shrunk;
     else ++stops[c->shrink_stop];
-    const std::string minimal = c->shrunk_minimal ? "yes"
-                                : c->shrink_stop == "hung"
-                                    ? "no: hung"
-                                    : "no: " + c->shrink_stop + " (" + std::to_string(c->shrink_runs) + " runs, " +
-                                          fmt("%.1f", c->shrink_seconds) + " s)";
+    std::string minimal = c->shrunk_minimal ? "yes" : "no: " + c->shrink_stop;
+    if (c->hung_try_seconds > 0) minimal += " (tries under " + fmt("%.1f", c->hung_try_seconds) + " s)";
+    if (!c->shrink_note.empty()) notes.push_back("`" + key.first + "` on " + key.second + ": " + c->shrink_note);
     o << table_row({"`" + key.first + "`", key.second, verdict_name(c->run.verdict), std::to_string(c->n),
-                    std::to_string(c->shrunk_points), minimal, verdict_name(c->shrunk_verdict),
-                    "`" + c->corpus_file + "`"});
+                    std::to_string(c->shrunk_points), minimal,
+                    std::to_string(c->shrink_passes) + ", " + std::to_string(c->shrink_runs) + ", " +
+                        fmt("%.1f", c->shrink_seconds),
+                    verdict_name(c->shrunk_verdict), "`" + c->corpus_file + "`"});
   }
   o << "\n" << failing_cells << " failing (peer, source) pairs, " << saved << " with an input saved, " << shrunk
     << " shrunk to 1-minimal";
-  for (const auto& [why, k] : stops) o << ", " << k << " stopped by " << (why == "hung" ? "a hang" : why + " budget");
+  for (const auto& [why, k] : stops)
+    o << ", " << k << " "
+      << (why == "hung"          ? "saved unshrunk as hung"
+          : why == "unconfirmed" ? "unconfirmed hangs"
+                                 : "stopped by " + why + " budget");
   o << ".\n";
+  for (const auto& n : notes) o << "\n- " << n;
+  if (!notes.empty()) o << "\n";
   o << "\n## Speed (ratio to CGAL in the same run)\n\n"
        "Seconds: the triangulation as the peer times it (TetGen: its whole process, file reading and writing "
        "included; scipy: the `Delaunay()` call). Peak MB: the peer process's peak resident memory (for scipy "
@@ -429,7 +463,8 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
     if (per_peer_seconds.contains(p))
       o << table_row({"&nbsp;&nbsp;`" + p + "`: its processes' wall seconds, summed",
                       fmt("%.1f", per_peer_seconds[p].get<double>())});
-  o << table_row({"shrinking (" + std::to_string(to_shrink.size()) + " pairs)",
+  o << table_row({"shrinking (" + std::to_string(to_shrink.size()) + " pairs, " +
+                      std::to_string(shrunk_stage.pass_seconds.size()) + " passes)",
                   fmt("%.1f", stage_seconds["shrinking"].get<double>())});
   o << table_row({"speed", fmt("%.1f", stage_seconds["speed"].get<double>())});
   o << "\n## Data\n\n`leaderboard.csv` (one row per case: peer, source, n, case, seed, verdict, defect counts, "
@@ -488,6 +523,7 @@ ExperimentResult run_leaderboard(const LeaderboardOptions& options) {
                 {"failing_cells", failing_cells},
                 {"shrunk_cells", shrunk},
                 {"saved_cells", saved},
+                {"shrink_stops", stops},
                 {"stage_seconds", stage_seconds},
                 {"robust_dtlab_failed", robust_failed},
                 {"quick", options.quick}};

@@ -24,8 +24,8 @@ struct LeaderboardOptions {
   std::vector<std::string> families;       // fuzz families; empty: all
   bool meshes = true;                      // CGAL demo mesh samples
   std::string cgal_data;                   // CGAL demo data.tar.gz; "": the libcgal-demo one
-  std::size_t shrink_runs = 0;             // peer runs per shrunk (peer, source); 0: 48 quick, 300 otherwise
-  double shrink_seconds = 0;               // the shrink stage's wall-clock budget; 0: 30 s quick, 300 otherwise
+  std::size_t shrink_runs = 0;             // peer runs per shrunk (peer, source) and pass; 0: 48 quick, 300 otherwise
+  double shrink_seconds = 0;               // the shrink stage's wall-clock budget; 0: 30 s quick, 600 otherwise
   std::size_t speed_n = 0;                 // one size for the speed table; 0: 10^4 quick, else 10^5 and 10^6
   bool progress = false;
   std::string command_line;

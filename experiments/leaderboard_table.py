@@ -2,11 +2,14 @@
 """The README's leaderboard table from a `dtlab experiment leaderboard` folder.
 
     python3 experiments/leaderboard_table.py DIR > table.md
+    python3 experiments/leaderboard_table.py --shrinks DIR   # how each pair's shrink ended
 
 One row per peer: cases, non-delaunay verdicts (share, Wilson 95% interval, which),
 and for each (source, n) of the speed table the peer's seconds with the ratio to CGAL
 in the same run; bytes per tet (peak RSS / tets) at the largest uniform size. Reads
-only DIR's leaderboard.csv, data/speed.csv and environment.json."""
+only DIR's leaderboard.csv, data/speed.csv and environment.json. --shrinks: instead,
+the failing (peer, source) pairs' shrinks counted by how they ended, and each pair
+that is not 1-minimal (leaderboard.csv's shrink columns)."""
 import csv
 import json
 import math
@@ -87,7 +90,24 @@ def main(folder):
         print("| " + " | ".join(row) + " |")
 
 
+def shrinks(folder):
+    rows = [r for r in csv.DictReader(open(os.path.join(folder, "leaderboard.csv"))) if r.get("corpus_file")]
+    ended = Counter(r["shrink_ended"] for r in rows)
+    print("%d pairs with an input saved: %s" % (len(rows), ", ".join("%s %d" % kv for kv in sorted(ended.items()))))
+    for r in rows:
+        if r["shrink_ended"] == "1-minimal":
+            continue
+        print("- %s on %s (%s, n = %s): %s, %s -> %s points, %s passes, %s runs, %.1f s%s, fresh %s" % (
+            r["peer"], r["source"], r["verdict"], r["n"], r["shrink_ended"], r["n"], r["shrunk_points"],
+            r["shrink_passes"], r["shrink_runs"], float(r["shrink_seconds"]),
+            ", tries under %s s" % r["hung_try_seconds"] if float(r["hung_try_seconds"] or 0) > 0 else "",
+            r["shrunk_verdict_fresh"]))
+
+
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
+    if len(sys.argv) == 3 and sys.argv[1] == "--shrinks":
+        shrinks(sys.argv[2])
+    elif len(sys.argv) == 2:
+        main(sys.argv[1])
+    else:
         sys.exit(__doc__)
-    main(sys.argv[1])

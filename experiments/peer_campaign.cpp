@@ -20,6 +20,7 @@
 #include "fuzz/shrink.hpp"
 #include "kernel/point_io.hpp"
 #include "oracle/peer_json.hpp"
+#include "experiments/report.hpp"
 #include "oracle/served_child.hpp"
 
 namespace dtlab::experiments {
@@ -44,82 +45,182 @@ bool peer_failed(Verdict v, bool lower_dimensional) {
 
 bool PeerCase::failed() const { return peer_failed(run.verdict, lower_dimensional); }
 
-void shrink_and_save(PeerCase& c, const std::vector<Point3>& points, const PeerOptions& options,
-                     ShrinkBudget budget, const std::string& out_dir, const std::string& original_command,
-                     ServedChildren* servers) {
-  using Clock = std::chrono::steady_clock;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+PeerRun without_mesh(PeerRun r) {
+  r.mesh.reset();
+  return r;
+}
+
+}  // namespace
+
+void shrink_pass(PeerCase& c, const std::vector<Point3>& original, const PeerOptions& options, ShrinkBudget budget,
+                 ServedChildren* servers) {
   const auto t0 = Clock::now();
   const Verdict target = c.run.verdict;
+  const bool hung = target == Verdict::hung;
+  if (c.shrunk_input.empty()) {  // the first pass: start from the original, judged in its counted run
+    c.shrunk_input = original;
+    c.shrunk_run = without_mesh(c.run);
+    c.shrink_position = {};
+  }
+  ++c.shrink_passes;
+  const std::vector<Point3> start = c.shrunk_input;
+  const auto finish = [&](fuzz::ShrinkResult s, bool out_of_time, PeerRun fresh, std::size_t runs) {
+    c.shrunk_input = std::move(s.points);
+    c.shrunk_points = c.shrunk_input.size();
+    c.shrink_position = s.position;
+    c.shrunk_minimal = s.minimal && !out_of_time;
+    c.shrink_stop = out_of_time ? "time" : s.minimal ? "" : "runs";
+    c.shrink_runs += runs;
+    c.shrink_tests += s.tests;
+    c.shrink_seconds += seconds_since(t0);
+    c.shrunk_run = without_mesh(std::move(fresh));
+    c.shrunk_verdict = c.shrunk_run.verdict;
+  };
+  if (hung && budget.hung_try_seconds <= 0) {
+    fuzz::ShrinkResult unshrunk;
+    unshrunk.points = start;
+    unshrunk.position = c.shrink_position;
+    finish(std::move(unshrunk), false, c.shrunk_run, 0);
+    c.shrink_stop = "hung";
+    return;
+  }
   ServedChildren own;
   PeerOptions tries = options;
   tries.servers = servers ? servers : &own;
-  tries.timeout_s = std::clamp(10 * c.run.wall_seconds, std::min(2.0, options.timeout_s), options.timeout_s);
-  PeerOptions fresh = options;
-  fresh.servers = nullptr;
+  tries.timeout_s = hung ? std::min(budget.hung_try_seconds, options.timeout_s)
+                         : std::clamp(10 * c.run.wall_seconds, std::min(2.0, options.timeout_s), options.timeout_s);
+  if (hung) c.hung_try_seconds = tries.timeout_s;
   // A failure on a 3D input must stay 3D (else any peer "fails" a flat subset by
   // refusing it); one on a flat input may shrink within flat inputs.
-  const bool flat = fuzz::is_lower_dimensional(points);
+  const bool flat = fuzz::is_lower_dimensional(original);
   bool out_of_time = false;
   std::size_t runs = 0;
-  const auto shrink_with = [&](const PeerOptions& run_options, std::size_t run_budget) {
+  const auto seconds_left = [&] { return budget.seconds > 0 ? budget.seconds - seconds_since(t0) : 1e300; };
+  const auto stop = [&] { return out_of_time = out_of_time || seconds_left() <= 0; };
+  const auto shrink_with = [&](const PeerOptions& run_options, std::size_t run_budget, fuzz::ShrinkPosition from) {
     const auto fails = [&](const std::vector<Point3>& candidate) {
       if (!flat && fuzz::is_lower_dimensional(candidate)) return false;
-      if (budget.seconds > 0 && std::chrono::duration<double>(Clock::now() - t0).count() > budget.seconds)
+      // Each try ends within the budget: one cut short by it tells nothing, and ends the pass.
+      const double left = seconds_left();
+      if (left <= 0) {
         out_of_time = true;
-      if (out_of_time) return false;  // the shrinker then ends without more runs
+        return false;
+      }
       ++runs;
-      return run_peer(c.peer, candidate, run_options).verdict == target;
+      PeerOptions o = run_options;
+      o.timeout_s = std::min(run_options.timeout_s, left);
+      const Verdict v = run_peer(c.peer, candidate, o).verdict;
+      if (v == Verdict::hung && o.timeout_s < run_options.timeout_s) {
+        out_of_time = true;
+        return false;
+      }
+      return v == target;  // for a hang: it exceeded the short limit
     };
-    return fuzz::shrink_points(points, fails, run_budget);
+    return fuzz::shrink_points(start, fails, run_budget, from, stop);
   };
-  const bool hung = target == Verdict::hung;
-  fuzz::ShrinkResult s = shrink_with(tries, hung ? 0 : budget.runs);
-  // A shrunk input judged once more in a fresh process (an unshrunk one already was).
-  // A served helper can carry state from one try to the next (gmsh's answers depend
-  // on its memory layout): when the fresh run disagrees, shrink again with fresh
-  // processes in what is left of the budget.
-  PeerRun again = s.points.size() == points.size() ? c.run : run_peer(c.peer, s.points, fresh);
-  std::size_t served_shrunk = 0;
-  if (again.verdict != target) {
-    served_shrunk = s.points.size();
-    out_of_time = false;
-    PeerOptions fresh_tries = tries;
-    fresh_tries.servers = nullptr;
-    s = shrink_with(fresh_tries, budget.runs > runs ? budget.runs - runs : 0);
-    again = s.points.size() == points.size() ? c.run : run_peer(c.peer, s.points, fresh);
+  fuzz::ShrinkResult s = shrink_with(tries, budget.runs, c.shrink_position);
+  if (hung || s.points.size() == start.size()) {  // a hang is confirmed once, after the last pass
+    finish(std::move(s), out_of_time, c.shrunk_run, runs);
+    return;
   }
-  c.shrunk_points = s.points.size();
-  c.shrunk_minimal = s.minimal && !out_of_time && !hung;
-  c.shrink_stop = hung ? "hung" : out_of_time ? "time" : s.minimal ? "" : "runs";
-  c.shrink_runs = runs;
-  c.shrunk_verdict = again.verdict;
+  // A shrunk input judged once more in a fresh process (under the tries' limit). A
+  // served helper can carry state from one try to the next (gmsh's answers depend on
+  // its memory layout): when the fresh run disagrees, shrink again with fresh
+  // processes in what is left of the budget.
+  PeerOptions fresh = tries;
+  fresh.servers = nullptr;
+  PeerRun again = run_peer(c.peer, s.points, fresh);
+  if (again.verdict != target) {
+    c.served_not_reproduced = s.points.size();
+    const std::size_t tests = s.tests;
+    out_of_time = false;
+    s = shrink_with(fresh, budget.runs > runs ? budget.runs - runs : 0, {});
+    s.tests += tests;
+    again = s.points.size() == start.size() ? c.shrunk_run : run_peer(c.peer, s.points, fresh);
+  }
+  finish(std::move(s), out_of_time, std::move(again), runs);
+}
+
+void confirm_hang(PeerCase& c, const std::vector<Point3>& original, const PeerOptions& options,
+                  double seconds_left) {
+  if (c.run.verdict != Verdict::hung || c.shrunk_input.size() >= original.size()) return;
+  const auto t0 = Clock::now();
+  const std::size_t shrunk = c.shrunk_input.size();
+  PeerOptions fresh = options;
+  fresh.servers = nullptr;
+  std::string why;
+  if (seconds_left < options.timeout_s) {
+    why = "no time left for a confirming run under the " + fmt("%g", options.timeout_s) + " s limit";
+  } else {
+    PeerRun r = run_peer(c.peer, c.shrunk_input, fresh);
+    ++c.shrink_runs;
+    if (r.verdict == Verdict::hung) {
+      c.shrunk_run = without_mesh(std::move(r));
+      c.shrunk_verdict = Verdict::hung;
+      c.shrink_seconds += seconds_since(t0);
+      return;
+    }
+    why = std::string("that input gave ") + verdict_name(r.verdict) + " after " + fmt("%.1f", r.wall_seconds) +
+          " s in a fresh process under the " + fmt("%g", options.timeout_s) + " s limit";
+  }
+  c.shrink_note = "shrunk to " + std::to_string(shrunk) + " points under a " + fmt("%.1f", c.hung_try_seconds) +
+                  " s limit per try, but " + why + "; the original input is saved";
+  c.shrunk_input = original;
+  c.shrunk_points = original.size();
+  c.shrunk_minimal = false;
+  c.shrink_stop = "unconfirmed";
+  c.shrunk_run = without_mesh(c.run);
+  c.shrunk_verdict = c.run.verdict;
+  c.shrink_seconds += seconds_since(t0);
+}
+
+void save_shrunk(PeerCase& c, std::size_t original_points, const std::string& out_dir,
+                 const std::string& original_command) {
   const fs::path dir = fs::path(out_dir) / "corpus";
   fs::create_directories(dir);
   std::string stem = c.peer + "-" + c.source + "-n" + std::to_string(c.n) + "-" + std::to_string(c.index);
   std::replace(stem.begin(), stem.end(), ':', '_');
-  write_node((dir / (stem + ".node")).string(), s.points);
+  write_node((dir / (stem + ".node")).string(), c.shrunk_input);
   c.corpus_file = "corpus/" + stem + ".node";
-  c.shrink_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   nlohmann::json j = {
       {"peer", c.peer},
       {"file", c.corpus_file},
       {"source", c.source},
       {"case", c.index},
       {"case_seed", c.seed},
-      {"points_original", c.n},
-      {"points", s.points.size()},
-      {"verdict", verdict_name(target)},
-      {"shrink_tests", s.tests},
-      {"shrink_runs", runs},
+      {"points_original", original_points},
+      {"points", c.shrunk_input.size()},
+      {"verdict", verdict_name(c.run.verdict)},
+      {"shrink_tests", c.shrink_tests},
+      {"shrink_runs", c.shrink_runs},
+      {"shrink_passes", c.shrink_passes},
       {"shrink_seconds", c.shrink_seconds},
       {"minimal", c.shrunk_minimal},
       {"shrink_stopped_by", c.shrink_stop},
-      {"served_shrink_not_reproduced", served_shrunk},  // points of a served shrink a fresh run disagreed with
-      {"shrunk_run", to_json(again)},
+      {"served_shrink_not_reproduced", c.served_not_reproduced},  // points of a served shrink a fresh run disagreed with
+      {"shrunk_run", to_json(c.shrunk_run)},
       {"command", "dtlab oracle " + c.corpus_file + " --against " + c.peer},
       {"original_command", original_command},
   };
+  if (c.hung_try_seconds > 0) j["hung_try_seconds"] = c.hung_try_seconds;  // the short limit of a hang's tries
+  if (!c.shrink_note.empty()) j["shrink_note"] = c.shrink_note;
   write_text_file((dir / (stem + ".json")).string(), j.dump(2) + "\n");
+}
+
+void shrink_and_save(PeerCase& c, const std::vector<Point3>& points, const PeerOptions& options,
+                     ShrinkBudget budget, const std::string& out_dir, const std::string& original_command,
+                     ServedChildren* servers) {
+  const auto t0 = Clock::now();
+  shrink_pass(c, points, options, budget, servers);
+  const double left = budget.seconds > 0 ? budget.seconds - seconds_since(t0) : options.timeout_s;
+  confirm_hang(c, points, options, left);
+  save_shrunk(c, points.size(), out_dir, original_command);
 }
 
 std::vector<PeerCase> run_peer_campaign(const PeerCampaignOptions& o) {

@@ -49,6 +49,39 @@ TEST_CASE("shrinking stops at its budget with a still-failing input", "[fuzz][sh
   CHECK(fails(r.points));
 }
 
+TEST_CASE("a stopped shrink resumes where it stopped and ends as one whole shrink", "[fuzz][shrink]") {
+  const auto pts = find_family("uniform")->generate(200, 4);
+  const Point3 a = pts[17], b = pts[150], c = pts[151];
+  const auto fails = [&](const std::vector<Point3>& v) {
+    return contains(v, a) && contains(v, b) && contains(v, c);
+  };
+  const ShrinkResult whole = shrink_points(pts, fails);
+  std::size_t calls = 0;
+  const auto counted = [&](const std::vector<Point3>& v) {
+    ++calls;
+    return fails(v);
+  };
+  const ShrinkResult first = shrink_points(pts, counted, 1000, {}, [&] { return calls >= 12; });
+  CHECK_FALSE(first.minimal);
+  CHECK(first.tests == 12);
+  CHECK(fails(first.points));
+  const ShrinkResult rest = shrink_points(first.points, fails, 1000, first.position);
+  CHECK(rest.minimal);
+  CHECK(rest.points == whole.points);
+  CHECK(first.tests + rest.tests <= whole.tests + 1);  // at most the try before the stop again
+
+  // Resumed in steps of 3 tries (fewer than one granularity's chunks), it still gets there.
+  ShrinkResult step;
+  step.points = pts;
+  std::size_t steps = 0;
+  do {
+    step = shrink_points(step.points, fails, 3, step.position);
+    ++steps;
+  } while (!step.minimal && steps < 1000);
+  CHECK(step.minimal);
+  CHECK(step.points == whole.points);
+}
+
 TEST_CASE("case seeds depend on seed, family and index only", "[fuzz][shrink]") {
   CHECK(case_seed(1, "uniform", 0) == case_seed(1, "uniform", 0));
   CHECK(case_seed(1, "uniform", 0) != case_seed(2, "uniform", 0));
