@@ -87,9 +87,11 @@ class HilbertGrid {
 std::uint64_t keyed(std::uint64_t key, std::uint32_t index) { return key << 32 | index; }
 
 // A cell of the grid holding many points (a tight cluster: the grid spans the whole
-// input) would leave them in random order. Such runs of equal keys are sorted again
-// along a curve on a grid over their own bounding box, recursively; each level adds
-// 10 bits of resolution, so 6 levels cover a double's 53. Identical points end it.
+// input) would leave them in input-index order, unrelated to where they lie. Such runs
+// of equal keys are sorted again along a curve on a grid over their own bounding box,
+// recursively; each level adds 10 bits of resolution (6 levels: 60 bits, enough for
+// a cluster of one scale; a run mixing scales is only ordered less finely). Identical
+// points end it.
 void refine_runs(std::vector<std::uint64_t>& keys, std::size_t begin, std::size_t end,
                  std::span<const Point3> points, int depth) {
   constexpr std::size_t kRun = 16;

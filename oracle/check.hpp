@@ -91,7 +91,9 @@ CheckReport check_tetrahedralization(const Tetrahedralization& t, const CheckOpt
 // renumbered in place by first appearance in the tets, which makes the checker's
 // memory accesses local (about a quarter less time at 5*10^6 points, oracle/README.md),
 // and the report is in the caller's numbering. Counts and stats are those of the
-// overload above; witnesses past `witnesses_per_kind` may be other ones.
+// overload above; only the order of the witnesses may differ (boundary
+// broken-adjacency ones follow vertex ids), so with `witnesses_per_kind` reached,
+// other ones of that kind may be listed.
 CheckReport check_tetrahedralization(Tetrahedralization&& t, const CheckOptions& options = {});
 
 }  // namespace dtlab

@@ -8,7 +8,8 @@
 //                coordinate differences (orient3d) or the largest lift (insphere)
 //                (cheapest; valid when those lie in a safe range)
 //   A: the naive determinant against a bound from its permanent
-//   integer: small integer coordinates: the naive determinant is exact
+//   integer: integer coordinates below 2^51 with small differences: the naive
+//            determinant is exact
 //   B: the exact determinant of the rounded differences (expansion arithmetic)
 //   C: B plus the first-order effect of the differences' roundoff tails
 //   D: the exact determinant (expansion arithmetic)
