@@ -103,15 +103,14 @@ void require_finite(const Tetrahedralization& t) {
 // read nearby points and ranks: the checker's loads become mostly sequential.
 std::vector<std::uint32_t> renumber_by_first_appearance(Tetrahedralization& t) {
   const std::size_t n = t.points.size();
-  std::vector<std::uint32_t> rank(n, kNone);
+  std::vector<std::uint32_t> rank = first_appearance(t.tets, n);
   std::uint32_t next = 0;
-  for (Tet& k : t.tets)
-    for (auto& v : k) {
-      if (rank[v] == kNone) rank[v] = next++;
-      v = rank[v];
-    }
+  for (auto r : rank)
+    if (r != kNone) ++next;
   for (auto& r : rank)
     if (r == kNone) r = next++;
+  for (Tet& k : t.tets)
+    for (auto& v : k) v = rank[v];
   std::vector<std::uint32_t> original(n);
   for (std::size_t i = 0; i < n; ++i) original[rank[i]] = static_cast<std::uint32_t>(i);
   // points[new] = old points[original[new]], in place: follow each cycle once.

@@ -145,8 +145,9 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     else if (s == 0)
       report.cospherical_pairs.emplace_back(t1, t2);
   };
+  const std::vector<std::uint32_t> rank = first_appearance(T, n);
   const FacetTable table =
-      opt.delaunay ? build_facet_table(T, n, delaunay) : build_facet_table(T, n);
+      opt.delaunay ? build_facet_table(T, rank, delaunay) : build_facet_table(T, rank);
   st.cospherical_facets = report.cospherical_pairs.size();
   st.interior_facets = table.interior;
   st.boundary_facets = table.boundary;
@@ -210,7 +211,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     }
   }
   // Euler characteristics.
-  st.edges = count_edges(T, n);
+  st.edges = count_edges(T, rank);
   const auto F = static_cast<std::int64_t>(st.interior_facets + st.boundary_facets);
   st.euler = static_cast<std::int64_t>(st.vertices) - static_cast<std::int64_t>(st.edges) + F -
              static_cast<std::int64_t>(T.size());

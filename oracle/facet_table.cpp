@@ -15,21 +15,8 @@ struct Entry {
 };
 constexpr std::uint32_t kOdd = 0x80000000u;
 
-// Vertices ranked by first appearance in the tets. Producers store tets in a spatially
-// coherent order (ours and CGAL's do), so consecutive tets have nearby ranks even
-// when the vertex ids are in random input order: bucketing by rank keeps the
-// counting sort's scattered writes and the point loads local.
-std::vector<std::uint32_t> first_appearance(std::span<const Tet> tets, std::size_t point_count) {
-  std::vector<std::uint32_t> rank(point_count, kNone);
-  std::uint32_t next = 0;
-  for (const Tet& k : tets)
-    for (auto v : k)
-      if (rank[v] == kNone) rank[v] = next++;
-  return rank;
-}
-
 // Sorts (x,y,z) by rank; returns the parity of the permutation (1 = odd).
-inline int sort3(std::array<std::uint32_t, 3>& v, const std::vector<std::uint32_t>& rank) {
+inline int sort3(std::array<std::uint32_t, 3>& v, std::span<const std::uint32_t> rank) {
   int parity = 0;
   std::array<std::uint32_t, 3> r = {rank[v[0]], rank[v[1]], rank[v[2]]};
   auto cs = [&](int i, int j) {
@@ -96,7 +83,7 @@ struct TwoLowest {
   std::uint32_t r0, r1;
   int slot0;
 };
-inline TwoLowest two_lowest(const Tet& k, const std::vector<std::uint32_t>& rank) {
+inline TwoLowest two_lowest(const Tet& k, std::span<const std::uint32_t> rank) {
   const std::uint32_t a = rank[k[0]], b = rank[k[1]], c = rank[k[2]], d = rank[k[3]];
   const std::uint32_t ab = std::min(a, b), AB = std::max(a, b), cd = std::min(c, d), CD = std::max(c, d);
   const bool left = ab < cd;
@@ -109,7 +96,7 @@ inline TwoLowest two_lowest(const Tet& k, const std::vector<std::uint32_t>& rank
 struct Ranked {
   std::array<std::uint32_t, 4> r;
 };
-inline Ranked ranked(const Tet& k, const std::vector<std::uint32_t>& rank) {
+inline Ranked ranked(const Tet& k, std::span<const std::uint32_t> rank) {
   Ranked out{{rank[k[0]], rank[k[1]], rank[k[2]], rank[k[3]]}};
   auto cs = [&](int i, int j) {
     if (out.r[i] > out.r[j]) std::swap(out.r[i], out.r[j]);
@@ -120,9 +107,23 @@ inline Ranked ranked(const Tet& k, const std::vector<std::uint32_t>& rank) {
 
 }  // namespace
 
-FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count, const FacetPairVisitor& on_pair) {
+// Producers store tets in a spatially coherent order (ours and CGAL's do), so
+// consecutive tets have nearby ranks even when the vertex ids are in random input
+// order: bucketing by rank keeps the counting sort's scattered writes and the point
+// loads local.
+std::vector<std::uint32_t> first_appearance(std::span<const Tet> tets, std::size_t point_count) {
+  std::vector<std::uint32_t> rank(point_count, kNone);
+  std::uint32_t next = 0;
+  for (const Tet& k : tets)
+    for (auto v : k)
+      if (rank[v] == kNone) rank[v] = next++;
+  return rank;
+}
+
+FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uint32_t> rank,
+                             const FacetPairVisitor& on_pair) {
   FacetTable out;
-  const std::vector<std::uint32_t> rank = first_appearance(tets, point_count);
+  const std::size_t point_count = rank.size();
   // Buckets by the facet's lowest-ranked vertex: the tet's lowest (the three facets
   // containing it) or, for the facet opposite it, the tet's second lowest.
   std::vector<std::uint32_t> count(point_count, 0);
@@ -202,10 +203,10 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
   return out;
 }
 
-std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count) {
+std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32_t> rank) {
   // An edge's lowest-ranked vertex is the tet's i-th lowest for 3 - i of its edges;
   // the edge is stored in that vertex's bucket as the other vertex's rank.
-  const std::vector<std::uint32_t> rank = first_appearance(tets, point_count);
+  const std::size_t point_count = rank.size();
   std::vector<std::uint32_t> count(point_count, 0);
   for (const Tet& k : tets) {
     const Ranked s = ranked(k, rank);

@@ -50,12 +50,16 @@ struct FacetPair {
 };
 using FacetPairVisitor = std::function<void(const FacetPair&)>;
 
-// Tets must have four distinct vertices below point_count, tets.size() < 2^30 and
-// point_count < 2^31.
-FacetTable build_facet_table(std::span<const Tet> tets, std::size_t point_count,
+// Vertices ranked by first appearance in the tets (kNone for a point in no tet): the
+// bucket order of the two functions below, and the checker's renumbering (check.cpp).
+std::vector<std::uint32_t> first_appearance(std::span<const Tet> tets, std::size_t point_count);
+
+// Tets must have four distinct vertices below rank.size(), tets.size() < 2^30 and
+// rank.size() < 2^31; rank = first_appearance(tets, point count).
+FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uint32_t> rank,
                              const FacetPairVisitor& on_pair = {});
 
-// Number of distinct edges of the tets.
-std::uint64_t count_edges(std::span<const Tet> tets, std::size_t point_count);
+// Number of distinct edges of the tets (rank as above).
+std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32_t> rank);
 
 }  // namespace dtlab
