@@ -3,29 +3,25 @@
 #include <cmath>
 #include <initializer_list>
 
+#include "predicates/error_bounds.hpp"
 #include "predicates/exact.hpp"
 
 namespace dtlab {
 namespace {
 
-constexpr double kEps = 0x1p-53;
-constexpr double kO3dBound = (7.0 + 56.0 * kEps) * kEps;
-constexpr double kInsBound = (16.0 + 224.0 * kEps) * kEps;
+// Shewchuk's stage-A bounds: the evaluation orders below are naive.hpp's.
+constexpr double kO3dBound = error_bounds::kO3dA;
+constexpr double kInsBound = error_bounds::kIspA;
 // Outside [kTiny, kHuge] intermediate products may underflow or overflow.
 constexpr double kTiny = 0x1p-900;
 constexpr double kHuge = 0x1p+900;
 
-// Shewchuk's bounds also assume that no product underflows: a product of a huge and
-// a subnormal difference can (the libFuzzer target found mixed 1e294 / 1e-317 inputs
-// with a wrong filtered sign). With every non-zero difference in [2^-140, 2^140],
-// every product of up to five of them lies in [2^-700, 2^700]: no underflow, no
-// overflow. Outside that range the exact code answers.
-constexpr double kDiffLow = 0x1p-140, kDiffHigh = 0x1p+140;
+// Shewchuk's bounds also assume that no product underflows: with every non-zero
+// difference in the safe range (predicates/error_bounds.hpp) none does; outside it
+// the exact code answers.
 bool in_safe_range(std::initializer_list<double> diffs) {
-  for (double v : diffs) {
-    const double m = std::fabs(v);
-    if (m != 0 && !(m >= kDiffLow && m <= kDiffHigh)) return false;
-  }
+  for (double v : diffs)
+    if (!error_bounds::in_safe_range(v)) return false;
   return true;
 }
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <initializer_list>
 
+#include "predicates/error_bounds.hpp"
+
 namespace dtlab {
 namespace {
 
@@ -61,24 +63,20 @@ struct Approx {
   bool trusted;
 };
 
-constexpr double kDiffLow = 0x1p-140, kDiffHigh = 0x1p+140;
-
 Approx approx_orient(const Point3& od, const Point3& x, const Point3& y, const Point3& qd) {
   const double ax = od.x - qd.x, ay = od.y - qd.y, az = od.z - qd.z;
   const double bx = x.x - qd.x, by = x.y - qd.y, bz = x.z - qd.z;
   const double cx = y.x - qd.x, cy = y.y - qd.y, cz = y.z - qd.z;
   bool trusted = true;
-  for (double d : {ax, ay, az, bx, by, bz, cx, cy, cz}) {
-    const double m = std::fabs(d);
-    if (m != 0 && !(m >= kDiffLow && m <= kDiffHigh)) trusted = false;
-  }
+  for (double d : {ax, ay, az, bx, by, bz, cx, cy, cz})
+    if (!error_bounds::in_safe_range(d)) trusted = false;
   for (double c : {od.x, od.y, od.z, qd.x, qd.y, qd.z})
-    if (!(std::fabs(c) <= kDiffHigh)) trusted = false;
+    if (!(std::fabs(c) <= error_bounds::kSafeHigh)) trusted = false;
   if (!trusted) return {0, 0, false};
   const double v = ax * (by * cz - bz * cy) + bx * (cy * az - cz * ay) + cx * (ay * bz - az * by);
   const double L = std::max({norm_inf(ax, ay, az), norm_inf(bx, by, bz), norm_inf(cx, cy, cz)});
   const double M = norm_inf(od.x, od.y, od.z) + norm_inf(qd.x, qd.y, qd.z) + L;
-  const double err = 64.0 * 0x1p-52 * (6.0 * L * L * L + 12.0 * M * L * L);
+  const double err = 64.0 * (2 * error_bounds::kEps) * (6.0 * L * L * L + 12.0 * M * L * L);
   return {v, err, true};
 }
 

@@ -15,45 +15,26 @@
 #include <initializer_list>
 #include <vector>
 
+#include "predicates/error_bounds.hpp"
 #include "predicates/exact.hpp"
 
 namespace dtlab {
 namespace {
 
-constexpr double kEps = 0x1p-53;
-constexpr double kSplitter = 0x1p27 + 1.0;  // splits a double into two 26-bit halves
+using error_bounds::kEps;
+using error_bounds::kSplitter;
 
 // ---------------------------------------------------------------------------
-// Error bounds.
-//
-// Stages A..D need every nonzero coordinate in [2^-140, 2^140]. Then every value
-// computed from a degree-k expression is a multiple of 2^(-192k) >= 2^-960 (normal:
-// no underflow, the (1+eps) error model and the error-free transformations hold) and
-// is at most ~2^712 in magnitude (no overflow, Dekker's split included).
-constexpr double kCoordLow = 0x1p-140, kCoordHigh = 0x1p140;
-
-// Stage A, B and the result bound are the paper's (same evaluation orders, same
-// counts): orient3d A: 7 roundings as above; insphere A: 16 (one spare: 15 suffice).
-// B: the exact determinant of the rounded differences differs from the true one
-// by the tails, ((1+eps)^k - 1) P for degree k (3 resp. 5), plus higher-order terms.
-constexpr double kO3dA = (7.0 + 56.0 * kEps) * kEps;
-constexpr double kO3dB = (3.0 + 28.0 * kEps) * kEps;
-constexpr double kIspA = (16.0 + 224.0 * kEps) * kEps;
-constexpr double kIspB = (5.0 + 72.0 * kEps) * kEps;
-// Relative error of approximating the B expansion by its floating-point sum and of
-// adding the correction term (paper, section 4.3).
-constexpr double kResult = (3.0 + 8.0 * kEps) * kEps;
-// Stage C adds the first-order terms: for a multilinear determinant these are the
-// determinants with one column replaced by its tails (and, for the lift column, by
-// 2(x t_x + y t_y + z t_z)). Neglected second order: (1+eps)^k - 1 - k eps
-// <= C(k,2) eps^2 (1+eps)^(k-2), i.e. 3 eps^2 P (orient3d) and 10 eps^2 P (insphere).
-// Rounding of the correction, whose permanent is <= k eps P: orient3d 5 roundings
-// in each of the three determinants plus 2 to add them: 7 * 3 eps^2 = 21 eps^2;
-// insphere 11 (with the lift) plus 3 to add the four: 14 * 5 eps^2 = 70 eps^2.
-// Totals 24 and 80 eps^2; the bounds below round these up and leave generous room
-// for third-order terms and the rounding of P itself.
-constexpr double kO3dC = (32.0 + 1024.0 * kEps) * kEps * kEps;
-constexpr double kIspC = (96.0 + 4096.0 * kEps) * kEps * kEps;
+// Error bounds: stages A..D need every nonzero coordinate in the safe range
+// [2^-140, 2^140]; the bounds of stages A, B, C and of the result are Shewchuk's
+// (same evaluation orders, same counts), derived in predicates/error_bounds.hpp.
+using error_bounds::kIspA;
+using error_bounds::kIspB;
+using error_bounds::kIspC;
+using error_bounds::kO3dA;
+using error_bounds::kO3dB;
+using error_bounds::kO3dC;
+using error_bounds::kResult;
 
 // ---------------------------------------------------------------------------
 // Error-free transformations (paper, section 2). Valid without overflow/underflow.
@@ -253,10 +234,7 @@ Expansion exact_diff(double a, double b) {
   return exp_of(x, two_diff_tail(a, b, x));
 }
 
-inline bool coord_ok(double v) {
-  const double m = std::fabs(v);
-  return v == 0 || (m >= kCoordLow && m <= kCoordHigh);
-}
+inline bool coord_ok(double v) { return error_bounds::in_safe_range(v); }
 bool coords_ok(std::initializer_list<const Point3*> pts) {
   for (const Point3* p : pts)
     if (!coord_ok(p->x) || !coord_ok(p->y) || !coord_ok(p->z)) return false;

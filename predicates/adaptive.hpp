@@ -23,6 +23,7 @@
 #include <string_view>
 
 #include "predicates/backend.hpp"
+#include "predicates/error_bounds.hpp"
 #include "predicates/naive.hpp"
 
 namespace dtlab {
@@ -52,7 +53,7 @@ int adaptive_insphere_stages(const Point3& a, const Point3& b, const Point3& c, 
 // removes roundings from the count below). Never compile with -ffast-math.
 namespace adaptive_detail {
 
-inline constexpr double kEps = 0x1p-53;  // unit roundoff of round-to-nearest
+using error_bounds::kEps;  // unit roundoff of round-to-nearest
 // Semi-static orient3d: det = adx*(bdy*cdz - bdz*cdy) + ... (naive.hpp's formula).
 // Along a monomial: 3 rounded differences, the minor's product and subtraction, the
 // outer product, two additions of which the last is free (rounding is monotone and 0

@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "families.hpp"
+#include "predicates/error_bounds.hpp"
 #include "predicates/naive.hpp"
 
 using namespace dtlab;
@@ -47,7 +48,7 @@ Quad128 orient128(const Quad& q) {
          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
-constexpr double kEps = 0x1p-53;
+constexpr double kEps = error_bounds::kEps;
 
 }  // namespace
 
