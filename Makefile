@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 # Lets ccache reuse objects between clones of the repository.
 export CCACHE_BASEDIR := $(CURDIR)
 
-.PHONY: all setup configure build demo test test-slow asan bench clean
+.PHONY: all setup configure build demo test test-slow asan tsan lint bench clean
 
 all: build
 
@@ -23,6 +23,12 @@ demo: build
 
 test: build
 	@ctest --test-dir $(BUILD) -LE slow -j $(JOBS) --output-on-failure
+	@LINT_REPORT=1 LINT_TIDY_MAX=6 BUILD=$(BUILD) bash scripts/lint
+
+# clang-format on the changed lines, clang-tidy (function size, bug checks) on the
+# changed files; exit 1 on a finding (scripts/lint says how the base is chosen).
+lint: build
+	@BUILD=$(BUILD) bash scripts/lint
 
 test-slow: build
 	@ctest --test-dir $(BUILD) -L slow -j $(JOBS) --output-on-failure

@@ -16,8 +16,8 @@
 
 namespace dtlab::error_bounds {
 
-inline constexpr double kEps = 0x1p-53;              // unit roundoff
-inline constexpr double kSplitter = 0x1p27 + 1.0;    // splits a double into two 26-bit halves
+inline constexpr double kEps = 0x1p-53;            // unit roundoff
+inline constexpr double kSplitter = 0x1p27 + 1.0;  // splits a double into two 26-bit halves
 
 // Stage A (and any filter with the same evaluation order): orient3d has 7 roundings
 // along a monomial, insphere 16 (one spare: 15 suffice). Stage B: the exact
