@@ -27,7 +27,7 @@ void KernelArgs::add_to(CLI::App& app, unsigned which) {
         ->check(CLI::IsMember({"input", "brio"}))
         ->capture_default_str();
   if (which & kSeedOption)
-    app.add_option("--seed", seed, "seed of the insertion order and of the walk")->capture_default_str();
+    app.add_option("--seed", seed, "seed of the insertion order and of the walk")->check(seed_value())->capture_default_str();
 }
 
 PredicateSpec KernelArgs::predicate_spec() const {

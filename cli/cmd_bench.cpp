@@ -101,7 +101,7 @@ void add_bench_command(CLI::App& app, int& rc) {
       ->delimiter(',')
       ->check(CLI::IsMember({"dtlab", "cgal", "tetgen", "dtlab-cgal-order"}))->capture_default_str();
   sub->add_option("--runs", args->runs, "runs per tool and size (median reported)")->transform(count_in(1, 1000))->capture_default_str();
-  sub->add_option("--points-seed", args->seed, "seed of the generated points")->capture_default_str();
+  sub->add_option("--points-seed", args->seed, "seed of the generated points")->check(seed_value())->capture_default_str();
   sub->add_option("--out", args->out, "also write the rows as JSON to this file")->type_name("FILE");
   sub->add_flag("--json", args->json, "print the rows as JSON instead of a table");
   sub->add_flag("--quiet", args->quiet, "no progress lines on stderr");

@@ -58,7 +58,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
   auto thesis_quiet = std::make_shared<bool>(false);
   t->add_option("--out", thesis->out, "report folder")->type_name("DIR")->capture_default_str();
   t->add_flag("--quick", thesis->quick, "fewer sizes and cases (seconds instead of minutes)");
-  t->add_option("--seed", thesis->seed, "experiment seed")->capture_default_str();
+  t->add_option("--seed", thesis->seed, "experiment seed")->check(seed_value())->capture_default_str();
   t->add_flag("--no-figures", *no_figures, "skip the matplotlib figures");
   auto thesis_json = std::make_shared<bool>(false);
   t->add_flag("--json", *thesis_json, "print a JSON summary (the report's headline facts) on stdout");
@@ -117,7 +117,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
       ->delimiter(',');
   l->add_option("--cases", board->cases, "seeds per (source, size) (0: 2 with --quick, 3 otherwise)")
       ->transform(count_in(0, 1e6));
-  l->add_option("--seed", board->seed, "experiment seed")->capture_default_str();
+  l->add_option("--seed", board->seed, "experiment seed")->check(seed_value())->capture_default_str();
   l->add_option("--jobs", board->jobs, "peer runs at a time")->transform(count_in(1, 1024))->capture_default_str();
   l->add_option("--timeout", board->timeout_s, "seconds per peer run (0: 10 with --quick, 30 otherwise)")
       ->check(number_in(0, 1e6));

@@ -127,7 +127,7 @@ void add_fracture_command(CLI::App& app, int& rc) {
       ->capture_default_str();
   sub->add_option("--sampler", args->sampler, "site sampler: rays | sdf | winding")->capture_default_str();
   sub->add_flag("--blue-noise", args->blue_noise, "blue-noise sites (weighted sample elimination)");
-  sub->add_option("--seed", args->seed, "random seed")->capture_default_str();
+  sub->add_option("--seed", args->seed, "random seed")->check(seed_value())->capture_default_str();
   sub->add_option("--gap,--margin", args->gap, "gap between neighbouring pieces (mesh units); --margin is the old spelling")
       ->check(number_in(0, 1e300))->capture_default_str();
   sub->add_option("--explode", args->explode, "exploded.obj: move pieces by this times their centroid offset")

@@ -1,5 +1,6 @@
 // `dtlab fuzz`: degeneracy fuzz campaigns (fuzz/campaign.hpp), corpus replay, and
 // the list of point-set families.
+#include <charconv>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -40,6 +41,7 @@ struct FuzzArgs {
   long long only_case = -1;
   std::uint64_t seed = 1;
   std::size_t min_points = 8, max_points = 64;
+  bool min_points_given = false;  // an explicit --min-points above --points is refused
   std::string predicates = "adaptive";
   std::string perturb = "sos";
   KernelArgs kernel;  // --eps, --eps-mode, --boundary, --order (the seed is set per case)
@@ -111,9 +113,29 @@ std::vector<fuzz::OracleHook> oracles_of(const std::string& names) {
   return hooks;
 }
 
+// --shard K/N: two integers in digits, 0 <= K < N < 2^32 (no wrap, no sign).
+std::pair<unsigned, unsigned> parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  unsigned k = 0, n = 0;
+  const auto whole = [](std::string_view s, unsigned& v) {
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return !s.empty() && ec == std::errc() && p == s.data() + s.size();
+  };
+  if (slash == std::string::npos || !whole(std::string_view(text).substr(0, slash), k) ||
+      !whole(std::string_view(text).substr(slash + 1), n) || n == 0 || k >= n)
+    usage_error("bad --shard '" + text + "' (K/N in digits with 0 <= K < N < 2^32)");
+  return {k, n};
+}
+
+void check_min_points(const FuzzArgs& a) {
+  if (a.min_points_given && a.min_points > a.max_points)
+    usage_error("--min-points " + std::to_string(a.min_points) + " is above --points " + std::to_string(a.max_points));
+}
+
 // `--target PEER`: the campaign judges the peer; its failures are shrunk into the corpus.
 int run_target(const FuzzArgs& a, const std::vector<std::string>& families) {
   if (!is_peer_name(a.target)) usage_error("unknown peer '" + a.target + "' (see dtlab oracle --help)");
+  check_min_points(a);
   experiments::PeerCampaignOptions o;
   o.peer = a.target;
   o.sources = experiments::fuzz_family_sources(families);
@@ -323,6 +345,7 @@ int run_fuzz(const FuzzArgs& a) {
     o.cases = std::max(o.cases, *o.only_case + 1);
   }
   if (a.max_points < 1) usage_error("--points must be at least 1");
+  check_min_points(a);
   o.max_points = a.max_points;
   o.min_points = std::min(a.min_points, a.max_points);
   o.seed = a.seed;
@@ -332,10 +355,7 @@ int run_fuzz(const FuzzArgs& a) {
   o.jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
   o.out_dir = a.out;
   if (!a.shard.empty()) {
-    unsigned k = 0, n = 0;
-    char tail = 0;
-    if (std::sscanf(a.shard.c_str(), "%u/%u%c", &k, &n, &tail) != 2 || n == 0 || k >= n)
-      usage_error("bad --shard '" + a.shard + "' (K/N with 0 <= K < N)");
+    const auto [k, n] = parse_shard(a.shard);
     o.shard = k;
     o.shards = n;
   }
@@ -361,9 +381,9 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   sub->add_option("--case", args->only_case, "run only this case index (reproduces one case)")
       ->transform(count_in(0, 1e15))
       ->default_str("all");
-  sub->add_option("--seed", args->seed, "campaign seed")->capture_default_str();
+  sub->add_option("--seed", args->seed, "campaign seed")->check(seed_value())->capture_default_str();
   sub->add_option("--points", args->max_points, "largest number of points per case")->transform(count_in(1, 1e7))->capture_default_str();
-  sub->add_option("--min-points", args->min_points, "smallest number of points per case")->transform(count_in(1, 1e7))->capture_default_str();
+  sub->add_option("--min-points", args->min_points, "smallest number of points per case")->transform(count_in(1, 1e7))->each([args](const std::string&) { args->min_points_given = true; })->capture_default_str();
   auto* pred = sub->add_option("--predicates", args->predicates, "comma list of naive, epsilon, adaptive, exact")
                    ->capture_default_str();
   sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();

@@ -110,7 +110,7 @@ void add_sample_command(CLI::App& app, int& rc) {
       ->check(CLI::IsMember({"surface", "rays", "sdf", "winding"}))
       ->capture_default_str();
   sub->add_option("--count", args->count, "number of points")->transform(count_in(1, 1 << 30))->capture_default_str();
-  sub->add_option("--seed", args->seed, "random seed")->capture_default_str();
+  sub->add_option("--seed", args->seed, "random seed")->check(seed_value())->capture_default_str();
   sub->add_flag("--blue-noise", args->blue_noise, "weighted sample elimination (Yuksel 2015) over the method");
   sub->add_option("--blue-noise-ratio", args->ratio, "candidates per kept point for --blue-noise")
       ->check(number_in(1, 100))

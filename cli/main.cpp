@@ -7,6 +7,7 @@
 #include "cli/command.hpp"
 #include "cli/commands.hpp"
 #include "dtlab/build_info.hpp"
+#include "kernel/exit_guard.hpp"
 
 namespace {
 
@@ -22,6 +23,8 @@ std::string version_text() {
 
 int main(int argc, char** argv) {
   using namespace dtlab::cli;
+  // Ctrl-C, SIGTERM, SIGHUP: peers killed, temp files removed, then the signal's status.
+  dtlab::install_interrupt_cleanup();
   CLI::App app{"dtlab: robust 3D Delaunay tetrahedralization testbed", "dtlab"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text, "print the version, git commit and library versions");

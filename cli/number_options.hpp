@@ -66,4 +66,21 @@ inline CLI::Validator count_in(double lo, double hi) {
       "INTEGER in [" + number_options_detail::fmt(lo) + ", " + number_options_detail::fmt(hi) + "]");
 }
 
+// A 64-bit seed: an integer in [0, 2^64-1] written in digits. "-1", "2^64" and "1e23"
+// are refused instead of wrapping to 2^64-1.
+inline CLI::Validator seed_value() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        const char* b = s.data() + (!s.empty() && s[0] == '+');
+        const char* e = s.data() + s.size();
+        unsigned long long v = 0;
+        auto [p, ec] = std::from_chars(b, e, v);
+        const std::string shown = s.size() <= 32 ? s : s.substr(0, 24) + "...";
+        if (b == e || ec != std::errc() || p != e)
+          return "'" + shown + "' is not a seed (an integer in [0, 18446744073709551615], in digits)";
+        return {};
+      },
+      "INTEGER in [0, 2^64-1]");
+}
+
 }  // namespace dtlab::cli

@@ -13,10 +13,12 @@
 #include "fuzz/work_queue.hpp"
 #include "dtlab/build_info.hpp"
 #include "fuzz/campaign_report.hpp"
+#include "fuzz/campaign_settings.hpp"
 #include "fuzz/case_seed.hpp"
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/record_json.hpp"
+#include "fuzz/results_log.hpp"
 #include "fuzz/shrink.hpp"
 #include "fuzz/summary.hpp"
 
@@ -94,6 +96,12 @@ std::string original_command(const CampaignOptions& o, const CaseRecord& r) {
 CampaignResult run_campaign(const CampaignOptions& o) {
   if (o.shards == 0 || o.shard >= o.shards) throw std::invalid_argument("bad shard");
   fs::create_directories(o.out_dir);
+  std::string results_name = "results.jsonl";
+  if (o.shards > 1)
+    results_name = "results.shard-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) + ".jsonl";
+  // Locked and repaired before anything is read: what is resumed is what this run owns.
+  ResultsLog out((fs::path(o.out_dir) / results_name).string());
+  check_resume_settings(o);
   CampaignResult result;
   result.records = read_records(o.out_dir);
   std::set<std::string> done;
@@ -122,11 +130,6 @@ CampaignResult run_campaign(const CampaignOptions& o) {
     }
   }
 
-  std::string results_name = "results.jsonl";
-  if (o.shards > 1)
-    results_name = "results.shard-" + std::to_string(o.shard) + "-of-" + std::to_string(o.shards) + ".jsonl";
-  std::ofstream out(fs::path(o.out_dir) / results_name, std::ios::app);
-  if (!out) throw std::runtime_error("cannot write " + (fs::path(o.out_dir) / results_name).string());
   write_campaign_environment(o);
 
   std::mutex lock;
@@ -172,13 +175,13 @@ CampaignResult run_campaign(const CampaignOptions& o) {
     }
 
     std::lock_guard<std::mutex> g(lock);
+    std::string lines;
+    for (const auto& r : local) lines += record_to_json(r).dump() + "\n";
+    out.append(lines);  // one write: a kill cuts at most the last line, repaired on resume
     for (auto& r : local) {
-      out << record_to_json(r).dump() << "\n";
       failing += !r.run.ok();
       result.records.push_back(std::move(r));
     }
-    out.flush();
-    if (!out) throw std::runtime_error("write failed: " + (fs::path(o.out_dir) / results_name).string());
     ++finished;
     ++result.ran;
     if (o.progress) o.progress(finished, work.size(), failing);

@@ -2,6 +2,7 @@
 // Line-oriented tokenizer shared by the text readers: skips blank lines and
 // '#' comments, parses numbers strictly, and reports errors as file:line.
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -20,23 +21,22 @@ class LineReader {
     if (!in_) throw InputError(path_, 0, "cannot open file");
   }
 
-  // Next non-empty, non-comment line split into tokens; false at end of file.
-  bool next(std::vector<std::string_view>& tokens) {
+  // Next non-empty, non-comment line split into tokens; false at end of file. A read
+  // error (the stream's bad state: an I/O error, or no memory for a huge line) is an
+  // error, never the end. A line of more than `max_tokens` fields is an error before
+  // it is split further; so is a line where ',' separates some fields and blanks
+  // others ("0,5 0,5 0,5": a decimal comma, not six numbers).
+  bool next(std::vector<std::string_view>& tokens, std::size_t max_tokens = SIZE_MAX) {
     while (std::getline(in_, line_)) {
       ++line_no_;
-      tokens.clear();
       std::string_view s(line_);
+      if (line_no_ == 1 && s.substr(0, 3) == "\xEF\xBB\xBF") s.remove_prefix(3);  // a UTF-8 byte order mark
       if (auto hash = s.find('#'); hash != std::string_view::npos) s = s.substr(0, hash);
-      std::size_t i = 0;
-      while (i < s.size()) {
-        while (i < s.size() && is_space(s[i])) ++i;
-        std::size_t j = i;
-        while (j < s.size() && !is_space(s[j])) ++j;
-        if (j > i) tokens.push_back(s.substr(i, j - i));
-        i = j;
-      }
+      split(s, tokens, max_tokens);
       if (!tokens.empty()) return true;
     }
+    if (in_.bad() || (in_.fail() && !in_.eof()))
+      throw InputError(path_, line_no_ + 1, "read error (an I/O error, or a line too long for the memory)");
     return false;
   }
 
@@ -71,6 +71,28 @@ class LineReader {
 
  private:
   static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == ','; }
+
+  void split(std::string_view s, std::vector<std::string_view>& tokens, std::size_t max_tokens) const {
+    tokens.clear();
+    bool comma_separated = false, blank_separated = false;
+    std::size_t i = 0;
+    while (i < s.size()) {
+      const std::size_t gap = i;
+      while (i < s.size() && is_space(s[i])) ++i;
+      if (i == s.size()) break;
+      if (!tokens.empty()) {
+        const bool comma = s.substr(gap, i - gap).find(',') != std::string_view::npos;
+        (comma ? comma_separated : blank_separated) = true;
+      }
+      std::size_t j = i;
+      while (j < s.size() && !is_space(s[j])) ++j;
+      if (tokens.size() == max_tokens) fail("more than " + std::to_string(max_tokens) + " fields on one line");
+      tokens.push_back(s.substr(i, j - i));
+      i = j;
+    }
+    if (comma_separated && blank_separated)
+      fail("',' separates some fields and blanks others (a decimal comma? write 0.5, not 0,5)");
+  }
   std::string path_;
   std::optional<std::uintmax_t> bytes_;
   std::ifstream in_;

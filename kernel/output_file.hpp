@@ -3,26 +3,45 @@
 // flag) and closing (the final flush, where a full disk shows). A failure is an
 // InputError naming the file ("out.node:0: write failed: No space left on device"),
 // so the command exits 2 instead of printing "wrote".
+// The write is atomic where the target is a regular file (or does not exist yet): the
+// text goes to PATH.part-PID-N beside it, renamed to PATH by close(). A failure, an
+// exception on the way or an interrupt (kernel/exit_guard.hpp) removes the part file,
+// so PATH is either the old file or the whole new one, never a cut one.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <string>
 
+#include "kernel/exit_guard.hpp"
 #include "kernel/input_error.hpp"
 
 namespace dtlab {
 
 class OutputFile {
  public:
-  explicit OutputFile(std::string path, const char* mode = "w")
-      : path_(std::move(path)), f_(std::fopen(path_.c_str(), mode)) {
-    if (!f_) throw InputError(path_, 0, std::string("cannot open file for writing: ") + std::strerror(errno));
+  explicit OutputFile(std::string path, const char* mode = "w") : path_(std::move(path)) {
+    if (mode[0] == 'w' && replaceable(path_)) {
+      static std::atomic<unsigned> counter{0};
+      part_ = path_ + ".part-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
+      guard_path(part_);
+    }
+    f_ = std::fopen(part_.empty() ? path_.c_str() : part_.c_str(), mode);
+    if (!f_) {
+      const int e = errno;
+      drop_part();
+      throw InputError(path_, 0, std::string("cannot open file for writing: ") + std::strerror(e));
+    }
   }
   OutputFile(const OutputFile&) = delete;
   OutputFile& operator=(const OutputFile&) = delete;
-  // Unclosed (an exception on the way): closed without a check.
+  // Unclosed (an exception on the way): closed without a check, the part file removed.
   ~OutputFile() {
     if (f_) std::fclose(f_);
+    drop_part();
   }
   std::FILE* get() const { return f_; }
   const std::string& path() const { return path_; }
@@ -36,15 +55,38 @@ class OutputFile {
     const bool flush_error = std::fflush(f) != 0;
     const int flush_errno = errno;
     const bool close_error = std::fclose(f) != 0;
-    if (write_error || flush_error || close_error) {
-      const int e = flush_errno ? flush_errno : errno;
+    int e = flush_errno ? flush_errno : errno;
+    const bool failed = write_error || flush_error || close_error;
+    if (!failed && !part_.empty()) {
+      if (std::rename(part_.c_str(), path_.c_str()) == 0) {
+        release_path(part_);
+        part_.clear();
+        return;
+      }
+      e = errno;
+    }
+    if (failed || !part_.empty()) {
+      drop_part();
       throw InputError(path_, 0, std::string("write failed: ") + (e ? std::strerror(e) : "I/O error"));
     }
   }
 
  private:
+  // A device, a FIFO or /dev/stdout is written in place.
+  static bool replaceable(const std::string& path) {
+    struct stat st {};
+    return stat(path.c_str(), &st) != 0 ? errno == ENOENT : S_ISREG(st.st_mode);
+  }
+  void drop_part() {
+    if (part_.empty()) return;
+    std::remove(part_.c_str());
+    release_path(part_);
+    part_.clear();
+  }
+
   std::string path_;
-  std::FILE* f_;
+  std::string part_;  // "": written in place
+  std::FILE* f_ = nullptr;
 };
 
 // Writes `text` to `path` as a whole, checked.

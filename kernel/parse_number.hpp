@@ -8,11 +8,20 @@
 
 namespace dtlab {
 
-// The token as quoted in a message: at most 32 characters.
+// The token as quoted in a message: at most 32 characters, bytes that would not show
+// (a byte order mark, a control character) written as \xNN.
 inline std::string quote_token(std::string_view tok) {
   // Built by append: GCC 12's -Wrestrict misfires on chains of operator+ here.
   std::string out(1, '\'');
-  out.append(tok.substr(0, tok.size() <= 32 ? tok.size() : 24));
+  for (const char c : tok.substr(0, tok.size() <= 32 ? tok.size() : 24)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f) {
+      out.push_back(c);
+    } else {
+      const char* hex = "0123456789ABCDEF";
+      out.append("\\x").append(1, hex[u >> 4]).append(1, hex[u & 15]);
+    }
+  }
   if (tok.size() <= 32) return out.append(1, '\'');
   return out.append("...' (").append(std::to_string(tok.size())).append(" characters)");
 }

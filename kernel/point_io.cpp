@@ -1,6 +1,7 @@
 #include "kernel/point_io.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <memory>
 
@@ -11,16 +12,24 @@ namespace dtlab {
 
 namespace {
 
-bool ends_with(const std::string& s, std::string_view suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+// The extension in lower case, with its dot ("" when the name has none).
+std::string extension_of(const std::string& path) {
+  const auto dot = path.find_last_of("./");
+  std::string ext = dot == std::string::npos || path[dot] == '/' ? "" : path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
 }
+
+// x y z and at most this many more numeric columns (normals, colours, weights).
+constexpr std::size_t kMaxXyzFields = 256;
 
 }  // namespace
 
 PointFile read_points(const std::string& path) {
-  if (ends_with(path, ".node")) return read_node(path);
-  if (ends_with(path, ".xyz") || ends_with(path, ".txt")) return read_xyz(path);
-  throw InputError(path, 0, "unknown point file extension (expected .node or .xyz)");
+  const std::string ext = extension_of(path);
+  if (ext == ".node") return read_node(path);
+  if (ext == ".xyz" || ext == ".txt" || ext == ".pwn") return read_xyz(path);
+  throw InputError(path, 0, "unknown point file extension (expected .node, .xyz, .pwn or .txt)");
 }
 
 PointFile read_node(const std::string& path) {
@@ -28,18 +37,19 @@ PointFile read_node(const std::string& path) {
   std::vector<std::string_view> tok;
   if (!r.next(tok)) r.fail("empty .node file: missing header");
   if (tok.size() < 1 || tok.size() > 4) r.fail("header must be: <#points> [dim] [#attributes] [#markers]");
-  const long n = r.to_count(tok[0], 4, "point");
   const long dim = tok.size() > 1 ? r.to_long(tok[1]) : 3;
+  if (dim != 3) r.fail("dimension must be 3, got " + std::to_string(dim));
+  const long n = r.to_count(tok[0], 4, "point");
   const long attrs = tok.size() > 2 ? r.to_long(tok[2]) : 0;
   const long markers = tok.size() > 3 ? r.to_long(tok[3]) : 0;
-  if (dim != 3) r.fail("dimension must be 3, got " + std::to_string(dim));
   if (attrs < 0 || markers < 0 || markers > 1) r.fail("bad attribute or marker count");
   if (attrs > kMaxAttributes) r.fail("attribute count too large: " + std::to_string(attrs));
   PointFile out;
   out.points.reserve(std::min(static_cast<std::size_t>(n), kMaxReserve));
   const std::size_t want = 4 + static_cast<std::size_t>(attrs + markers);
   for (long i = 0; i < n; ++i) {
-    if (!r.next(tok)) r.fail("expected " + std::to_string(n) + " points, file ends after " + std::to_string(i));
+    if (!r.next(tok, want + 16))
+      r.fail("expected " + std::to_string(n) + " points, file ends after " + std::to_string(i));
     if (tok.size() != want)
       r.fail("expected " + std::to_string(want) + " fields, got " + std::to_string(tok.size()));
     const long index = r.to_long(tok[0]);
@@ -60,9 +70,19 @@ PointFile read_xyz(const std::string& path) {
   LineReader r(path);
   std::vector<std::string_view> tok;
   PointFile out;
-  while (r.next(tok)) {
+  std::size_t fields = 0;  // set by the first line: every line has as many
+  long first_line = 0;
+  while (r.next(tok, kMaxXyzFields)) {
     if (tok.size() < 3) r.fail("expected 'x y z', got " + std::to_string(tok.size()) + " field(s)");
+    if (fields == 0) {
+      fields = tok.size();
+      first_line = r.line();
+    } else if (tok.size() != fields) {
+      r.fail("expected " + std::to_string(fields) + " fields as on line " + std::to_string(first_line) + ", got " +
+             std::to_string(tok.size()));
+    }
     out.points.push_back({r.to_double(tok[0]), r.to_double(tok[1]), r.to_double(tok[2])});
+    for (std::size_t k = 3; k < tok.size(); ++k) r.to_double(tok[k]);  // attributes: numbers too, not read
   }
   return out;
 }

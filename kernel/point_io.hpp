@@ -14,7 +14,10 @@ struct PointFile {
   int first_index = 0;  // .node numbering base (0 or 1); 0 for .xyz
 };
 
-// Dispatches on the extension: .node or .xyz (anything else is an InputError).
+// Dispatches on the extension, in any case: .node, or .xyz / .pwn / .txt (anything
+// else is an InputError). An .xyz line is x y z, then optionally numeric attributes
+// (CGAL's .xyz and .pwn carry normals: x y z nx ny nz), as many on every line; only
+// x y z are read, the attributes are checked to be numbers.
 PointFile read_points(const std::string& path);
 PointFile read_node(const std::string& path);
 PointFile read_xyz(const std::string& path);

@@ -128,7 +128,8 @@ class PlainEleReader {
 }  // namespace
 
 std::vector<Tet> read_ele(const std::string& path, int first_index, std::size_t point_count) {
-  if (first_index >= 0)
+  // Only a regular file is read twice: a FIFO's content is gone after the first try.
+  if (first_index >= 0 && input_file_size(path))
     if (auto fast = PlainEleReader(path, first_index, point_count).read()) return std::move(*fast);
   LineReader r(path);
   std::vector<std::string_view> tok;
@@ -143,7 +144,8 @@ std::vector<Tet> read_ele(const std::string& path, int first_index, std::size_t 
   std::vector<Tet> tets;
   tets.reserve(std::min(static_cast<std::size_t>(n), kMaxReserve));
   for (long i = 0; i < n; ++i) {
-    if (!r.next(tok)) r.fail("expected " + std::to_string(n) + " tetrahedra, file ends after " + std::to_string(i));
+    if (!r.next(tok, static_cast<std::size_t>(5 + attrs) + 16))
+      r.fail("expected " + std::to_string(n) + " tetrahedra, file ends after " + std::to_string(i));
     if (tok.size() != static_cast<std::size_t>(5 + attrs))
       r.fail("expected " + std::to_string(5 + attrs) + " fields, got " + std::to_string(tok.size()));
     Tet k{};

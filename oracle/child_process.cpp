@@ -16,10 +16,15 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <atomic>
 #include <thread>
+
+#include "kernel/exit_guard.hpp"
 
 namespace dtlab {
 namespace {
+
+std::atomic<bool (*)()> g_interrupt_check{nullptr};
 
 // Everything the child does between fork and exec must be async-signal-safe: the
 // argument vector and the paths are prepared before the fork. Every descriptor of
@@ -28,6 +33,10 @@ namespace {
 [[noreturn]] void exec_child(char* const* argv, const char* log, std::uint64_t memory, int stdin_fd, int reply_fd,
                              int error_fd) {
   setpgid(0, 0);
+  guard_own_group_in_child();
+  sigset_t none;
+  sigemptyset(&none);
+  sigprocmask(SIG_SETMASK, &none, nullptr);
   const int fd = open(log ? log : "/dev/null", O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd >= 0) {
     dup2(fd, 1);
@@ -53,7 +62,20 @@ namespace {
   _exit(127);
 }
 
+// After the last wait for a child: an interrupt of dtlab (its handler is ending the
+// process) made that child die, so its end is no answer to report.
+void hold_if_interrupted() {
+  if (interrupt_received()) wait_for_interrupt_exit();
+}
+
 }  // namespace
+
+void set_interrupt_check(bool (*check)()) { g_interrupt_check = check; }
+
+bool interrupt_requested() {
+  bool (*check)() = g_interrupt_check.load();
+  return check && check();
+}
 
 std::uint64_t vm_hwm_bytes(int pid) {
   char path[64];
@@ -80,6 +102,7 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   argv.push_back(nullptr);
   int pipe_fd[2];
   if (pipe2(pipe_fd, O_CLOEXEC) != 0) throw std::runtime_error("run_child: pipe failed");
+  prepare_exit_guard();
   const pid_t pid = fork();
   if (pid < 0) {
     close(pipe_fd[0]);
@@ -101,6 +124,7 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   if (got == static_cast<ssize_t>(sizeof exec_errno)) {
     int status = 0;
     waitpid(pid, &status, 0);
+    release_group(pid);
     message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);
     return -1;
   }
@@ -126,8 +150,15 @@ ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& l
     if (w == pid) break;
     if (w < 0 && errno != EINTR) {
       kill(-pid, SIGKILL);
+      release_group(pid);
       r.message = "wait failed";
       return r;
+    }
+    if (interrupt_requested()) {
+      kill(-pid, SIGKILL);
+      wait4(pid, &status, 0, &usage);
+      release_group(pid);
+      throw ChildInterrupted();
     }
     if (r.seconds > limits.timeout_s) {
       kill(-pid, SIGKILL);
@@ -139,6 +170,8 @@ ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& l
   }
   // The group may hold grandchildren that outlived their parent.
   kill(-pid, SIGKILL);
+  release_group(pid);
+  hold_if_interrupted();
   if (timed_out) {
     r.status = ChildStatus::timed_out;
   } else if (WIFSIGNALED(status)) {

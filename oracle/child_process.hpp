@@ -4,6 +4,7 @@
 // allocation of the program can take the caller down. On time-out the whole
 // process group is killed (a shell or python wrapper takes its children along).
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,6 +53,19 @@ ChildResult run_child(const std::vector<std::string>& argv, const ChildLimits& l
 // did not start. The caller waits for it.
 int spawn_child(const std::vector<std::string>& argv, const ChildLimits& limits, int stdin_fd, int reply_fd,
                 std::string& message);
+
+// Interrupts. Every child's process group is listed with the exit watchdog
+// (kernel/exit_guard.hpp) from before its exec until it is reaped, so no child outlives
+// dtlab, even a dtlab killed with SIGKILL. A host that handles Ctrl-C itself (the
+// Python module) sets a check, polled while a child runs (at least every 0.1 s): when
+// it returns true the child's group is killed and run_child and ServedChild::ask throw
+// ChildInterrupted. nullptr: no check.
+struct ChildInterrupted : std::runtime_error {
+  ChildInterrupted() : std::runtime_error("interrupted") {}
+};
+void set_interrupt_check(bool (*check)());
+// The check's answer now (false without one).
+bool interrupt_requested();
 
 // The peak resident memory of the program process `pid` now runs (VmHWM, from /proc),
 // 0 when it cannot be read. rusage's ru_maxrss cannot serve: it includes the parent's

@@ -1,5 +1,7 @@
 #include "oracle/served_child.hpp"
 
+#include "kernel/exit_guard.hpp"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -87,6 +89,7 @@ void ServedChild::stop(int* status) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   kill(-pid_, SIGKILL);  // grandchildren
+  release_group(pid_);
   pid_ = -1;
   if (status) *status = s;
 }
@@ -108,6 +111,11 @@ ChildResult ServedChild::ask(const std::string& request, double timeout_s, std::
       r.seconds = since(t0);
       return r;
     }
+    if (interrupt_requested()) {
+      kill(-pid_, SIGKILL);
+      stop();
+      throw ChildInterrupted();
+    }
     pollfd p{from_, POLLIN, 0};
     const int ready = poll(&p, 1, static_cast<int>(std::min(left * 1000, 100.0)) + 1);
     if (ready < 0 && errno != EINTR) alive = false;
@@ -122,6 +130,7 @@ ChildResult ServedChild::ask(const std::string& request, double timeout_s, std::
   if (!alive) {
     int status = 0;
     stop(&status);
+    if (interrupt_received()) wait_for_interrupt_exit();
     if (WIFSIGNALED(status)) {
       r.status = ChildStatus::signaled;
       r.signal = WTERMSIG(status);

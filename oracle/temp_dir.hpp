@@ -1,6 +1,7 @@
 #pragma once
 // A fresh temporary directory ($TMPDIR or /tmp), removed with its contents when
-// this object goes away.
+// this object goes away, or by the exit watchdog when the process is interrupted or
+// killed first (kernel/exit_guard.hpp).
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -9,6 +10,8 @@
 #include <vector>
 
 #include <unistd.h>
+
+#include "kernel/exit_guard.hpp"
 
 namespace dtlab {
 
@@ -21,10 +24,12 @@ class TempDir {
     buf.push_back('\0');
     if (mkdtemp(buf.data()) == nullptr) throw std::runtime_error("cannot create a temporary directory in " + tmpl);
     path_ = buf.data();
+    guard_path(path_.string());
   }
   ~TempDir() {
     std::error_code ec;
     std::filesystem::remove_all(path_, ec);
+    release_path(path_.string());
   }
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;

@@ -32,6 +32,7 @@ TriangleMesh read_off(const std::string& path) {
     if (!r.next(tok)) r.fail("file ends after " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
     if (tok.size() < 3) r.fail("vertex needs 3 coordinates, got " + std::to_string(tok.size()));
     mesh.vertices.push_back({r.to_double(tok[0]), r.to_double(tok[1]), r.to_double(tok[2])});
+    for (std::size_t j = 3; j < tok.size(); ++j) r.to_double(tok[j]);  // colour, normal: numbers too
   }
   mesh.triangles.reserve(std::min(static_cast<std::size_t>(nf), kMaxReserve));
   std::vector<long> poly;
@@ -42,9 +43,13 @@ TriangleMesh read_off(const std::string& path) {
     if (k > static_cast<long>(tok.size()) - 1)  // not k + 1: k may be LONG_MAX
       r.fail("face announces " + std::to_string(k) + " corners, lists " + std::to_string(tok.size() - 1));
     poly.clear();
-    for (long j = 1; j <= k; ++j) poly.push_back(r.to_long(tok[j]));  // extra tokens: colour
+    for (long j = 1; j <= k; ++j) poly.push_back(r.to_long(tok[j]));
+    for (std::size_t j = static_cast<std::size_t>(k) + 1; j < tok.size(); ++j) r.to_double(tok[j]);  // colour
     detail::add_polygon(mesh, poly, path, r.line());
   }
+  if (r.next(tok))
+    r.fail("unexpected data after the last face (the header says " + std::to_string(nv) + " vertices, " +
+           std::to_string(nf) + " faces)");
   return mesh;
 }
 
@@ -55,8 +60,11 @@ TriangleMesh read_obj(const std::string& path) {
   std::vector<long> poly;
   while (r.next(tok)) {
     if (tok[0] == "v") {
+      // v x y z, optionally w or r g b (a colour): the extra fields must be numbers.
       if (tok.size() < 4) r.fail("vertex needs 3 coordinates");
+      if (tok.size() > 8) r.fail("vertex with " + std::to_string(tok.size() - 1) + " fields (x y z [w] [r g b])");
       mesh.vertices.push_back({r.to_double(tok[1]), r.to_double(tok[2]), r.to_double(tok[3])});
+      for (std::size_t j = 4; j < tok.size(); ++j) r.to_double(tok[j]);
     } else if (tok[0] == "f") {
       poly.clear();
       for (std::size_t j = 1; j < tok.size(); ++j) {
@@ -64,6 +72,9 @@ TriangleMesh read_obj(const std::string& path) {
         std::string_view s = tok[j].substr(0, tok[j].find('/'));
         const long i = r.to_long(s);
         if (i == 0) r.fail("OBJ indices start at 1, got 0");
+        const long nv = static_cast<long>(mesh.vertices.size());
+        if (i > nv || i < -nv)  // named as written (1-based, or counted back)
+          r.fail("vertex index " + std::string(s) + " out of range (" + std::to_string(nv) + " vertices so far)");
         // Negative indices count back from the last vertex read so far.
         poly.push_back(i > 0 ? i - 1 : static_cast<long>(mesh.vertices.size()) + i);
       }

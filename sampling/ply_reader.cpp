@@ -114,6 +114,21 @@ class PlyData {
   bool binary_, big_;
 };
 
+// After the last element: blanks only (ASCII), or nothing but a final newline (binary).
+void reject_trailing_data(detail::ByteSource& src, bool binary) {
+  if (!binary) {
+    std::string_view tok;
+    if (src.next_token(tok))
+      throw InputError(src.path(), src.token_line(),
+                       "unexpected data after the last element (the header's counts are read): " + quote_token(tok));
+    return;
+  }
+  const std::string_view rest = std::string_view(src.data()).substr(std::min(src.pos(), src.size()));
+  if (rest.find_first_not_of(" \t\r\n") != std::string_view::npos)
+    throw InputError(src.path(), 0,
+                     std::to_string(rest.size()) + " bytes after the last element (the header's counts are read)");
+}
+
 }  // namespace
 
 TriangleMesh read_ply(const std::string& path) {
@@ -201,6 +216,8 @@ TriangleMesh read_ply(const std::string& path) {
           if (is_face && k == ilist) poly.clear();
           for (long j = 0; j < static_cast<long>(n); ++j) {
             const double v = in.read(prop.type);
+            if (is_face && k == ilist && v != std::trunc(v))
+              throw InputError(path, in.line(), "face index is not an integer: " + std::to_string(v));
             // An index no mesh could have becomes -1, reported as out of range below.
             if (is_face && k == ilist) poly.push_back(v >= 0 && v < 4e9 ? static_cast<long>(v) : -1);
           }
@@ -219,6 +236,7 @@ TriangleMesh read_ply(const std::string& path) {
       }
     }
   }
+  reject_trailing_data(src, binary);
   return mesh;
 }
 

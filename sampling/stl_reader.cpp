@@ -54,6 +54,9 @@ TriangleMesh read_stl_binary(detail::ByteSource& src) {
     float f[12];
     for (float& x : f) src.read_raw(&x, 4, false, "triangle");
     src.skip(2);  // attribute byte count
+    // The normal is not used, but a NaN there is refused as in an ASCII STL.
+    if (!std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2]))
+      throw InputError(src.path(), 0, "non-finite normal in triangle " + std::to_string(t));
     std::array<std::uint32_t, 3> tri{};
     for (int k = 0; k < 3; ++k) {
       const Point3 p{f[3 + 3 * k], f[4 + 3 * k], f[5 + 3 * k]};
@@ -81,12 +84,21 @@ TriangleMesh read_stl_ascii(detail::ByteSource& src) {
     return src.parse_double(tok, src.token_line());
   };
   expect("solid");
-  // The solid's name runs to the end of the first line.
+  // The solid's name runs to the end of its line; so does endsolid's. A file may hold
+  // several solids one after the other: all are read.
   std::string_view rest;
   src.next_line(rest);
   for (;;) {
     if (!src.next_token(tok)) throw InputError(src.path(), src.line() + 1, "file ends without 'endsolid'");
-    if (tok == "endsolid") break;
+    if (tok == "endsolid") {
+      src.next_line(rest);
+      if (!src.next_token(tok)) break;
+      if (tok != "solid")
+        throw InputError(src.path(), src.token_line(), "expected 'solid' or the end after 'endsolid', got " +
+                                                           quote_token(tok));
+      src.next_line(rest);
+      continue;
+    }
     if (tok != "facet")
       throw InputError(src.path(), src.token_line(), "expected 'facet' or 'endsolid', got '" + std::string(tok) + "'");
     expect("normal");
@@ -115,7 +127,8 @@ TriangleMesh read_stl(const std::string& path) {
   if (!binary && src.size() >= 84) {
     std::uint32_t n;
     std::memcpy(&n, src.data().data() + 80, 4);
-    binary = src.size() == 84 + 50ull * n;
+    // A NUL byte is no text: a binary file with a wrong count, reported as one.
+    binary = src.size() == 84 + 50ull * n || src.data().find('\0') != std::string::npos;
   }
   if (binary) {
     if (src.size() < 84) throw InputError(path, 0, "binary STL shorter than its 84-byte header");

@@ -3,6 +3,7 @@
 // exit code.
 #include <stdexcept>
 
+#include "oracle/child_process.hpp"
 #include "oracle/oracle_session.hpp"
 #include "oracle/report_json.hpp"
 #include <pybind11/stl.h>
@@ -16,6 +17,18 @@ namespace py = pybind11;
 
 namespace dtlab::python {
 namespace {
+
+// Polled while a peer runs: Python's own Ctrl-C handling (KeyboardInterrupt) answers
+// within the runner's poll interval instead of after the peer's timeout.
+bool python_signal_pending() {
+  py::gil_scoped_acquire gil;
+  return PyErr_CheckSignals() != 0;
+}
+
+struct InterruptCheck {
+  InterruptCheck() { set_interrupt_check(&python_signal_pending); }
+  ~InterruptCheck() { set_interrupt_check(nullptr); }
+};
 
 py::dict oracle(py::handle points, const std::vector<std::string>& against, const std::string& predicates,
                 const std::string& perturb, const std::string& boundary, const std::string& order,
@@ -40,15 +53,20 @@ py::dict oracle(py::handle points, const std::vector<std::string>& against, cons
   o.peers.memory_bytes = static_cast<std::uint64_t>(memory_mb * 1e6);
   o.peers.tetgen = tetgen;
   OracleSession s;
+  bool interrupted = false;
   {
+    const InterruptCheck check;
     py::gil_scoped_release nogil;
     try {
       s = run_oracle_session(pts, o);
+    } catch (const ChildInterrupted&) {
+      interrupted = true;  // the KeyboardInterrupt is pending, raised below
     } catch (const std::invalid_argument& e) {
       py::gil_scoped_acquire gil;
       throw py::value_error(e.what());
     }
   }
+  if (interrupted) throw py::error_already_set();
   py::dict out(json_to_python(to_json(s)));
   out["dtlab_tets"] = to_numpy<std::uint32_t, 4>(std::vector<Tet>(s.built.mesh.tets));
   py::dict tets, checks;

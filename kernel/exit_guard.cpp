@@ -1,0 +1,201 @@
+#include "kernel/exit_guard.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace dtlab {
+namespace {
+
+// One record per datagram (SOCK_SEQPACKET keeps them whole, and a send from several
+// threads or a forked child never interleaves): '+' or '-', 'G' or 'P', the payload.
+std::mutex g_lock;
+std::atomic<int> g_socket{-1};
+pid_t g_watchdog = -1;
+std::atomic<bool> g_interrupted{false};
+int g_signal_pipe[2] = {-1, -1};
+
+// The watchdog's list and what it does with it once dtlab is gone.
+struct Guarded {
+  std::set<int> groups;
+  std::set<std::string> paths;
+
+  void apply(const char* rec, std::size_t n) {
+    if (n < 3) return;
+    const std::string payload(rec + 2, n - 2);
+    const bool add = rec[0] == '+';
+    if (rec[1] == 'G') {
+      const int g = std::atoi(payload.c_str());
+      if (g <= 1) return;
+      if (add) groups.insert(g);
+      else groups.erase(g);
+    } else if (rec[1] == 'P') {
+      if (add) paths.insert(payload);
+      else paths.erase(payload);
+    }
+  }
+  void end_all() const {
+    for (int g : groups) kill(-g, SIGKILL);
+    for (const auto& p : paths) {
+      std::error_code ec;
+      std::filesystem::remove_all(p, ec);
+    }
+  }
+};
+
+// Only descriptor 3 (the socket) stays open, so that the watchdog holds no pipe of
+// its caller's open (a caller reading dtlab's stdout sees EOF when dtlab ends).
+void isolate_watchdog(int sock) {
+  setpgid(0, 0);  // Ctrl-C to dtlab's group does not reach it
+  for (int s : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT}) signal(s, SIG_IGN);
+  sigset_t none;
+  sigemptyset(&none);
+  sigprocmask(SIG_SETMASK, &none, nullptr);
+  prctl(PR_SET_NAME, "dtlab-watchdog");
+  if (sock < 3) sock = fcntl(sock, F_DUPFD, 3);
+  if (sock != 3) dup2(sock, 3);
+  const int null = open("/dev/null", O_RDWR);
+  for (int fd = 0; fd < 3; ++fd) dup2(null, fd);
+  close_range(4, ~0U, 0);
+}
+
+[[noreturn]] void run_watchdog(int sock) {
+  isolate_watchdog(sock);
+  Guarded guarded;
+  std::vector<char> buf(1 << 16);
+  for (;;) {
+    const ssize_t n = recv(3, buf.data(), buf.size(), 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // every copy of the other end is closed: dtlab has ended
+    guarded.apply(buf.data(), static_cast<std::size_t>(n));
+  }
+  guarded.end_all();
+  _exit(0);
+}
+
+void start_watchdog_locked() {
+  if (g_socket.load() >= 0) return;
+  int sv[2];
+  if (socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, sv) != 0)
+    throw std::runtime_error("cannot start the exit watchdog: socketpair failed");
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(sv[0]);
+    close(sv[1]);
+    throw std::runtime_error("cannot start the exit watchdog: fork failed");
+  }
+  if (pid == 0) {
+    close(sv[0]);
+    run_watchdog(sv[1]);
+  }
+  close(sv[1]);
+  g_watchdog = pid;
+  g_socket = sv[0];
+}
+
+void send_record(char op, char kind, const std::string& payload) {
+  std::lock_guard<std::mutex> hold(g_lock);
+  start_watchdog_locked();
+  std::string rec{op, kind};
+  rec += payload;
+  while (send(g_socket.load(), rec.data(), rec.size(), MSG_NOSIGNAL) < 0 && errno == EINTR) {
+  }
+}
+
+[[noreturn]] void die_of(int sig) {
+  signal(sig, SIG_DFL);
+  sigset_t s;
+  sigemptyset(&s);
+  sigaddset(&s, sig);
+  pthread_sigmask(SIG_UNBLOCK, &s, nullptr);
+  raise(sig);
+  _exit(128 + sig);
+}
+
+void on_signal(int sig) {
+  const unsigned char s = static_cast<unsigned char>(sig);
+  [[maybe_unused]] const ssize_t w = write(g_signal_pipe[1], &s, 1);
+}
+
+}  // namespace
+
+void prepare_exit_guard() {
+  std::lock_guard<std::mutex> hold(g_lock);
+  start_watchdog_locked();
+}
+
+void guard_path(const std::string& path) { send_record('+', 'P', path); }
+void release_path(const std::string& path) { send_record('-', 'P', path); }
+void release_group(int pgid) { send_record('-', 'G', std::to_string(pgid)); }
+
+void guard_own_group_in_child() {
+  const int sock = g_socket.load();
+  if (sock < 0) return;
+  char rec[32] = {'+', 'G'};
+  char digits[16];
+  int n = 0;
+  for (int pid = getpid(); pid > 0 && n < 16; pid /= 10) digits[n++] = static_cast<char>('0' + pid % 10);
+  for (int i = 0; i < n; ++i) rec[2 + i] = digits[n - 1 - i];
+  send(sock, rec, static_cast<std::size_t>(2 + n), MSG_NOSIGNAL);
+}
+
+void end_guarded_now() {
+  g_lock.lock();  // never released: the process ends after this
+  const int sock = g_socket.exchange(-1);
+  if (sock < 0) return;
+  close(sock);
+  // A child between fork and exec still holds a copy; it closes at its exec.
+  const auto t0 = std::chrono::steady_clock::now();
+  while (waitpid(g_watchdog, nullptr, WNOHANG) == 0 &&
+         std::chrono::steady_clock::now() - t0 < std::chrono::seconds(10))
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  // Reaps the killed children, so that none is left a zombie under an init that does not reap.
+  const auto t1 = std::chrono::steady_clock::now();
+  while (waitpid(-1, nullptr, WNOHANG) >= 0 && std::chrono::steady_clock::now() - t1 < std::chrono::seconds(1))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+void install_interrupt_cleanup() {
+  prepare_exit_guard();
+  if (pipe2(g_signal_pipe, O_CLOEXEC) != 0) return;
+  std::thread([] {
+    unsigned char s = 0;
+    while (read(g_signal_pipe[0], &s, 1) != 1) {
+    }
+    g_interrupted = true;
+    end_guarded_now();
+    die_of(s);
+  }).detach();
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction old {};
+    sigaction(sig, nullptr, &old);
+    if (old.sa_handler == SIG_IGN) continue;  // nohup, a background job: keep ignoring it
+    struct sigaction a {};
+    a.sa_handler = on_signal;
+    sigemptyset(&a.sa_mask);
+    a.sa_flags = SA_RESTART;
+    sigaction(sig, &a, nullptr);
+  }
+}
+
+bool interrupt_received() { return g_interrupted.load(); }
+
+void wait_for_interrupt_exit() {
+  for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+}
+
+}  // namespace dtlab

@@ -1,0 +1,41 @@
+#pragma once
+// What must not outlive a dtlab process, however it ends (Ctrl-C, SIGTERM, SIGHUP, even
+// SIGKILL): the process groups of the programs it runs and its temporary files and
+// folders. A watchdog process, forked on first use, in its own process group and deaf to
+// SIGINT, SIGTERM and SIGHUP, holds the list: it learns of each entry over a socket and,
+// when the socket closes (the dtlab process ended, whatever way), it kills every group
+// still listed (SIGKILL) and then removes every path still listed.
+#include <string>
+
+namespace dtlab {
+
+// Listed until released. A released path that no longer exists is fine.
+void guard_path(const std::string& path);
+void release_path(const std::string& path);
+void release_group(int pgid);
+
+// The child side of a fork, before exec (async-signal-safe): lists the child's own
+// process group. Listing it before exec leaves no window: until the exec closes the
+// child's copy of the socket, the watchdog cannot see it closed. Call
+// prepare_exit_guard() before the fork.
+void guard_own_group_in_child();
+void prepare_exit_guard();
+
+// The interrupt path: ends every listed group, removes every listed path and waits
+// for the watchdog to finish; later guard and release calls block for ever (the
+// process is about to end).
+void end_guarded_now();
+
+// SIGINT, SIGTERM and SIGHUP end the process as the shell expects (died of the signal:
+// status 130, 143, 129) after end_guarded_now(). For programs (the dtlab command), not
+// for a library loaded into someone else's process (the Python module).
+void install_interrupt_cleanup();
+
+// True once install_interrupt_cleanup's handler received a signal: code that notices a
+// child it waits for died must not report that death as the child's answer.
+bool interrupt_received();
+
+// Blocks the calling thread until the interrupt handler ends the process.
+[[noreturn]] void wait_for_interrupt_exit();
+
+}  // namespace dtlab
