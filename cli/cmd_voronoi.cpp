@@ -19,6 +19,7 @@
 #include "fracture/render_png.hpp"
 #include "voronoi/cell_check.hpp"
 #include "voronoi/voronoi_io.hpp"
+#include "cli/voronoi_against.hpp"
 
 namespace dtlab::cli {
 
@@ -32,6 +33,9 @@ struct VoronoiArgs {
   bool no_obj = false, vtu = false, json = false, check = false;
   std::string vtu_format = "binary", png;
   double png_shrink = 0.8;
+  std::string against = "none";
+  double timeout = 600;
+  bool quiet = false;
 };
 
 int run_voronoi(const VoronoiArgs& a) {
@@ -80,6 +84,14 @@ int run_voronoi(const VoronoiArgs& a) {
     if (!(rel <= 1e-12)) ++defects;  // a NaN error (overflowing volumes) is a defect too
     m["check"] = {{"defects", bad}, {"relative_volume_error", rel}};
   }
+  int peers_rc = kOk;
+  if (const auto peers = parse_voronoi_peers(a.against); !peers.empty() || a.against != "none") {
+    try {
+      peers_rc = judge_voronoi_peers(in.points, vd, {peers, a.timeout, a.quiet}, a.json, m);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(a.input, 0, e.what());  // no 3D Delaunay complex to judge against
+    }
+  }
   if (!a.out.empty()) {
     if (obj) write_cells_obj(a.out + ".obj", vd);
     if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
@@ -104,7 +116,7 @@ int run_voronoi(const VoronoiArgs& a) {
       std::printf("wrote %s.json%s%s\n", a.out.c_str(), obj ? ", .obj" : "", a.vtu ? ", .vtu" : "");
     if (!a.png.empty()) std::printf("wrote %s\n", a.png.c_str());
   }
-  return defects ? kDefect : kOk;
+  return defects ? kDefect : peers_rc;
 }
 }  // namespace
 
@@ -127,7 +139,13 @@ void add_voronoi_command(CLI::App& app, int& rc) {
       ->check(number_in(0.05, 1))->capture_default_str();
   sub->add_flag("--no-obj", args->no_obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
-  sub->add_flag("--json", args->json, "print the manifest on stdout");
+  sub->add_option("--against", args->against,
+                  "Voronoi peers to judge with the exact checker, clipped to the same box: none, all, or a comma list of "
+                  "voro++, scipy-voronoi, qvoronoi, cgal-dual, dtlab:naive|epsilon|adaptive|exact")
+      ->capture_default_str();
+  sub->add_option("--timeout", args->timeout, "seconds before a peer counts as hung")->check(number_in(0.001, 1e6))->capture_default_str();
+  sub->add_flag("--quiet", args->quiet, "no progress lines");
+  sub->add_flag("--json", args->json, "print the manifest on stdout (with --against: also exact_check and peers)");
   // How the Delaunay build runs, as in tetra (the cells need the infinite boundary).
   args->kernel.add_to(*sub, kAllKernelOptions & ~kBoundaryOption);
   sub->callback([args, &rc] { rc = run_voronoi(*args); });

@@ -2,7 +2,8 @@
 // Structural checks of one cell: closed and consistently oriented (every directed
 // edge once, its reverse once), Euler characteristic 2, no degenerate edge or face,
 // convex (every vertex behind every face plane) and planar faces, within `tol`
-// (absolute length).
+// (absolute length). The first two parts are also used alone by the Voronoi checker
+// (voronoi_check/), which judges other tools' cells.
 #include <algorithm>
 #include <string>
 #include <utility>
@@ -12,8 +13,10 @@
 
 namespace dtlab {
 
-inline std::string check_cell(const VoronoiCell& c, double tol) {
-  using namespace vor;
+// Closed and consistently oriented: at least 4 faces of 3+ corners, every directed
+// edge once and its reverse once, no edge from a vertex to itself, every vertex used,
+// V - E + F = 2. Exact (no tolerance).
+inline std::string check_cell_closed(const VoronoiCell& c) {
   const std::size_t nf = c.face_count();
   if (nf < 4) return "fewer than 4 faces";
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
@@ -27,20 +30,30 @@ inline std::string check_cell(const VoronoiCell& c, double tol) {
   for (auto [a, b] : edges) {
     if (a == b) return "edge from a vertex to itself";
     if (!std::binary_search(edges.begin(), edges.end(), std::pair{b, a})) return "edge without its reverse";
-    if (vnorm(vsub(c.vertices[a], c.vertices[b])) <= tol) return "zero-length edge";
   }
   std::vector<char> used(c.vertices.size(), 0);
   for (auto v : c.face_vertices) used[v] = 1;
   if (std::count(used.begin(), used.end(), 1) != static_cast<long>(c.vertices.size())) return "unused vertex";
   const long euler = long(c.vertices.size()) - long(edges.size() / 2) + long(nf);
   if (euler != 2) return "Euler characteristic " + std::to_string(euler);
-  for (std::size_t f = 0; f < nf; ++f) {
+  return {};
+}
+
+// Planar faces and convex (every vertex behind every face plane), within `tol`
+// (absolute length). With `skip_tiny`, faces of area below tol^2 (whose plane rounding
+// does not define) are not tested; otherwise they are a defect ("zero-area face").
+inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip_tiny = false) {
+  using namespace vor;
+  for (std::size_t f = 0; f < c.face_count(); ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
     Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
     for (auto k = b + 1; k + 1 < e; ++k)
       n = vadd(n, vcross(vsub(c.vertices[c.face_vertices[k]], o), vsub(c.vertices[c.face_vertices[k + 1]], o)));
     const double area2 = vnorm(n);
-    if (area2 <= tol * tol) return "zero-area face";
+    if (area2 <= tol * tol) {
+      if (skip_tiny) continue;
+      return "zero-area face";
+    }
     n = vscale(1.0 / area2, n);
     for (auto k = b; k < e; ++k)
       if (std::abs(vdot(n, vsub(c.vertices[c.face_vertices[k]], o))) > tol) return "non-planar face";
@@ -48,6 +61,19 @@ inline std::string check_cell(const VoronoiCell& c, double tol) {
       if (vdot(n, vsub(p, o)) > tol) return "not convex";
   }
   return {};
+}
+
+// All of the above, plus no edge of length <= tol and no face of area <= tol^2.
+inline std::string check_cell(const VoronoiCell& c, double tol) {
+  if (std::string why = check_cell_closed(c); !why.empty()) return why;
+  for (std::size_t f = 0; f < c.face_count(); ++f) {
+    const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
+    for (auto k = b; k < e; ++k) {
+      const auto u = c.face_vertices[k], v = c.face_vertices[k + 1 < e ? k + 1 : b];
+      if (vor::vnorm(vor::vsub(c.vertices[u], c.vertices[v])) <= tol) return "zero-length edge";
+    }
+  }
+  return check_cell_convex(c, tol);
 }
 
 }  // namespace dtlab

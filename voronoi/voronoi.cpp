@@ -63,6 +63,18 @@ Adjacency delaunay_neighbors(const Tetrahedralization& dt) {
   return a;
 }
 
+void vertex_stars(std::size_t n, std::span<const Tet> tets, std::vector<std::uint32_t>& off,
+                  std::vector<std::uint32_t>& star) {
+  off.assign(n + 1, 0);
+  for (const auto& t : tets)
+    for (auto v : t) ++off[v + 1];
+  for (std::size_t i = 0; i < n; ++i) off[i + 1] += off[i];
+  star.resize(off[n]);
+  std::vector<std::uint32_t> fill(off.begin(), off.end() - 1);
+  for (std::uint32_t t = 0; t < tets.size(); ++t)
+    for (auto v : tets[t]) star[fill[v]++] = t;
+}
+
 Box default_box(std::span<const Point3> sites, double margin) {
   Box b{sites[0], sites[0]};
   for (const auto& p : sites) {
@@ -156,19 +168,6 @@ void measure(const CellBuffer& c, const Point3& o, VoronoiCell& out) {
   }
   out.volume = vol / 6;
   out.centroid = vol != 0 ? vadd(o, vscale(1.0 / (4 * vol), m)) : o;
-}
-
-// Tets around each vertex, compressed rows.
-void vertex_stars(std::size_t n, std::span<const Tet> tets, std::vector<std::uint32_t>& off,
-                  std::vector<std::uint32_t>& star) {
-  off.assign(n + 1, 0);
-  for (const auto& t : tets)
-    for (auto v : t) ++off[v + 1];
-  for (std::size_t i = 0; i < n; ++i) off[i + 1] += off[i];
-  star.resize(off[n]);
-  std::vector<std::uint32_t> fill(off.begin(), off.end() - 1);
-  for (std::uint32_t t = 0; t < tets.size(); ++t)
-    for (auto v : tets[t]) star[fill[v]++] = t;
 }
 
 // The tets with vertices renamed by rank, in a stable counting sort by their lowest

@@ -67,6 +67,10 @@ struct Adjacency {
   std::vector<std::uint32_t> off, adj;
 };
 Adjacency delaunay_neighbors(const Tetrahedralization& dt);
+// The tets around each vertex in compressed rows: tets containing v are
+// star[off[v] .. off[v+1]), ascending.
+void vertex_stars(std::size_t n, std::span<const Tet> tets, std::vector<std::uint32_t>& off,
+                  std::vector<std::uint32_t>& star);
 
 vor::Box default_box(std::span<const Point3> sites, double margin);
 

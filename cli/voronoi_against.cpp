@@ -1,0 +1,93 @@
+#include "cli/voronoi_against.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/command.hpp"
+#include "cli/progress.hpp"
+#include "voronoi_check/voronoi_peers.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+
+constexpr int kNoAnswer = 3;
+
+nlohmann::json report_json(const VoronoiCheckReport& r) {
+  nlohmann::json counts = nlohmann::json::object();
+  for (int k = 0; k < kVoronoiDefects; ++k)
+    if (r.counts[k]) counts[voronoi_defect_name(static_cast<VoronoiDefect>(k))] = r.counts[k];
+  nlohmann::json w = nlohmann::json::array();
+  for (const auto& x : r.witnesses)
+    w.push_back({{"kind", voronoi_defect_name(x.kind)}, {"site", x.site}, {"neighbor", x.neighbor},
+                 {"size", x.size}, {"detail", x.detail}});
+  return {{"topology", topology_name(r.topology)}, {"counts", counts}, {"witnesses", w},
+          {"largest_wrong_face", r.largest_wrong_face}, {"largest_small_face", r.largest_small_face},
+          {"max_vertex_ulps", r.max_vertex_ulps}, {"max_vertex_error", r.max_vertex_error},
+          {"volume_sum", r.volume_sum}, {"box_volume", r.box_volume}, {"volume_error", r.volume_error},
+          {"cells", r.cells}, {"faces", r.faces}, {"voronoi_edges", r.voronoi_edges},
+          {"degenerate_edges", r.degenerate_edges}, {"seconds_check", r.seconds}};
+}
+
+std::string line_of(const VoronoiPeerRun& r) {
+  std::ostringstream s;
+  s << r.name << ": " << voronoi_verdict_name(r.verdict);
+  if (r.report) {
+    const auto text = voronoi_counts_text(*r.report);
+    if (!text.empty()) s << " (" << text << ")";
+    if (r.report->largest_wrong_face > 0) s << ", largest wrong face " << r.report->largest_wrong_face << " of extent^2";
+    if (r.report->largest_small_face > 0) s << ", largest small face " << r.report->largest_small_face;
+    s << ", vertices within " << r.report->max_vertex_ulps << " ulps";
+  }
+  if (!r.message.empty()) s << ": " << r.message;
+  s << ", " << r.seconds << " s";
+  return s.str();
+}
+
+}  // namespace
+
+std::vector<std::string> parse_voronoi_peers(const std::string& list) {
+  if (list == "none" || list.empty()) return {};
+  std::vector<std::string> names;
+  std::stringstream in(list);
+  for (std::string n; std::getline(in, n, ',');)
+    if (!n.empty()) names.push_back(n);
+  try {
+    return expand_voronoi_peer_names(names);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--against", e.what());
+  }
+}
+
+int judge_voronoi_peers(const std::vector<Point3>& sites, const VoronoiDiagram& diagram, const VoronoiAgainst& a,
+                        bool json, nlohmann::json& out) {
+  const VoronoiCheckReport ours = check_voronoi(sites, diagram.box, tool_cells_of(diagram));
+  out["exact_check"] = report_json(ours);
+  out["exact_check"]["verdict"] = voronoi_verdict_name(ours.verdict);
+  if (!json) std::printf("dtlab: %s (%s)\n", voronoi_verdict_name(ours.verdict), voronoi_counts_text(ours).c_str());
+  VoronoiPeerOptions o;
+  o.timeout_s = a.timeout;
+  out["peers"] = nlohmann::json::object();
+  bool all_answered = true;
+  Progress progress("voronoi", a.quiet);
+  for (std::size_t k = 0; k < a.peers.size(); ++k) {
+    progress.update("peers", k, a.peers.size(), "running " + a.peers[k]);
+    const VoronoiPeerRun r = run_voronoi_peer(a.peers[k], sites, diagram.box, o);
+    all_answered &= r.report.has_value();
+    nlohmann::json j = r.report ? report_json(*r.report) : nlohmann::json::object();
+    j["verdict"] = voronoi_verdict_name(r.verdict);
+    j["message"] = r.message;
+    j["seconds"] = r.seconds;
+    j["wall_seconds"] = r.wall_seconds;
+    j["peak_rss_bytes"] = r.peak_rss_bytes;
+    j["version"] = voronoi_peer_version(a.peers[k], o);
+    out["peers"][a.peers[k]] = j;
+    if (!json) std::printf("%s\n", line_of(r).c_str());
+  }
+  if (ours.verdict != VoronoiVerdict::exact_topology) return kDefect;
+  return all_answered ? kOk : kNoAnswer;
+}
+
+}  // namespace dtlab::cli

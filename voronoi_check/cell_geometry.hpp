@@ -1,0 +1,28 @@
+#pragma once
+// The geometry of a tool's cell against exact positions: where each vertex should be
+// (the point where the planes of its faces meet: bisectors of the site and its
+// neighbours, box walls), and face areas.
+#include <cstdint>
+#include <span>
+
+#include "voronoi/vec.hpp"
+#include "voronoi/voronoi.hpp"
+
+namespace dtlab {
+
+// Area of face f of a cell (Newell's formula).
+double face_area(const VoronoiCell& c, std::size_t f);
+
+struct VertexError {
+  double distance = 0;  // max-norm distance to the intersection of its faces' planes
+  bool decided = false; // false: the planes do not fix a point (fewer than 3, parallel)
+};
+
+// Per vertex of the cell of `site` (sites: all sites; neighbour ids index them,
+// -1..-6 are the walls of `box`): the intersection of the three best-conditioned
+// planes of its faces, solved in long double relative to the site, and the vertex's
+// distance to it. `out` gets one entry per vertex.
+void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uint32_t site, const vor::Box& box,
+                   std::span<VertexError> out);
+
+}  // namespace dtlab

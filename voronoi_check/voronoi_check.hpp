@@ -1,0 +1,95 @@
+#pragma once
+// The exact Voronoi checker: judges any tool's cells (voronoi_check/tool_cells.hpp)
+// against the exact Voronoi neighbour relation of the sites
+// (voronoi_check/voronoi_neighbors.hpp), clipped to a box. Proves or refutes, with
+// witnesses: one cell per site (duplicated sites: one cell per set of copies, on any
+// copy; neighbour ids of any copy count for the first), every face with positive area
+// on the bisector of a Voronoi (Delaunay-complex) edge, no such edge whose face meets
+// the box missing, cell vertices near the exact intersection of their faces' planes,
+// cells closed and convex, volumes summing to the box volume.
+//
+// Floating-point tools cannot represent faces far below their rounding, so a missing
+// or spurious face is `small` when its area is at most `small_face` times the sites'
+// extent squared (its area: the exact face's clipped to the box in doubles when
+// missing, the tool's when spurious). Topology: exact (the exact neighbour sets),
+// rounded (only small faces wrong), wrong (a larger face, or a cell, wrong).
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "voronoi/vec.hpp"
+#include "voronoi_check/tool_cells.hpp"
+
+namespace dtlab {
+
+enum class VoronoiDefect {
+  missing_cell,         // a site (inside the box) with no cell
+  extra_cell,           // a second cell for one site (or its copies), or a cell of no site
+  missing_face,         // a Voronoi face meeting the box that the cell lacks (large)
+  spurious_face,        // a face towards a site that is no Voronoi neighbour (large)
+  small_missing_face,   // the same, at most small_face * extent^2
+  small_spurious_face,
+  degenerate_face,      // a face of a DT edge whose exact face has zero area (not wrong)
+  bad_neighbor,         // a neighbour id that is no site
+  vertex_off,           // a vertex farther than vertex_tolerance from its exact position
+  not_convex,           // not closed, Euler != 2, or a vertex outside a face plane
+  volume_mismatch,      // the cells' volumes do not sum to the box volume
+};
+inline constexpr int kVoronoiDefects = 11;
+const char* voronoi_defect_name(VoronoiDefect d);
+
+enum class Topology { exact, rounded, wrong };
+const char* topology_name(Topology t);
+
+// The whole answer: wrong-topology before volume-mismatch before bad-geometry (vertices
+// off, cells not convex) before rounded-topology before exact-topology; the last three
+// are a peer's "no answer" verdicts (voronoi_check/voronoi_peers.hpp).
+enum class VoronoiVerdict {
+  exact_topology, rounded_topology, bad_geometry, volume_mismatch, wrong_topology,
+  crashed, hung, refused, not_installed,
+};
+const char* voronoi_verdict_name(VoronoiVerdict v);
+
+struct VoronoiWitness {
+  VoronoiDefect kind;
+  std::int64_t site = -1, neighbor = -1;  // input ids (neighbor: -1 when none)
+  double size = 0;                        // face area / extent^2, vertex error / diagonal, ...
+  std::string detail;
+};
+
+struct VoronoiCheckOptions {
+  double small_face = 1e-9;         // of the sites' extent squared
+  double vertex_tolerance = 1e-9;   // of the box diagonal
+  double convex_tolerance = 1e-9;   // of the box diagonal
+  double volume_tolerance = 1e-9;   // relative to the box volume
+  std::size_t witnesses_per_kind = 16;
+};
+
+struct VoronoiCheckReport {
+  std::array<std::uint64_t, kVoronoiDefects> counts{};
+  std::vector<VoronoiWitness> witnesses;
+  Topology topology = Topology::exact;
+  VoronoiVerdict verdict = VoronoiVerdict::exact_topology;
+  double largest_wrong_face = 0;     // / extent^2, over missing_face and spurious_face
+  double largest_small_face = 0;     // / extent^2, over the small ones
+  double max_vertex_ulps = 0;        // ulps of the box's largest coordinate
+  double max_vertex_error = 0;       // / box diagonal
+  double volume_sum = 0, box_volume = 0, volume_error = 0;  // error relative to the box volume
+  std::uint64_t sites = 0, distinct_sites = 0, cells = 0, faces = 0, vertices = 0;
+  std::uint64_t voronoi_edges = 0;   // directed Voronoi neighbour pairs (positive faces)
+  std::uint64_t degenerate_edges = 0;  // directed DT edges with a zero-area face
+  double seconds_dt = 0, seconds = 0;  // the DT alone; the whole check
+  std::uint64_t count(VoronoiDefect d) const { return counts[static_cast<int>(d)]; }
+};
+
+// Throws std::invalid_argument for non-finite sites, fewer than 4 distinct or coplanar
+// sites, or an empty or non-finite box. A cell of no site is an extra_cell, not an error.
+VoronoiCheckReport check_voronoi(std::span<const Point3> sites, const vor::Box& box, const ToolCells& cells,
+                                 const VoronoiCheckOptions& options = {});
+
+// "missing-face 3, small-missing-face 1": the non-zero counts.
+std::string voronoi_counts_text(const VoronoiCheckReport& r);
+
+}  // namespace dtlab

@@ -1,0 +1,169 @@
+#include "voronoi_check/voronoi_neighbors.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+
+#include "kernel/build.hpp"
+#include "oracle/facet_table.hpp"
+#include "oracle/filtered_exact.hpp"
+#include "voronoi/circumcenter.hpp"
+#include "voronoi/voronoi.hpp"
+#include "voronoi_check/exact_centre.hpp"
+
+namespace dtlab {
+
+struct VoronoiNeighbors::Exact {
+  std::vector<std::optional<ExactPoint>> centre;  // per tet, computed on first use
+};
+
+namespace {
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
+}
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::vector<std::uint32_t> representatives(std::span<const Point3> p) {
+  std::vector<std::uint32_t> idx(p.size()), rep(p.size());
+  std::iota(idx.begin(), idx.end(), 0u);
+  std::stable_sort(idx.begin(), idx.end(), [&](auto a, auto b) { return lex_less(p[a], p[b]); });
+  for (std::size_t k = 0; k < idx.size(); ++k)
+    rep[idx[k]] = k > 0 && p[idx[k]] == p[idx[k - 1]] ? rep[idx[k - 1]] : idx[k];
+  return rep;
+}
+
+}  // namespace
+
+VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites) : exact_(std::make_unique<Exact>()) {
+  for (const auto& p : sites)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw std::invalid_argument("a site is not finite");
+  rep_ = representatives(sites);
+  const auto t0 = Clock::now();
+  BuildResult r = build_delaunay(sites, PredicateSpec{"adaptive", 0, false, true});
+  if (r.failure) {
+    if (r.failure->kind == FailureKind::lower_dimensional)
+      throw std::invalid_argument("fewer than 4 distinct sites, or all coplanar: no Delaunay tetrahedralization");
+    throw std::runtime_error(std::string("Delaunay build failed: ") + failure_name(r.failure->kind));
+  }
+  dt_ = std::move(r.mesh);
+  seconds_dt = since(t0);
+  const auto t1 = Clock::now();
+  build_tables();
+  seconds_tables = since(t1);
+}
+
+VoronoiNeighbors::~VoronoiNeighbors() = default;
+
+// Stars, flat tets, tets with a cospherical facet, hull edges and the degenerate ones.
+void VoronoiNeighbors::build_tables() {
+  const FilteredExact pred;
+  const auto& p = dt_.points;
+  const std::size_t nt = dt_.tets.size();
+  vertex_stars(p.size(), dt_.tets, star_off_, star_);
+  flat_.assign(nt, 0);
+  for (std::size_t t = 0; t < nt; ++t) {
+    const Tet& q = dt_.tets[t];
+    flat_[t] = pred.orient3d(p[q[0]], p[q[1]], p[q[2]], p[q[3]]) == 0;
+  }
+  degenerate_ = flat_;
+  const FacetTable table = build_facet_table(dt_.tets, first_appearance(dt_.tets, p.size()), [&](const FacetPair& f) {
+    const std::uint32_t t1 = f.r1 / 4, t2 = f.r2 / 4;
+    if (degenerate_[t1] && degenerate_[t2]) return;
+    if (pred.insphere(p[f.v[0]], p[f.v[1]], p[f.v[2]], p[f.apex1], p[f.apex2]) == 0)
+      degenerate_[t1] = degenerate_[t2] = 1;
+  });
+  // Hull facets by edge: the third vertex and the tet's fourth of both facets at an edge.
+  struct Side {
+    std::uint64_t key;
+    std::uint32_t third, apex;
+  };
+  std::vector<Side> sides;
+  hull_vertex_.assign(p.size(), 0);
+  for (auto ref : table.boundary_refs) {
+    const Tet& q = dt_.tets[ref / 4];
+    const auto v = facet_vertices(q, static_cast<int>(ref % 4));
+    for (int k = 0; k < 3; ++k) {
+      hull_vertex_[v[k]] = 1;
+      sides.push_back({edge_key(v[k], v[(k + 1) % 3]), v[(k + 2) % 3], q[ref % 4]});
+    }
+  }
+  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) { return a.key < b.key; });
+  for (std::size_t k = 0; k + 1 < sides.size(); k += 2) {
+    const Side &s1 = sides[k], &s2 = sides[k + 1];
+    hull_edges_.push_back(s1.key);
+    const Point3 &a = p[s1.key >> 32], &b = p[s1.key & 0xFFFFFFFFu];
+    // Coplanar hull facets whose four points are cocircular: the face is a ray.
+    if (pred.orient3d(a, b, p[s1.third], p[s2.third]) == 0 &&
+        pred.insphere(a, b, p[s1.third], p[s2.third], p[s1.apex]) == 0)
+      flat_hull_edges_.push_back(s1.key);
+  }
+  mark_.assign(p.size(), 0);
+  exact_->centre.resize(nt);
+}
+
+std::uint64_t VoronoiNeighbors::degenerate_tets() const {
+  return static_cast<std::uint64_t>(std::count(degenerate_.begin(), degenerate_.end(), 1));
+}
+
+void VoronoiNeighbors::ring_centres(std::uint32_t a, std::uint32_t b, std::vector<Point3>& out) const {
+  out.clear();
+  const auto& p = dt_.points;
+  for (auto t : star(a)) {
+    const Tet& q = dt_.tets[t];
+    if (flat_[t] || (q[0] != b && q[1] != b && q[2] != b && q[3] != b)) continue;
+    out.push_back(vor::circumcenter(p[q[0]], p[q[1]], p[q[2]], p[q[3]]));
+  }
+}
+
+bool VoronoiNeighbors::ring_collinear(std::uint32_t a, std::uint32_t b) {
+  const auto& p = dt_.points;
+  std::vector<const ExactPoint*> centres;
+  for (auto t : star(a)) {
+    const Tet& q = dt_.tets[t];
+    if (flat_[t] || (q[0] != b && q[1] != b && q[2] != b && q[3] != b)) continue;
+    auto& c = exact_->centre[t];
+    if (!c) c = exact_circumcentre(p[q[0]], p[q[1]], p[q[2]], p[q[3]]);
+    centres.push_back(&*c);
+  }
+  return all_collinear(centres);
+}
+
+bool VoronoiNeighbors::edge_positive(std::uint32_t a, std::uint32_t b) {
+  const std::uint64_t key = edge_key(a, b);
+  if (hull_vertex_[a] && hull_vertex_[b] && std::binary_search(hull_edges_.begin(), hull_edges_.end(), key))
+    return !std::binary_search(flat_hull_edges_.begin(), flat_hull_edges_.end(), key);
+  for (auto t : star(a)) {
+    const Tet& q = dt_.tets[t];
+    if (degenerate_[t] && (q[0] == b || q[1] == b || q[2] == b || q[3] == b)) return !ring_collinear(a, b);
+  }
+  return true;
+}
+
+void VoronoiNeighbors::neighbors(std::uint32_t a, std::vector<std::uint32_t>& positive,
+                                 std::vector<std::uint32_t>& degenerate) {
+  positive.clear();
+  degenerate.clear();
+  std::vector<std::uint32_t>& all = degenerate;  // collected here first, then split
+  for (auto t : star(a))
+    for (auto v : dt_.tets[t])
+      if (v != a && !mark_[v]) mark_[v] = 1, all.push_back(v);
+  for (auto v : all) mark_[v] = 0;
+  std::sort(all.begin(), all.end());
+  std::size_t kept = 0;
+  for (auto v : all) {
+    if (edge_positive(a, v))
+      positive.push_back(v);
+    else
+      all[kept++] = v;
+  }
+  all.resize(kept);
+}
+
+}  // namespace dtlab
