@@ -28,7 +28,6 @@ stage "venv + pip install --no-build-isolation ."
 "$py" -m venv --system-site-packages "$tmp/v"
 (cd "$tmp/src" && "$tmp/v/bin/pip" install -q --no-build-isolation . > "$tmp/pip.log" 2>&1) ||
   { tail -40 "$tmp/pip.log"; exit 1; }
-ccache -s 2>/dev/null | grep -i "hits\|misses" | head -3 || true
 
 smoke='
 import sys, numpy as np, dtlab, dtlab.spatial
@@ -44,8 +43,10 @@ stage "python3 -m build --no-isolation --wheel"
 (cd "$tmp/src" && "$py" -m build --no-isolation --wheel --outdir "$tmp/dist" > "$tmp/build.log" 2>&1) ||
   { tail -40 "$tmp/build.log"; exit 1; }
 wheel=$(ls "$tmp"/dist/dtlab-*.whl)
-"$py" -m zipfile -l "$wheel" | grep -q "dtlab/_core.*\.so" || { echo "no _core in $wheel"; exit 1; }
-"$py" -m zipfile -l "$wheel" | grep -q "dtlab/spatial.py" || { echo "no dtlab/spatial.py in $wheel"; exit 1; }
+listing=$("$py" -m zipfile -l "$wheel")
+for f in "dtlab/_core.*\.so" "dtlab/spatial.py" "dtlab/py.typed"; do
+  grep -q "$f" <<< "$listing" || { echo "no $f in $wheel"; exit 1; }
+done
 
 stage "wheel into a second venv"
 "$py" -m venv --system-site-packages "$tmp/w"
