@@ -176,14 +176,20 @@ class Delaunay(_Triangulated):
     @property
     def transform(self) -> np.ndarray:
         """(nsimplex, 4, 3): T^-1 in [:, :3] and r = the last vertex in [:, 3], so that
-        the barycentric coordinates of x in simplex i are c = T^-1 (x - r), 1 - sum(c)."""
+        the barycentric coordinates of x in simplex i are c = T^-1 (x - r), 1 - sum(c).
+        As scipy's: NaN for a simplex whose T is too ill-conditioned to invert
+        (reciprocal 1-norm condition number below 1000 eps; a valid sliver)."""
         if self._transform is None:
             v = self.points[self.simplices]
-            t = np.transpose(v[:, :3] - v[:, 3:4], (0, 2, 1))  # columns v_k - v_3
-            out = np.empty((self.nsimplex, 4, 3))
-            out[:, :3] = np.linalg.inv(t) if self.nsimplex else t
-            out[:, 3] = v[:, 3]
-            self._transform = out
+            a, b, c = (v[:, k] - v[:, 3] for k in range(3))  # T's columns
+            rows = np.stack([np.cross(b, c), np.cross(c, a), np.cross(a, b)], axis=1)
+            t = np.stack([a, b, c], axis=2)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                inv = rows / np.einsum("ij,ij->i", a, rows[:, 0])[:, None, None]  # adj(T) / det(T)
+                norm1 = lambda m: np.abs(m).sum(axis=1).max(axis=1)  # noqa: E731 (largest column sum)
+                rcond = 1.0 / (norm1(t) * norm1(inv))
+            inv[~(rcond >= 1000 * np.finfo(float).eps)] = np.nan
+            self._transform = np.concatenate([inv, v[:, 3:4]], axis=1)
         return self._transform
 
     def lift_points(self, x: Any) -> np.ndarray:
