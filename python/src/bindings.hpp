@@ -11,5 +11,6 @@ void bind_voronoi(pybind11::module_& m);
 void bind_sampling(pybind11::module_& m);
 void bind_fracture(pybind11::module_& m);
 void bind_fuzz(pybind11::module_& m);
+void bind_spatial(pybind11::module_& m);
 
 }  // namespace dtlab::python

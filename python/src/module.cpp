@@ -28,4 +28,5 @@ PYBIND11_MODULE(_core, m) {
   dtlab::python::bind_sampling(m);
   dtlab::python::bind_fracture(m);
   dtlab::python::bind_fuzz(m);
+  dtlab::python::bind_spatial(m);
 }
