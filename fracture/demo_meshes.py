@@ -11,8 +11,9 @@ timeout. The pieces are then checked here, independently of dtlab: pieces.obj is
 every piece must be closed and edge-manifold (each directed edge once, its reverse
 once), of positive volume, and the signed volumes of the pieces (divergence theorem, in
 Python floats) must sum to the volume of repaired.off to --tolerance (relative). The
-`islands` column counts pieces with more than one connected component (through shared
-edges): 0 unless --extra --no-island-split. Prints a Markdown table and a tally.
+`islands` column counts pieces with more than one connected component of positive
+volume (through shared edges; a shell of negative volume is a cavity inside its piece):
+0 unless --extra --no-island-split. Prints a Markdown table and a tally.
 """
 import argparse
 import concurrent.futures
@@ -76,8 +77,9 @@ def closed_manifold(tris):
     return bool(tris) and all((b, a) in edges for a, b in edges)
 
 
-def components(tris):
-    """Connected components of a triangle list through shared (undirected) edges."""
+def components(verts, tris):
+    """(shells, cavities): connected components of a triangle list through shared
+    (undirected) edges, of positive and of negative signed volume."""
     parent = list(range(len(tris)))
 
     def find(x):
@@ -93,7 +95,11 @@ def components(tris):
                 parent[find(i)] = find(first[e])
             else:
                 first[e] = i
-    return len({find(i) for i in range(len(tris))})
+    comps = {}
+    for i in range(len(tris)):
+        comps.setdefault(find(i), []).append(tris[i])
+    vols = [volume(verts, c) for c in comps.values()]
+    return sum(v > 0 for v in vols), sum(v <= 0 for v in vols)
 
 
 def short_problems(report):
@@ -141,7 +147,7 @@ def short_step(step):
 def run_one(dtlab, mesh, args):
     name = os.path.basename(mesh)
     row = {'mesh': name, 'problems': '?', 'repairs': '', 'pieces': 0, 'error': None, 'seconds': 0.0,
-           'ok': False, 'reason': '', 'multi': 0, 'sites': 0}
+           'ok': False, 'reason': '', 'multi': 0, 'sites': 0, 'cavities': 0}
     try:
         check = subprocess.run([dtlab, 'mesh', 'check', mesh, '--json'], capture_output=True, text=True,
                                timeout=args.timeout)
@@ -171,7 +177,9 @@ def run_one(dtlab, mesh, args):
         total = sum(volume(verts, t) for t in pieces)
         row['pieces'] = len(pieces)
         row['sites'] = len({p.get('site_index', i) for i, p in enumerate(manifest['pieces'])})
-        row['multi'] = sum(components(t) > 1 for t in pieces)
+        shells = [components(verts, t) for t in pieces]
+        row['multi'] = sum(s > 1 for s, _ in shells)
+        row['cavities'] = sum(c for _, c in shells)
         row['error'] = abs(total - solid) / abs(solid) if solid else float('inf')
         bad = sum(not closed_manifold(t) for t in pieces)
         inside_out = sum(volume(verts, t) <= 0 for t in pieces)
@@ -217,9 +225,11 @@ def main():
     lines.append('')
     multi = sum(r['multi'] for r in rows)
     split = sum(r['pieces'] - r['sites'] for r in rows if r['ok'])
+    cavities = sum(r['cavities'] for r in rows)
     lines.append(f"**{ok} of {len(rows)} fractured** into closed, manifold pieces of positive volume whose volumes "
                  f"sum to the repaired solid's ({args.tolerance:g}); {multi} pieces with more than one connected "
-                 f"component; {split} pieces more than sites (islands); slowest {slowest:.1f} s.")
+                 f"component; {split} pieces more than sites (islands); {cavities} cavity shells inside pieces; "
+                 f"slowest {slowest:.1f} s.")
     text = '\n'.join(lines) + '\n'
     if args.out:
         open(args.out, 'w').write(text)
