@@ -11,6 +11,8 @@
 #include "cli/progress.hpp"
 #include "kernel/output_file.hpp"
 #include "cli/number_options.hpp"
+#include "cli/input_points.hpp"
+#include "fracture/piece_gltf.hpp"
 #include "fracture/piece_io.hpp"
 #include "fracture/render_png.hpp"
 #include "kernel/input_error.hpp"
@@ -30,7 +32,36 @@ struct FractureArgs {
   bool blue_noise = false, json = false, repair = false, split = false, quiet = false, vtu = false;
   std::string vtu_format = "binary";
   double boolean_seconds = 30;
+  std::string sites;                      // FILE | mesh-vertices (default: the sampler)
+  std::vector<double> impact, cell_scale;  // X,Y,Z / SX,SY,SZ
+  double impact_radius = 0, site_noise = 0, density = 1;
+  bool no_island_split = false, surfaces = false, gltf = false;
 };
+
+Point3 triple(const std::vector<double>& v, const char* option) {
+  if (v.size() != 3) throw UsageError(std::string(option) + " takes three comma-separated numbers");
+  return {v[0], v[1], v[2]};
+}
+
+// --sites, --impact, --site-noise as the library's SiteOptions.
+SiteOptions site_options(const FractureArgs& a) {
+  SiteOptions s;
+  if (a.sites == "mesh-vertices") {
+    s.source = SiteSource::mesh_vertices;
+  } else if (!a.sites.empty()) {
+    s.source = SiteSource::points;
+    s.points = read_input_points(a.sites).points;  // InputError: file:line: reason
+    if (s.points.empty()) throw InputError(a.sites, 0, "no sites in the file");
+  }
+  if (!a.impact.empty()) {
+    s.impact = triple(a.impact, "--impact");
+    if (!(a.impact_radius > 0)) throw UsageError("--impact needs --impact-radius R > 0");
+    if (s.source == SiteSource::points) throw UsageError("--impact chooses sampled sites or mesh-vertices, not --sites FILE");
+  }
+  s.impact_radius = a.impact_radius;
+  s.noise = a.site_noise;
+  return s;
+}
 
 int run_fracture(const FractureArgs& a) {
   if (a.out.empty() && !a.json && a.png.empty())  // never compute without writing
@@ -57,6 +88,9 @@ int run_fracture(const FractureArgs& a) {
   o.recurse_pieces = a.recurse_pieces;
   o.repair = a.repair;
   o.boolean_seconds = a.boolean_seconds;
+  o.sites = site_options(a);
+  o.island_split = !a.no_island_split;
+  if (!a.cell_scale.empty()) o.cell_scale = triple(a.cell_scale, "--cell-scale");
   o.progress = [&progress](std::size_t done, std::size_t total) { progress.update("booleans", done, total); };
   FractureResult r;
   progress.say("fracturing " + a.mesh + " into " + std::to_string(a.pieces) + " pieces (" + a.sampler +
@@ -69,12 +103,14 @@ int run_fracture(const FractureArgs& a) {
     std::fprintf(stderr, "dtlab fracture: %s: %s\n", a.mesh.c_str(), e.what());
     return kDefect;
   }
-  nlohmann::json m = fracture_manifest(r);
+  nlohmann::json m = fracture_manifest(r, a.density);
   m["input"] = a.mesh;
   m["options"] = {{"pieces", a.pieces}, {"sampler", a.sampler}, {"seed", a.seed}, {"gap", a.gap}, {"margin", a.gap},
                   {"blue_noise", a.blue_noise}, {"explode", a.explode}, {"recurse", a.recurse},
                   {"recurse_pieces", a.recurse_pieces}, {"repair", a.repair}, {"split", a.split}, {"vtu", a.vtu},
-                  {"boolean_seconds", a.boolean_seconds}};
+                  {"boolean_seconds", a.boolean_seconds}, {"sites", a.sites.empty() ? "sampler" : a.sites},
+                  {"impact", a.impact}, {"impact_radius", a.impact_radius}, {"site_noise", a.site_noise},
+                  {"island_split", !a.no_island_split}, {"cell_scale", a.cell_scale}, {"density", a.density}};
   if (!a.out.empty()) {
     progress.say("writing " + std::to_string(r.pieces.size()) + " pieces to " + a.out);
     std::filesystem::create_directories(a.out);
@@ -83,6 +119,8 @@ int run_fracture(const FractureArgs& a) {
     write_pieces_mtl(a.out + "/pieces.mtl");
     if (a.repair) write_off(a.out + "/repaired.off", r.input);
     if (a.vtu) write_pieces_vtu(a.out + "/pieces.vtu", r, parse_vtu_format(a.vtu_format));
+    if (a.surfaces) write_piece_surfaces_vtu(a.out + "/surfaces.vtu", r, parse_vtu_format(a.vtu_format));
+    if (a.gltf) write_pieces_gltf(a.out + "/pieces.gltf", r);
     if (a.split) {
       std::filesystem::create_directories(a.out + "/pieces");
       m["split_files"] = write_piece_files(a.out + "/pieces", r);
@@ -110,8 +148,9 @@ int run_fracture(const FractureArgs& a) {
     std::printf("%s: %zu pieces (%zu booleans, %zu skipped), mesh volume %.12g, relative volume error %.3g\n",
                 a.mesh.c_str(), r.pieces.size(), r.booleans, r.skipped, r.mesh_volume, rel);
     if (!a.out.empty())
-      std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s%s}\n", a.out.c_str(),
-                  a.split ? ", pieces/piece_NNNN.obj" : "", a.vtu ? ", pieces.vtu" : "");
+      std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s%s%s%s}\n", a.out.c_str(),
+                  a.split ? ", pieces/piece_NNNN.obj" : "", a.vtu ? ", pieces.vtu" : "",
+                  a.surfaces ? ", surfaces.vtu" : "", a.gltf ? ", pieces.gltf" : "");
   }
   // With a gap the pieces are meant to lose volume; without one they must tile the mesh.
   return a.gap == 0 && rel > 1e-9 ? kDefect : kOk;
@@ -145,6 +184,25 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_flag("--vtu", args->vtu, "also write OUT/pieces.vtu (a polyhedron cell per piece) for ParaView");
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
       ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
+  sub->add_option("--sites", args->sites,
+                  "sites from a file (.xyz .node, or a mesh file's vertices) or 'mesh-vertices' (a seeded subset of "
+                  "--pieces of them); default: --sampler")
+      ->type_name("FILE|mesh-vertices");
+  sub->add_option("--impact", args->impact, "cluster the sites around this point (density falls off with distance)")
+      ->delimiter(',')->check(number_in(-1e300, 1e300))->type_name("X,Y,Z");
+  sub->add_option("--impact-radius", args->impact_radius, "--impact: standard deviation of the fall-off (mesh units)")
+      ->check(number_in(0, 1e300))->capture_default_str();
+  sub->add_option("--site-noise", args->site_noise, "jitter every site by up to this times the mesh's box diagonal")
+      ->check(number_in(0, 10))->capture_default_str();
+  sub->add_flag("--no-island-split", args->no_island_split,
+                "keep the disconnected chunks of one cell together as one piece (default: one piece per island)");
+  sub->add_option("--cell-scale", args->cell_scale, "anisotropic cells: stretch them by these factors (e.g. 1,1,4)")
+      ->delimiter(',')->check(number_in(1e-6, 1e6))->type_name("SX,SY,SZ");
+  sub->add_flag("--surfaces", args->surfaces,
+                "also write OUT/surfaces.vtu: every piece as closed triangles with a 'piece' array (VTK integrates it)");
+  sub->add_flag("--gltf", args->gltf, "also write OUT/pieces.gltf (glTF 2.0: a node per piece, cut faces a 2nd material)");
+  sub->add_option("--density", args->density, "mass density for the manifest's mass and mass_inertia")
+      ->check(number_in(1e-300, 1e300))->capture_default_str();
   sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file")->type_name("FILE");
   sub->add_option("--out", args->out, "output folder (pieces.obj, exploded.obj, manifest.json, adjacency.txt)")
       ->type_name("DIR");

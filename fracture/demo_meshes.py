@@ -3,13 +3,17 @@
 
     python3 fracture/demo_meshes.py DTLAB MESH_DIR [--pieces 20] [--seed 3] [--timeout 60]
                                     [--jobs 1] [--out table.md] [--only a.off,b.off]
+                                    [--tolerance 1e-9] [--extra "--no-island-split"]
 
 For each mesh: `dtlab mesh check --json` (the problems found), then
 `dtlab fracture MESH --repair --pieces N --seed S --out TMP --json` under a wall-clock
 timeout. The pieces are then checked here, independently of dtlab: pieces.obj is read,
 every piece must be closed and edge-manifold (each directed edge once, its reverse
-once), and the signed volumes of the pieces (divergence theorem, in Python floats) must
-sum to the volume of repaired.off to 1e-9. Prints a Markdown table and a tally.
+once), of positive volume, and the signed volumes of the pieces (divergence theorem, in
+Python floats) must sum to the volume of repaired.off to --tolerance (relative). The
+`islands` column counts pieces with more than one connected component of positive
+volume (through shared edges; a shell of negative volume is a cavity inside its piece):
+0 unless --extra --no-island-split. Prints a Markdown table and a tally.
 """
 import argparse
 import concurrent.futures
@@ -73,6 +77,31 @@ def closed_manifold(tris):
     return bool(tris) and all((b, a) in edges for a, b in edges)
 
 
+def components(verts, tris):
+    """(shells, cavities): connected components of a triangle list through shared
+    (undirected) edges, of positive and of negative signed volume."""
+    parent = list(range(len(tris)))
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    first = {}
+    for i, t in enumerate(tris):
+        for k in range(3):
+            e = (min(t[k], t[(k + 1) % 3]), max(t[k], t[(k + 1) % 3]))
+            if e in first:
+                parent[find(i)] = find(first[e])
+            else:
+                first[e] = i
+    comps = {}
+    for i in range(len(tris)):
+        comps.setdefault(find(i), []).append(tris[i])
+    vols = [volume(verts, c) for c in comps.values()]
+    return sum(v > 0 for v in vols), sum(v <= 0 for v in vols)
+
+
 def short_problems(report):
     words = []
     if report['triangles'] == 0:
@@ -118,7 +147,7 @@ def short_step(step):
 def run_one(dtlab, mesh, args):
     name = os.path.basename(mesh)
     row = {'mesh': name, 'problems': '?', 'repairs': '', 'pieces': 0, 'error': None, 'seconds': 0.0,
-           'ok': False, 'reason': ''}
+           'ok': False, 'reason': '', 'multi': 0, 'sites': 0, 'cavities': 0}
     try:
         check = subprocess.run([dtlab, 'mesh', 'check', mesh, '--json'], capture_output=True, text=True,
                                timeout=args.timeout)
@@ -129,7 +158,7 @@ def run_one(dtlab, mesh, args):
         t0 = time.time()
         try:
             p = subprocess.run([dtlab, 'fracture', mesh, '--repair', '--pieces', str(args.pieces), '--seed',
-                                str(args.seed), '--out', tmp, '--json', '--threads', '1'],
+                                str(args.seed), '--out', tmp, '--json', '--threads', '1'] + args.extra.split(),
                                capture_output=True, text=True, timeout=args.timeout)
         except subprocess.TimeoutExpired:
             row['seconds'] = time.time() - t0
@@ -147,11 +176,18 @@ def run_one(dtlab, mesh, args):
         solid = volume(rv, rt)
         total = sum(volume(verts, t) for t in pieces)
         row['pieces'] = len(pieces)
+        row['sites'] = len({p.get('site_index', i) for i, p in enumerate(manifest['pieces'])})
+        shells = [components(verts, t) for t in pieces]
+        row['multi'] = sum(s > 1 for s, _ in shells)
+        row['cavities'] = sum(c for _, c in shells)
         row['error'] = abs(total - solid) / abs(solid) if solid else float('inf')
         bad = sum(not closed_manifold(t) for t in pieces)
+        inside_out = sum(volume(verts, t) <= 0 for t in pieces)
         if bad:
             row['reason'] = f'{bad} pieces not closed/manifold'
-        elif row['error'] > 1e-9:
+        elif inside_out:
+            row['reason'] = f'{inside_out} pieces of volume <= 0'
+        elif row['error'] > args.tolerance:
             row['reason'] = f"volume error {row['error']:.1e}"
         else:
             row['ok'] = True
@@ -168,6 +204,8 @@ def main():
     ap.add_argument('--jobs', type=int, default=1)
     ap.add_argument('--only', default='')
     ap.add_argument('--out', default='')
+    ap.add_argument('--tolerance', type=float, default=1e-9)
+    ap.add_argument('--extra', default='', help='more fracture options, e.g. "--no-island-split"')
     args = ap.parse_args()
     meshes = sorted(os.path.join(args.mesh_dir, f) for f in os.listdir(args.mesh_dir) if f.endswith('.off'))
     if args.only:
@@ -175,17 +213,23 @@ def main():
         meshes = [m for m in meshes if os.path.basename(m) in keep]
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         rows = list(pool.map(lambda m: run_one(args.dtlab, m, args), meshes))
-    lines = ['| mesh | problems found | repairs | pieces | volume error | seconds | result |',
-             '| --- | --- | --- | ---: | ---: | ---: | --- |']
+    lines = ['| mesh | problems found | repairs | sites | pieces | islands | volume error | seconds | result |',
+             '| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | --- |']
     for r in rows:
         err = '' if r['error'] is None else f"{r['error']:.1e}"
-        lines.append(f"| {r['mesh']} | {r['problems']} | {r['repairs']} | {r['pieces'] or ''} | {err} | "
+        lines.append(f"| {r['mesh']} | {r['problems']} | {r['repairs']} | {r['sites'] or ''} | {r['pieces'] or ''} | "
+                     f"{r['multi'] if r['pieces'] else ''} | {err} | "
                      f"{r['seconds']:.1f} | {'fractured' if r['ok'] else r['reason']} |")
     ok = sum(r['ok'] for r in rows)
     slowest = max((r['seconds'] for r in rows), default=0)
     lines.append('')
-    lines.append(f"**{ok} of {len(rows)} fractured** into closed, manifold pieces whose volumes sum to the repaired "
-                 f"solid's (1e-9); slowest {slowest:.1f} s.")
+    multi = sum(r['multi'] for r in rows)
+    split = sum(r['pieces'] - r['sites'] for r in rows if r['ok'])
+    cavities = sum(r['cavities'] for r in rows)
+    lines.append(f"**{ok} of {len(rows)} fractured** into closed, manifold pieces of positive volume whose volumes "
+                 f"sum to the repaired solid's ({args.tolerance:g}); {multi} pieces with more than one connected "
+                 f"component; {split} pieces more than sites (islands); {cavities} cavity shells inside pieces; "
+                 f"slowest {slowest:.1f} s.")
     text = '\n'.join(lines) + '\n'
     if args.out:
         open(args.out, 'w').write(text)

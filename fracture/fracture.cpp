@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "fracture/anisotropic_cells.hpp"
+#include "fracture/islands.hpp"
 #include "voronoi/voronoi.hpp"
 
 namespace dtlab {
@@ -20,55 +22,79 @@ struct Level {
   std::size_t booleans = 0, skipped = 0;
 };
 
-// One level of fracture of `clipper`'s mesh; piece i belongs to site i (empty pieces,
-// of cells that miss the mesh, are dropped and neighbour ids renumbered).
-Level fracture_once(const MeshClipper& clipper, const FractureOptions& o, std::uint64_t seed,
-                    std::size_t count, FractureResult& timing) {
-  auto t0 = Clock::now();
+// The level's sites: the top level's from the chosen source, a recursion's sampled.
+std::vector<Point3> level_sites(const MeshClipper& clipper, const FractureOptions& o, const SiteOptions& source,
+                                std::uint64_t seed, std::size_t count) {
   MeshSampler sampler(clipper.mesh());
   SampleRequest req;
   req.method = o.sampler;
   req.count = count;
   req.seed = seed;
   req.blue_noise = o.blue_noise;
-  std::vector<Point3> sites = sampler.sample(req).points;
+  std::vector<Point3> sites = choose_sites(sampler, clipper.mesh(), source, req);
   if (sites.empty()) throw std::runtime_error("the sampler found no site inside the mesh");
-  timing.seconds_sampling += since(t0);
+  return sites;
+}
 
-  t0 = Clock::now();
+// The cells only need to cover the mesh (its box, grown a little) and hold every site.
+ScaledCells level_cells(const MeshClipper& clipper, const FractureOptions& o, const std::vector<Point3>& sites) {
   VoronoiOptions vo;
   vo.margin = 0.05;
-  // The cells only need to cover the mesh: its box, grown a little.
   Box3 mb = bounding_box(clipper.mesh());
+  for (const auto& s : sites) mb.add(s);
   const Point3 g = 0.05 * mb.extent() + Point3{1e-9, 1e-9, 1e-9};
   vo.box = vor::Box{mb.lo - g, mb.hi + g};
   vo.shrink = 0.5 * o.margin;
-  VoronoiDiagram vd = compute_voronoi(sites, vo);
+  if (o.cell_scale.x == 1 && o.cell_scale.y == 1 && o.cell_scale.z == 1) return {compute_voronoi(sites, vo), {}};
+  return anisotropic_voronoi(sites, vo, o.cell_scale);
+}
+
+// Site i's piece, split into its islands (or kept whole), tags naming islands.
+std::vector<Piece> level_islands(std::vector<PieceMesh> geometry, const std::vector<Point3>& sites, bool split) {
+  std::vector<PieceMesh> islands;
+  std::vector<IslandRef> refs;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    if (geometry[i].mesh.triangles.empty()) continue;  // the cell misses the mesh
+    std::vector<PieceMesh> parts = split ? split_islands(geometry[i]) : std::vector<PieceMesh>{std::move(geometry[i])};
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      refs.push_back({i, k});
+      islands.push_back(std::move(parts[k]));
+    }
+  }
+  retag_to_islands(islands, refs, sites.size());
+  std::vector<std::size_t> count(sites.size(), 0);
+  for (const auto& r : refs) ++count[r.site];
+  std::vector<Piece> pieces(islands.size());
+  for (std::size_t k = 0; k < islands.size(); ++k) {
+    pieces[k].geometry = std::move(islands[k]);
+    pieces[k].site = sites[refs[k].site];
+    pieces[k].site_index = static_cast<std::int64_t>(refs[k].site);
+    pieces[k].island = static_cast<std::int64_t>(refs[k].island);
+    pieces[k].site_islands = count[refs[k].site];
+  }
+  return pieces;
+}
+
+// One level of fracture of `clipper`'s mesh: one piece per island of each site's cell
+// (cells that miss the mesh give none); cut tags name pieces of the level.
+Level fracture_once(const MeshClipper& clipper, const FractureOptions& o, const SiteOptions& source,
+                    std::uint64_t seed, std::size_t count, FractureResult& timing) {
+  auto t0 = Clock::now();
+  const std::vector<Point3> sites = level_sites(clipper, o, source, seed, count);
+  timing.seconds_sampling += since(t0);
+
+  t0 = Clock::now();
+  const ScaledCells cells = level_cells(clipper, o, sites);
   timing.seconds_voronoi += since(t0);
 
   t0 = Clock::now();
-  Level level;
-  std::vector<Piece> all(sites.size());
-  std::vector<PieceMesh> geometry = clipper.intersect_all(vd.cells, o.threads);
-  for (std::size_t i = 0; i < sites.size(); ++i) {
-    all[i].geometry = std::move(geometry[i]);
-    all[i].site = sites[i];
-    all[i].site_index = static_cast<std::int64_t>(i);
-  }
+  std::vector<PieceMesh> geometry = clipper.intersect_all(cells.diagram.cells, o.threads);
   timing.seconds_boolean += since(t0);
-  std::vector<std::int64_t> renum(sites.size(), -1);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    if (all[i].geometry.mesh.triangles.empty()) continue;
-    renum[i] = static_cast<std::int64_t>(level.pieces.size());
-    if (all[i].geometry.boolean_skipped) ++level.skipped;
-    else ++level.booleans;
-    level.pieces.push_back(std::move(all[i]));
-  }
-  for (auto& p : level.pieces) {
-    for (auto& tag : p.geometry.cut_tag)
-      if (tag >= 0) tag = static_cast<std::int32_t>(renum[tag]);
-    measure_piece(p);
-  }
+  Level level;
+  for (const auto& g : geometry)
+    if (!g.mesh.triangles.empty()) ++(g.boolean_skipped ? level.skipped : level.booleans);
+  level.pieces = level_islands(std::move(geometry), sites, o.island_split);
+  for (auto& p : level.pieces) measure_piece(p);
   return level;
 }
 }  // namespace
@@ -135,7 +161,7 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
   clipper.set_progress(o.progress);
   r.input = clipper.mesh();
   r.mesh_volume = clipper.volume();
-  Level top = fracture_once(clipper, o, o.seed, o.pieces, r);
+  Level top = fracture_once(clipper, o, o.sites, o.seed, o.pieces, r);
   r.booleans += top.booleans;
   r.skipped += top.skipped;
 
@@ -164,7 +190,7 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
                                pr.why_not_solid());
     MeshClipper sub_clipper(parent.geometry.mesh);
     sub_clipper.set_time_budget(o.boolean_seconds);
-    Level sub = fracture_once(sub_clipper, o, o.seed * 1000003 + i, o.recurse_pieces, r);
+    Level sub = fracture_once(sub_clipper, o, SiteOptions{}, o.seed * 1000003 + i, o.recurse_pieces, r);
     r.booleans += sub.booleans;
     r.skipped += sub.skipped;
     // Parent cut planes, to recognise the parent's cut faces on the sub-pieces.

@@ -8,12 +8,16 @@
 
 #include "fracture/cell_boolean.hpp"
 #include "fracture/mesh_repair.hpp"
+#include "fracture/site_sources.hpp"
 #include "sampling/mesh_sampler.hpp"
 
 namespace dtlab {
 
 struct FractureOptions {
   std::size_t pieces = 20;
+  SiteOptions sites;                 // where the top-level sites come from (recursion samples)
+  bool island_split = true;          // each connected chunk of a cell's piece is a piece
+  Point3 cell_scale{1, 1, 1};        // anisotropic cells: distances measured after dividing by this
   SampleMethod sampler = SampleMethod::winding;
   bool blue_noise = false;
   std::uint64_t seed = 1;
@@ -37,6 +41,8 @@ struct Piece {
   Point3 site{0, 0, 0};
   int parent = -1;                       // top-level piece it was split from (recursion)
   std::int64_t site_index = -1;          // its site among its level's sites
+  std::int64_t island = 0;               // its place among its site's islands (largest first)
+  std::size_t site_islands = 1;          // how many islands its site's cell cut off
 };
 
 struct FractureResult {

@@ -73,7 +73,7 @@ void write_pieces_mtl(const std::string& path) {
 
 void write_pieces_vtu(const std::string& path, const FractureResult& r, VtuFormat format) {
   VtuGrid g;
-  std::vector<std::int64_t> piece, site, parent, cut;
+  std::vector<std::int64_t> piece, site, island, parent, cut;
   std::vector<double> volume, interior;
   std::vector<std::uint8_t> skipped;
   std::vector<std::uint32_t> offsets, corners;
@@ -89,6 +89,7 @@ void write_pieces_vtu(const std::string& path, const FractureResult& r, VtuForma
     g.add_polyhedron(m.vertices, offsets, corners);
     piece.push_back(static_cast<std::int64_t>(i));
     site.push_back(p.site_index);
+    island.push_back(p.island);
     parent.push_back(p.parent);
     volume.push_back(p.volume);
     interior.push_back(p.interior_area);
@@ -97,6 +98,7 @@ void write_pieces_vtu(const std::string& path, const FractureResult& r, VtuForma
   }
   g.cell_data.push_back({"piece", std::move(piece)});
   g.cell_data.push_back({"site", std::move(site)});
+  g.cell_data.push_back({"island", std::move(island)});
   g.cell_data.push_back({"parent", std::move(parent)});
   g.cell_data.push_back({"volume", std::move(volume)});
   g.cell_data.push_back({"interior_area", std::move(interior)});
@@ -105,7 +107,33 @@ void write_pieces_vtu(const std::string& path, const FractureResult& r, VtuForma
   write_vtu_grid(path, g, format);
 }
 
-nlohmann::json fracture_manifest(const FractureResult& r) {
+void write_piece_surfaces_vtu(const std::string& path, const FractureResult& r, VtuFormat format) {
+  constexpr std::uint8_t kVtkTriangle = 5;
+  VtuGrid g;
+  std::vector<std::int64_t> piece, site, island;
+  std::vector<std::uint8_t> cut;
+  for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+    const Piece& p = r.pieces[i];
+    const auto base = static_cast<std::int64_t>(g.points.size());
+    g.points.insert(g.points.end(), p.geometry.mesh.vertices.begin(), p.geometry.mesh.vertices.end());
+    for (std::size_t t = 0; t < p.geometry.mesh.triangles.size(); ++t) {
+      for (auto v : p.geometry.mesh.triangles[t]) g.connectivity.push_back(base + v);
+      g.offsets.push_back(static_cast<std::int64_t>(g.connectivity.size()));
+      g.types.push_back(kVtkTriangle);
+      piece.push_back(static_cast<std::int64_t>(i));
+      site.push_back(p.site_index);
+      island.push_back(p.island);
+      cut.push_back(p.geometry.cut[t] ? 1 : 0);
+    }
+  }
+  g.cell_data.push_back({"piece", std::move(piece)});
+  g.cell_data.push_back({"site", std::move(site)});
+  g.cell_data.push_back({"island", std::move(island)});
+  g.cell_data.push_back({"cut", std::move(cut)});
+  write_vtu_grid(path, g, format);
+}
+
+nlohmann::json fracture_manifest(const FractureResult& r, double density) {
   nlohmann::json pieces = nlohmann::json::array();
   double sum = 0;
   for (std::size_t i = 0; i < r.pieces.size(); ++i) {
@@ -119,6 +147,13 @@ nlohmann::json fracture_manifest(const FractureResult& r) {
     const auto& I = p.inertia;
     j["inertia"] = {{I[0], I[1], I[2]}, {I[3], I[4], I[5]}, {I[6], I[7], I[8]}};
     j["site"] = point_json(p.site);
+    j["site_index"] = p.site_index;
+    j["island"] = p.island;
+    j["site_islands"] = p.site_islands;
+    j["mass"] = density * p.volume;
+    j["mass_inertia"] = {{density * I[0], density * I[1], density * I[2]},
+                         {density * I[3], density * I[4], density * I[5]},
+                         {density * I[6], density * I[7], density * I[8]}};
     j["interior_area"] = p.interior_area;
     j["neighbors"] = p.neighbors;
     j["triangles"] = p.geometry.mesh.triangles.size();
@@ -136,6 +171,7 @@ nlohmann::json fracture_manifest(const FractureResult& r) {
   m["mesh_volume"] = r.mesh_volume;
   m["piece_volume_sum"] = sum;
   m["relative_volume_error"] = r.mesh_volume != 0 ? std::abs(sum - r.mesh_volume) / r.mesh_volume : 0.0;
+  m["density"] = density;
   m["booleans"] = r.booleans;
   m["skipped_booleans"] = r.skipped;
   m["seconds"] = {{"sampling", r.seconds_sampling}, {"voronoi", r.seconds_voronoi}, {"boolean", r.seconds_boolean}};

@@ -24,6 +24,11 @@ std::vector<std::string> write_piece_files(const std::string& dir, const Fractur
 // level), `volume`, `interior_area`, `cut_triangles` and `boolean_skipped` (1: copied
 // whole, its cell held it without a boolean).
 void write_pieces_vtu(const std::string& path, const FractureResult& r, VtuFormat format = VtuFormat::binary);
-nlohmann::json fracture_manifest(const FractureResult& r);
+// Every piece as its closed triangles (VTK_TRIANGLE cells, the piece's own points),
+// with cell data `piece`, `site`, `island`, `cut` (1 on cut faces): the form VTK
+// integrates correctly (vtkMassProperties per piece), unlike non-convex polyhedron cells.
+void write_piece_surfaces_vtu(const std::string& path, const FractureResult& r, VtuFormat format = VtuFormat::binary);
+// `density` scales the per-piece `mass` and `mass_inertia` (inertia stays unit density).
+nlohmann::json fracture_manifest(const FractureResult& r, double density = 1);
 
 }  // namespace dtlab

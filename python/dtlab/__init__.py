@@ -226,9 +226,29 @@ def sample(mesh: MeshLike, n: int, method: str = "winding", seed: int = 1, *, bl
     return pts
 
 
+def _site_source(sites: Any) -> tuple[str, Any]:
+    if sites is None:
+        return "sampler", None
+    if isinstance(sites, str):
+        if sites != "mesh-vertices":
+            raise ValueError("sites: an (n, 3) array or 'mesh-vertices'")
+        return "mesh-vertices", None
+    return "points", sites
+
+
+def _triple(values: Sequence[float], option: str) -> tuple[float, float, float]:
+    t = tuple(float(c) for c in values)
+    if len(t) != 3:
+        raise ValueError(f"{option} takes three numbers")
+    return t  # type: ignore[return-value]
+
+
 def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin: float = 0.0, *,
              sampler: str = "winding", blue_noise: bool = False, threads: int = 0,
-             recurse: Iterable[int] = (), recurse_pieces: int = 4) -> Pieces:
+             recurse: Iterable[int] = (), recurse_pieces: int = 4, sites: Any = None,
+             impact: Sequence[float] | None = None, impact_radius: float = 0.0, site_noise: float = 0.0,
+             island_split: bool = True, cell_scale: Sequence[float] = (1.0, 1.0, 1.0),
+             density: float = 1.0) -> Pieces:
     """Voronoi fracture of a closed triangle mesh into closed pieces.
 
     `pieces` sites are sampled inside the mesh (sampler "winding", "sdf" or "rays",
@@ -238,13 +258,21 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
     Returns Pieces, a list of Piece (vertices, faces, cut-face mask, volume, ...)
     with mesh_volume and relative_volume_error. A mesh that is not closed, manifold
     and free of self-intersections raises ValueError. `dtlab.fracture(*dtlab.read_mesh(path))`
-    fractures a file.
+    fractures a file. As the CLI's options: sites (an (n, 3) array, used as given, or
+    "mesh-vertices": a seeded subset of `pieces` vertices), impact (x, y, z) with
+    impact_radius (sites crowd around it), site_noise (jitter relative to the box
+    diagonal), island_split (False: a cell's disconnected chunks stay one piece),
+    cell_scale (anisotropic cells), density (the manifest's mass and mass_inertia).
     """
     raw = _core.fracture(vertices, faces, _count(pieces, "--pieces"), _seed(seed), float(margin), sampler,
                          bool(blue_noise), _count(threads, "threads"), [_count(r, "--recurse") for r in recurse],
-                         _count(recurse_pieces, "--recurse-pieces"))
+                         _count(recurse_pieces, "--recurse-pieces"),
+                         *_site_source(sites), None if impact is None else _triple(impact, "--impact"),
+                         float(impact_radius), float(site_noise), bool(island_split),
+                         _triple(cell_scale, "--cell-scale"), float(density))
     out = Pieces(Piece(p["vertices"], p["faces"], p["cut"], p["cut_tag"], float(p["volume"]), tuple(p["centroid"]),
-                       tuple(p["site"]), float(p["interior_area"]), p["neighbors"], int(p["parent"]))
+                       tuple(p["site"]), float(p["interior_area"]), p["neighbors"], int(p["parent"]),
+                       int(p["site_index"]), int(p["island"]))
                  for p in raw["pieces"])
     out.manifest = raw["manifest"]
     out.mesh_volume = float(raw["manifest"]["mesh_volume"])

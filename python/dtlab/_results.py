@@ -257,7 +257,8 @@ class Piece:
     cuts (interior faces of the object); cut_tag: per cut face the neighbouring site
     (or wall) whose bisector it lies on; volume, centroid, site, interior_area (area
     of the cut faces), neighbors (pieces sharing a cut face), parent (the top-level
-    piece it was split from by `recurse`, else -1).
+    piece it was split from by `recurse`, else -1), site_index (its site among its
+    level's) and island (its place among that site's islands, largest first).
     """
 
     vertices: np.ndarray
@@ -270,6 +271,8 @@ class Piece:
     interior_area: float
     neighbors: np.ndarray
     parent: int
+    site_index: int = -1
+    island: int = 0
 
 
 class Pieces(list[Piece]):

@@ -1,6 +1,9 @@
 // _core.fracture: Voronoi fracture of a closed mesh given as arrays.
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <optional>
+
 #include "fracture/fracture.hpp"
 #include "fracture/piece_io.hpp"
 #include "python/src/bindings.hpp"
@@ -15,11 +18,43 @@ namespace {
 
 py::tuple point_tuple(const Point3& p) { return py::make_tuple(p.x, p.y, p.z); }
 
+// The CLI's --sites / --impact / --site-noise: site_source "sampler", "mesh-vertices"
+// or "points" (then `sites`, an (n, 3) array).
+SiteOptions site_options(const std::string& source, py::handle sites, std::optional<std::array<double, 3>> impact,
+                         double impact_radius, double site_noise) {
+  SiteOptions s;
+  if (source == "mesh-vertices") {
+    s.source = SiteSource::mesh_vertices;
+  } else if (source == "points") {
+    s.source = SiteSource::points;
+    const DoubleArray a = point_array(sites, "sites");
+    const auto pts = points_of(a);
+    s.points.assign(pts.begin(), pts.end());
+    if (s.points.empty()) throw py::value_error("sites: no points");
+  } else if (source != "sampler") {
+    throw py::value_error("sites: an (n, 3) array or 'mesh-vertices'");
+  }
+  if (impact) {
+    for (double c : *impact)
+      if (!std::isfinite(c)) throw py::value_error("--impact: coordinates must be finite");
+    if (!(impact_radius > 0 && impact_radius <= 1e300)) throw py::value_error("--impact needs --impact-radius R > 0");
+    if (s.source == SiteSource::points)
+      throw py::value_error("--impact chooses sampled sites or mesh-vertices, not --sites FILE");
+    s.impact = Point3{(*impact)[0], (*impact)[1], (*impact)[2]};
+  }
+  s.impact_radius = impact_radius;
+  if (!(site_noise >= 0 && site_noise <= 10)) throw py::value_error("--site-noise: not in [0 - 10]");
+  s.noise = site_noise;
+  return s;
+}
+
 // {"pieces": [per piece: vertices, faces, cut, cut_tag, volume, centroid, site,
 // interior_area, neighbors, parent], "manifest": `dtlab fracture --json`'s manifest}.
 py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std::uint64_t seed, double margin,
                   const std::string& sampler, bool blue_noise, unsigned threads,
-                  const std::vector<std::size_t>& recurse, std::size_t recurse_pieces) {
+                  const std::vector<std::size_t>& recurse, std::size_t recurse_pieces, const std::string& site_source,
+                  py::handle sites, std::optional<std::array<double, 3>> impact, double impact_radius,
+                  double site_noise, bool island_split, std::array<double, 3> cell_scale, double density) {
   const auto method = parse_sample_method(sampler);
   if (!method || *method == SampleMethod::surface)
     throw py::value_error("--sampler must be rays, sdf or winding (a volume sampler)");
@@ -37,13 +72,19 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
   o.threads = threads;
   o.recurse = recurse;
   o.recurse_pieces = recurse_pieces;
+  o.sites = site_options(site_source, sites, impact, impact_radius, site_noise);
+  o.island_split = island_split;
+  for (double c : cell_scale)
+    if (!(c >= 1e-6 && c <= 1e6)) throw py::value_error("--cell-scale: every factor must be in [1e-06 - 1e+06]");
+  o.cell_scale = {cell_scale[0], cell_scale[1], cell_scale[2]};
+  if (!(density > 0 && density <= 1e300)) throw py::value_error("--density: must be a positive number");
   FractureResult r;
   {
     py::gil_scoped_release nogil;
     r = fracture_mesh(mesh, o);  // std::invalid_argument (not closed, ...) -> ValueError
   }
   py::dict out;
-  out["manifest"] = json_to_python(fracture_manifest(r));
+  out["manifest"] = json_to_python(fracture_manifest(r, density));
   py::list list;
   for (Piece& p : r.pieces) {
     py::dict d;
@@ -61,6 +102,8 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
     d["interior_area"] = p.interior_area;
     d["neighbors"] = to_numpy<std::uint32_t, 1>(std::move(p.neighbors));
     d["parent"] = p.parent;
+    d["site_index"] = p.site_index;
+    d["island"] = p.island;
     list.append(d);
   }
   out["pieces"] = list;
@@ -72,7 +115,10 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
 void bind_fracture(py::module_& m) {
   m.def("fracture", &fracture, py::arg("vertices"), py::arg("faces"), py::arg("pieces"), py::arg("seed"),
         py::arg("margin"), py::arg("sampler"), py::arg("blue_noise"), py::arg("threads"), py::arg("recurse"),
-        py::arg("recurse_pieces"), "Voronoi fracture of a closed mesh (see dtlab.fracture).");
+        py::arg("recurse_pieces"), py::arg("site_source") = "sampler", py::arg("sites") = py::none(),
+        py::arg("impact") = py::none(), py::arg("impact_radius") = 0.0, py::arg("site_noise") = 0.0,
+        py::arg("island_split") = true, py::arg("cell_scale") = std::array<double, 3>{1, 1, 1},
+        py::arg("density") = 1.0, "Voronoi fracture of a closed mesh (see dtlab.fracture).");
 }
 
 }  // namespace dtlab::python
