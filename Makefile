@@ -36,6 +36,14 @@ test-slow: build
 asan:
 	@$(MAKE) --no-print-directory test PRESET=asan
 
+# ThreadSanitizer on what runs threads: the kernel's (parallel loop, writers), the
+# checker's ([threads] cases: parallel == serial) and the Voronoi tests.
+tsan: setup
+	@[ -f build/tsan/build.ninja ] || cmake --preset tsan >/dev/null
+	@cmake --build --preset tsan -j $(JOBS)
+	@ctest --test-dir build/tsan -L 'kernel|voronoi' -LE slow -j $(JOBS) --output-on-failure
+	@build/tsan/oracle/dtlab_oracle_tests "[threads]"
+
 bench: build
 	@$(BUILD)/bench/dtlab_bench_predicates
 

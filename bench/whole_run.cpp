@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "oracle/cgal_oracle.hpp"
+#include "oracle/peers.hpp"
 #include "oracle/tetgen_oracle.hpp"
 
 namespace dtlab {
@@ -20,12 +21,27 @@ struct ChildReport {
   double seconds;
   double peak_mb_self;
   double peak_mb_children;
+  double peak_mb_peer;  // a peer's helper process (oracle/peers.hpp), 0 for the others
   std::uint64_t tets;
   char note[200];
 };
 
+// A peer of `dtlab oracle` (cgal-parallel, gmsh-hxt) in its own helper process, unchecked:
+// its seconds are the triangulation as it times it, its peak the helper's.
+void run_peer_tool(const std::string& tool, const std::vector<Point3>& points, unsigned threads, ChildReport& rep) {
+  PeerOptions po;
+  po.check = false;
+  po.threads = threads;
+  const PeerRun r = run_peer(tool, points, po);
+  rep.ok = r.mesh.has_value() && r.verdict != Verdict::crashed && r.verdict != Verdict::hung;
+  rep.seconds = r.seconds;
+  rep.tets = r.mesh ? r.mesh->tets.size() : 0;
+  rep.peak_mb_peer = double(r.peak_rss_bytes) / (1024.0 * 1024.0);
+  std::snprintf(rep.note, sizeof rep.note, "%s", r.message.c_str());
+}
+
 ChildReport run_in_child(const std::string& tool, std::vector<Point3>& points,
-                         const PredicateSpec& spec, const BuildOptions& options) {
+                         const PredicateSpec& spec, const BuildOptions& options, unsigned threads) {
   ChildReport rep{};
   const auto report_build = [&rep](const BuildResult& r, std::chrono::steady_clock::time_point t0) {
     rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -56,6 +72,8 @@ ChildReport run_in_child(const std::string& tool, std::vector<Point3>& points,
     rep.ok = r.mesh.has_value();
     rep.seconds = r.seconds;
     rep.tets = r.mesh ? r.mesh->tets.size() : 0;
+  } else if (tool == "cgal-parallel" || tool == "gmsh-hxt") {
+    run_peer_tool(tool, points, threads, rep);
   } else if (tool == "tetgen") {
     OracleRun r = tetgen_delaunay(points);
     rep.ok = r.mesh.has_value();
@@ -76,7 +94,7 @@ ChildReport run_in_child(const std::string& tool, std::vector<Point3>& points,
 }  // namespace
 
 RunMeasure measure_run(const std::string& tool, std::vector<Point3>& points,
-                       const PredicateSpec& spec, const BuildOptions& options) {
+                       const PredicateSpec& spec, const BuildOptions& options, unsigned threads) {
   RunMeasure m;
   m.tool = tool;
   int fd[2];
@@ -88,7 +106,7 @@ RunMeasure measure_run(const std::string& tool, std::vector<Point3>& points,
   const pid_t pid = fork();
   if (pid == 0) {
     close(fd[0]);
-    ChildReport rep = run_in_child(tool, points, spec, options);
+    ChildReport rep = run_in_child(tool, points, spec, options, threads);
     const ssize_t w = write(fd[1], &rep, sizeof rep);
     _exit(w == sizeof rep ? 0 : 1);
   }
@@ -108,7 +126,9 @@ RunMeasure measure_run(const std::string& tool, std::vector<Point3>& points,
   m.tets = rep.tets;
   m.note = rep.note;
   // TetGen's memory is its own process's, not the parent's that waited for it.
-  m.peak_mb = tool == "tetgen" ? rep.peak_mb_children : double(usage.ru_maxrss) / 1024.0;
+  m.peak_mb = tool == "tetgen" ? rep.peak_mb_children
+              : rep.peak_mb_peer > 0 ? rep.peak_mb_peer
+                                     : double(usage.ru_maxrss) / 1024.0;
   m.bytes_per_tet = m.tets ? m.peak_mb * 1024.0 * 1024.0 / double(m.tets) : 0;
   return m;
 }

@@ -14,7 +14,7 @@
 namespace dtlab {
 
 struct RunMeasure {
-  std::string tool;         // "dtlab", "cgal", "tetgen"
+  std::string tool;         // "dtlab", "cgal", "tetgen", "cgal-parallel", ...
   bool ok = false;          // false: the tool gave no answer (crash, missing, timeout)
   double seconds = 0;       // triangulation wall time (TetGen: its whole process)
   double peak_mb = 0;       // peak resident memory (MiB) of the process that built it
@@ -24,9 +24,11 @@ struct RunMeasure {
 };
 
 // One run of `tool` on `points` in a forked child (the child may consume its copy of
-// `points`; the caller's is unchanged).
+// `points`; the caller's is unchanged). Tools: dtlab, dtlab-cgal-order, cgal, tetgen,
+// and the parallel peers cgal-parallel and gmsh-hxt on `threads` threads (in their
+// helper process, as `dtlab oracle` runs them; peak memory is the helper's).
 RunMeasure measure_run(const std::string& tool, std::vector<Point3>& points,
-                       const PredicateSpec& spec, const BuildOptions& options);
+                       const PredicateSpec& spec, const BuildOptions& options, unsigned threads = 1);
 
 struct BenchRow {
   std::string distribution;

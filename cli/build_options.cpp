@@ -28,6 +28,11 @@ void KernelArgs::add_to(CLI::App& app, unsigned which) {
         ->capture_default_str();
   if (which & kSeedOption)
     app.add_option("--seed", seed, "seed of the insertion order and of the walk")->check(seed_value())->capture_default_str();
+  if (which & kThreadsOption)
+    app.add_option("--threads", threads,
+                   "threads of the exact check, the file writers and the parallel peers, 0: all (the build is serial; the tets are the same for any count)")
+        ->transform(count_in(0, 1024))
+        ->capture_default_str();
 }
 
 PredicateSpec KernelArgs::predicate_spec() const {

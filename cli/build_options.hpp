@@ -20,6 +20,10 @@ enum KernelOption : unsigned {
   kOrderOption = 1u << 4,
   kSeedOption = 1u << 5,
   kAllKernelOptions = (1u << 6) - 1,
+  // --threads: not in kAllKernelOptions (voronoi and fracture have their own), named
+  // by the commands that take it. The build itself is serial; the threads run the
+  // exact check and the writers (kernel/README.md, "Threads").
+  kThreadsOption = 1u << 6,
 };
 
 struct KernelArgs {
@@ -30,6 +34,7 @@ struct KernelArgs {
   std::string boundary = "infinite";
   std::string order = "brio";
   std::uint64_t seed = 1;
+  unsigned threads = 0;  // 0: all hardware threads
 
   void add_to(CLI::App& app, unsigned which = kAllKernelOptions);
   PredicateSpec predicate_spec() const;

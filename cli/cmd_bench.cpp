@@ -13,6 +13,7 @@
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 #include "kernel/output_file.hpp"
+#include "kernel/parallel_for.hpp"
 #include "cli/number_options.hpp"
 #include "cli/point_source.hpp"
 
@@ -52,7 +53,7 @@ int run_bench(const BenchArgs& a) {
         BenchRow row{dist, n, tool, {}};
         for (int r = 0; r < a.runs; ++r) {
           progress.update("runs", done, total, dist + " n=" + std::to_string(n) + " " + tool);
-          row.runs.push_back(measure_run(tool, points, spec, options));
+          row.runs.push_back(measure_run(tool, points, spec, options, thread_count(a.kernel.threads)));
           ++done;
         }
         const bool any = row.median_seconds() > 0;
@@ -65,6 +66,8 @@ int run_bench(const BenchArgs& a) {
                             {"tets", last.tets},
                             {"bytes_per_tet", bytes_per_tet},
                             {"runs", a.runs}, {"note", last.note}};
+        // The threads the tool ran on: the parallel peers take --threads, the rest is serial.
+        j["threads"] = tool == "cgal-parallel" || tool == "gmsh-hxt" ? thread_count(a.kernel.threads) : 1u;
         all.push_back(j);
         if (a.json) continue;
         if (!any) {
@@ -97,15 +100,17 @@ void add_bench_command(CLI::App& app, int& rc) {
                   "(--dist is the old spelling)")
       ->delimiter(',')->capture_default_str();
   sub->add_option("--tools", args->tools,
-                  "dtlab, cgal, tetgen; dtlab-cgal-order: dtlab inserting in CGAL's spatial_sort order")
+                  "dtlab, cgal, tetgen; dtlab-cgal-order: dtlab inserting in CGAL's spatial_sort order; "
+                  "cgal-parallel, gmsh-hxt: the parallel peers on --threads threads")
       ->delimiter(',')
-      ->check(CLI::IsMember({"dtlab", "cgal", "tetgen", "dtlab-cgal-order"}))->capture_default_str();
+      ->check(CLI::IsMember({"dtlab", "cgal", "tetgen", "dtlab-cgal-order", "cgal-parallel", "gmsh-hxt"}))
+      ->capture_default_str();
   sub->add_option("--runs", args->runs, "runs per tool and size (median reported)")->transform(count_in(1, 1000))->capture_default_str();
   sub->add_option("--points-seed", args->seed, "seed of the generated points")->check(seed_value())->capture_default_str();
   sub->add_option("--out", args->out, "also write the rows as JSON to this file")->type_name("FILE");
   sub->add_flag("--json", args->json, "print the rows as JSON instead of a table");
   sub->add_flag("--quiet", args->quiet, "no progress lines on stderr");
-  args->kernel.add_to(*sub);
+  args->kernel.add_to(*sub, kAllKernelOptions | kThreadsOption);
   sub->callback([args, &rc] { rc = run_bench(*args); });
 }
 

@@ -19,6 +19,7 @@
 #include "cli/input_points.hpp"
 #include "kernel/build.hpp"
 #include "kernel/input_error.hpp"
+#include "kernel/parallel_for.hpp"
 #include "kernel/point_io.hpp"
 #include "oracle/check.hpp"
 #include "oracle/compare.hpp"
@@ -52,6 +53,7 @@ void run_oracle(const Args& a, int& rc) {
   o.peers.timeout_s = a.timeout;
   o.peers.memory_bytes = static_cast<std::uint64_t>(a.memory_mb * 1e6);
   o.peers.tetgen = a.tetgen;
+  o.peers.threads = thread_count(a.kernel.threads);
   try {
     expand_peer_names(a.against);
   } catch (const std::invalid_argument& e) {
@@ -115,7 +117,7 @@ void add_oracle_command(CLI::App& app, int& rc) {
   sub->add_option("--memory", a->memory_mb, "memory limit per peer in MB (0: half the machine's)")->check(number_in(0, 1e9));
   sub->add_flag("--json", a->json, "print a JSON object keyed by peer on stdout");
   sub->add_flag("--quiet", a->quiet, "no progress lines on stderr");
-  a->kernel.add_to(*sub);  // how dtlab's own DT is built, as in tetra
+  a->kernel.add_to(*sub, kAllKernelOptions | kThreadsOption);  // how dtlab's own DT is built, as in tetra
   sub->footer(
       "Verdicts: delaunay, triangulation, flat-tets, invalid, unproven, missing-points, extra-points, crashed, hung, refused, "
       "not-installed.\nExit: 0 ok, 1 dtlab wrong or differing, 2 bad input, 3 some peer gave no answer.");

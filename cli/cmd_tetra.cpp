@@ -1,6 +1,7 @@
 // dtlab tetra INPUT: the Delaunay tetrahedralization of a point file. With --check the
 // result is verified by the exact checker (exit 1 on a defect); without it, a build
 // with a non-robust backend (naive, epsilon) says that it is unverified.
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -13,6 +14,9 @@
 #include "cli/input_points.hpp"
 #include "cli/tetra_report.hpp"
 #include "kernel/input_error.hpp"
+#include "kernel/node_reuse.hpp"
+#include "kernel/npy_writer.hpp"
+#include "kernel/parallel_for.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
 #include "oracle/check.hpp"
@@ -26,6 +30,7 @@ struct TetraArgs {
   std::string out;
   bool vtu = false;
   std::string vtu_format = "binary";
+  std::string format = "node";
   bool json = false;
   bool check = false;
   KernelArgs kernel;
@@ -33,17 +38,43 @@ struct TetraArgs {
 
 bool robust_backend(const std::string& predicates) { return predicates == "adaptive" || predicates == "exact"; }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The output files; returns what became of PREFIX.node (written, copied, kept).
+std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, int first_index) {
+  const unsigned threads = a.kernel.threads;
+  std::string node = "written";
+  if (a.format == "npy") {
+    write_npy(a.out, mesh);
+    node = "none";
+  } else {
+    const NodeReuse reuse = a.input.ends_with(".node") && first_index == 0 ? reuse_node_file(a.input, a.out + ".node")
+                                                                          : NodeReuse::none;
+    if (reuse == NodeReuse::none) write_node(a.out + ".node", mesh.points, threads);
+    node = reuse == NodeReuse::same_file ? "kept" : reuse == NodeReuse::copied ? "copied" : "written";
+    write_ele(a.out + ".ele", mesh.tets, threads);
+  }
+  if (a.vtu) write_vtu(a.out + ".vtu", mesh, parse_vtu_format(a.vtu_format));
+  return node;
+}
+
 int run_tetra(const TetraArgs& a) {
   const BuildOptions options = a.kernel.build_options();
+  const auto start = std::chrono::steady_clock::now();
   PointFile in = read_input_points(a.input);
+  const double read_seconds = seconds_since(start);
   BuildResult r = build_delaunay(std::move(in.points), a.kernel.predicate_spec(), options);
   // No 3D triangulation (fewer than 4 points, all coplanar): bad input, exit 2.
   if (r.failure && r.failure->kind == FailureKind::lower_dimensional) throw InputError(a.input, 0, r.failure->detail);
-  if (!a.out.empty()) {
-    write_tetgen(a.out, r.mesh);
-    if (a.vtu) write_vtu(a.out + ".vtu", r.mesh, parse_vtu_format(a.vtu_format));
-  }
+  const auto write_start = std::chrono::steady_clock::now();
+  const std::string node = a.out.empty() ? "" : write_outputs(a, r.mesh, in.first_index);
+  const double write_seconds = seconds_since(write_start);
   nlohmann::json j = tetra_summary(r, a.kernel);
+  j["read_seconds"] = read_seconds;
+  j["write_seconds"] = write_seconds;
+  j["threads"] = thread_count(a.kernel.threads);
   if (!a.json) print_tetra_summary(stdout, r, a.input);
   // The exact check of a finished build (a failed one is already reported as such).
   // It takes the mesh over (renumbered for speed): nothing below reads r.mesh.
@@ -52,10 +83,12 @@ int run_tetra(const TetraArgs& a) {
     CheckOptions co;
     co.duplicates = r.duplicates;
     co.witnesses_per_kind = 3;
+    co.threads = a.kernel.threads;
     check = check_tetrahedralization(std::move(r.mesh), co);
   }
   j["input"] = a.input;
-  if (!a.out.empty()) j["output"] = a.out;
+  if (!a.out.empty()) j["output"] = a.out, j["node_file"] = node;
+  j["total_seconds"] = seconds_since(start);
   j["check"] = check ? to_json(*check) : nlohmann::json(nullptr);
   const bool unverified = !r.failure && !check && !robust_backend(a.kernel.predicates);
   j["verified"] = check ? nlohmann::json(check->ok()) : nlohmann::json(nullptr);
@@ -63,7 +96,12 @@ int run_tetra(const TetraArgs& a) {
     std::printf("%s\n", j.dump(2).c_str());
   } else {
     if (check) print_tetra_check(stdout, *check);
-    if (!a.out.empty()) std::printf("wrote %s.node, %s.ele%s\n", a.out.c_str(), a.out.c_str(), a.vtu ? ", .vtu" : "");
+    if (!a.out.empty() && a.format == "npy")
+      std::printf("wrote %s.points.npy, %s.tets.npy%s\n", a.out.c_str(), a.out.c_str(), a.vtu ? ", .vtu" : "");
+    else if (!a.out.empty())
+      std::printf("wrote %s.node%s, %s.ele%s\n", a.out.c_str(),
+                  node == "kept" ? " (the input, kept)" : node == "copied" ? " (copied from the input)" : "",
+                  a.out.c_str(), a.vtu ? ", .vtu" : "");
   }
   if (unverified)
     std::fprintf(stderr,
@@ -80,13 +118,17 @@ void add_tetra_command(CLI::App& app, int& rc) {
   CLI::App* sub = app.add_subcommand("tetra", "Delaunay tetrahedralization of a point file (.node .xyz) or of a mesh file's vertices (.off .obj .ply .stl)");
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
   sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)")->type_name("PREFIX");
+  sub->add_option("--format", args->format,
+                  "node: PREFIX.node/.ele (a 0-based input .node is copied, not rewritten); npy: PREFIX.points.npy "
+                  "and PREFIX.tets.npy (NumPy, dtlab's orientation)")
+      ->check(CLI::IsMember({"node", "npy"}))->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu for ParaView");
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
       ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
   sub->add_flag("--check", args->check,
                 "verify the result with the exact checker (as `dtlab check`); exit 1 on a defect");
-  args->kernel.add_to(*sub);
+  args->kernel.add_to(*sub, kAllKernelOptions | kThreadsOption);
   sub->callback([args, &rc] { rc = run_tetra(*args); });
 }
 

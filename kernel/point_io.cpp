@@ -7,6 +7,7 @@
 
 #include "kernel/line_reader.hpp"
 #include "kernel/output_file.hpp"
+#include "kernel/record_writer.hpp"
 
 namespace dtlab {
 
@@ -87,17 +88,27 @@ PointFile read_xyz(const std::string& path) {
   return out;
 }
 
-void write_node(const std::string& path, const std::vector<Point3>& points) {
+void write_node(const std::string& path, const std::vector<Point3>& points, unsigned threads) {
   OutputFile f(path);
   std::fprintf(f.get(), "%zu 3 0 0\n", points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    std::fprintf(f.get(), "%zu %.17g %.17g %.17g\n", i, points[i].x, points[i].y, points[i].z);
+  write_records(f, points.size(), kMaxIntChars + 3 * (kMaxDoubleChars + 1) + 1, threads, [&](std::size_t i, char* out) {
+    out = put_chars(out, std::uint64_t{i});
+    for (double c : {points[i].x, points[i].y, points[i].z}) *out++ = ' ', out = put_chars(out, c);
+    *out++ = '\n';
+    return out;
+  });
   f.close();
 }
 
-void write_xyz(const std::string& path, const std::vector<Point3>& points) {
+void write_xyz(const std::string& path, const std::vector<Point3>& points, unsigned threads) {
   OutputFile f(path);
-  for (const Point3& p : points) std::fprintf(f.get(), "%.17g %.17g %.17g\n", p.x, p.y, p.z);
+  write_records(f, points.size(), 3 * (kMaxDoubleChars + 1), threads, [&](std::size_t i, char* out) {
+    out = put_chars(out, points[i].x);
+    *out++ = ' ', out = put_chars(out, points[i].y);
+    *out++ = ' ', out = put_chars(out, points[i].z);
+    *out++ = '\n';
+    return out;
+  });
   f.close();
 }
 

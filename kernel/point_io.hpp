@@ -22,7 +22,9 @@ PointFile read_points(const std::string& path);
 PointFile read_node(const std::string& path);
 PointFile read_xyz(const std::string& path);
 
-void write_node(const std::string& path, const std::vector<Point3>& points);
-void write_xyz(const std::string& path, const std::vector<Point3>& points);
+// Coordinates in the shortest form that reads back to the same double; the text is
+// formatted on `threads` threads (0: all), the bytes the same for any count.
+void write_node(const std::string& path, const std::vector<Point3>& points, unsigned threads = 1);
+void write_xyz(const std::string& path, const std::vector<Point3>& points, unsigned threads = 1);
 
 }  // namespace dtlab

@@ -11,6 +11,7 @@
 #include "kernel/line_reader.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
+#include "kernel/record_writer.hpp"
 #include "predicates/adaptive.hpp"
 
 namespace dtlab {
@@ -25,14 +26,21 @@ double orient3d_naive_volume(const Point3& a, const Point3& b, const Point3& c, 
 }
 }  // namespace
 
-void write_tetgen(const std::string& prefix, const Tetrahedralization& t) {
-  write_node(prefix + ".node", t.points);
-  OutputFile f(prefix + ".ele");
-  std::fprintf(f.get(), "%zu 4 0\n", t.tets.size());
-  for (std::size_t i = 0; i < t.tets.size(); ++i) {
-    const Tet& k = t.tets[i];
-    std::fprintf(f.get(), "%zu %u %u %u %u\n", i, k[1], k[0], k[2], k[3]);
-  }
+void write_tetgen(const std::string& prefix, const Tetrahedralization& t, unsigned threads) {
+  write_node(prefix + ".node", t.points, threads);
+  write_ele(prefix + ".ele", t.tets, threads);
+}
+
+void write_ele(const std::string& path, std::span<const Tet> tets, unsigned threads) {
+  OutputFile f(path);
+  std::fprintf(f.get(), "%zu 4 0\n", tets.size());
+  write_records(f, tets.size(), 5 * (kMaxIntChars + 1), threads, [&](std::size_t i, char* out) {
+    const Tet& k = tets[i];
+    out = put_chars(out, std::uint64_t{i});
+    for (int j : {1, 0, 2, 3}) *out++ = ' ', out = put_chars(out, std::uint64_t{k[j]});
+    *out++ = '\n';
+    return out;
+  });
   f.close();
 }
 

@@ -5,6 +5,7 @@
 // convention (d above the counter-clockwise triangle abc). dtlab keeps tets with
 // orient3d > 0 in memory and swaps the first two vertices on the way in and out,
 // so our .ele files read like TetGen's.
+#include <span>
 #include <string>
 
 #include "kernel/tetrahedralization.hpp"
@@ -12,8 +13,10 @@
 
 namespace dtlab {
 
-// Writes PREFIX.node and PREFIX.ele (0-based numbering).
-void write_tetgen(const std::string& prefix, const Tetrahedralization& t);
+// Writes PREFIX.node and PREFIX.ele (0-based numbering), the text formatted on
+// `threads` threads (0: all; kernel/record_writer.hpp).
+void write_tetgen(const std::string& prefix, const Tetrahedralization& t, unsigned threads = 1);
+void write_ele(const std::string& path, std::span<const Tet> tets, unsigned threads = 1);
 // Reads PREFIX.node and PREFIX.ele; tets come back in dtlab's orientation
 // (first two vertices swapped), whatever their actual sign: checking it is the
 // checker's job.

@@ -47,6 +47,9 @@ struct CheckOptions {
   // boundary. Implied by stage 3 (interior facets cancel), so no extra proof: a
   // cross-check of the checker's bookkeeping, a GMP sum over every tet (slow).
   bool volume_identity = false;
+  // Threads for the orientation pass, the facet table with its insphere tests and the
+  // edge count (0: all hardware threads). The report is the same for every count.
+  unsigned threads = 1;
 };
 
 struct CheckStats {

@@ -20,6 +20,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernel/parallel_for.hpp"
 #include "oracle/boundary.hpp"
 #include "oracle/check.hpp"
 #include "oracle/exact_volume.hpp"
@@ -118,36 +119,49 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     return finish();
   }
 
-  // 2. orientation
-  std::vector<char> positive(T.size(), 0);
+  // 2. orientation: signs in parallel, witnesses collected in tet order.
+  std::vector<signed char> sign(T.size());
+  parallel_chunks(T.size(), opt.threads, 1 << 14, [&](std::size_t b, std::size_t e, unsigned) {
+    for (std::size_t i = b; i < e; ++i) {
+      const Tet& k = T[i];
+      sign[i] = static_cast<signed char>(pred.orient3d(P[k[0]], P[k[1]], P[k[2]], P[k[3]]));
+    }
+  });
   for (std::size_t i = 0; i < T.size(); ++i) {
-    const Tet& k = T[i];
-    const int s = pred.orient3d(P[k[0]], P[k[1]], P[k[2]], P[k[3]]);
-    positive[i] = s > 0;
+    const int s = sign[i];
     if (s < 0)
-      out.add(DefectKind::inverted, {static_cast<std::uint32_t>(i)}, tet_vertices(k), s, "orient3d < 0");
+      out.add(DefectKind::inverted, {static_cast<std::uint32_t>(i)}, tet_vertices(T[i]), s, "orient3d < 0");
     else if (s == 0)
-      out.add(DefectKind::flat, {static_cast<std::uint32_t>(i)}, tet_vertices(k), 0, "orient3d == 0");
+      out.add(DefectKind::flat, {static_cast<std::uint32_t>(i)}, tet_vertices(T[i]), 0, "orient3d == 0");
   }
 
   // 3. facet table, and 4. Delaunay: insphere on each facet shared by two positive
-  // tets, as the table finds it (no adjacency array is kept).
-  auto delaunay = [&](const FacetPair& f) {
+  // tets, as the table finds it (no adjacency array is kept), on any worker; the
+  // non-Delaunay and cospherical ones are recorded in the table's order.
+  enum PairCode : int { kDelaunay = 0, kNonDelaunay = 1, kCospherical = 2 };
+  auto positive_order = [](const FacetPair& f) {
+    // A positive order of tet r1/4 from the facet's own data (no tet lookup).
+    return std::array<std::uint32_t, 5>{f.odd1 ? f.v[1] : f.v[0], f.odd1 ? f.v[0] : f.v[1], f.v[2], f.apex1,
+                                        f.apex2};
+  };
+  auto classify = [&](const FacetPair& f) -> int {
+    if (sign[f.r1 / 4] <= 0 || sign[f.r2 / 4] <= 0) return kDelaunay;
+    const auto k = positive_order(f);
+    const int s = pred.insphere(P[k[0]], P[k[1]], P[k[2]], P[k[3]], P[k[4]]);
+    return s > 0 ? kNonDelaunay : s == 0 ? kCospherical : kDelaunay;
+  };
+  auto record = [&](const FacetPair& f, int code) {
     const std::uint32_t t1 = f.r1 / 4, t2 = f.r2 / 4;
-    if (!positive[t1] || !positive[t2]) return;
-    // A positive order of tet t1 from the facet's own data (no tet lookup).
-    const std::uint32_t k0 = f.odd1 ? f.v[1] : f.v[0], k1 = f.odd1 ? f.v[0] : f.v[1];
-    const std::uint32_t k2 = f.v[2], k3 = f.apex1, e = f.apex2;
-    const int s = pred.insphere(P[k0], P[k1], P[k2], P[k3], P[e]);
-    if (s > 0)
-      out.add(DefectKind::non_delaunay, {t1, t2}, {k0, k1, k2, k3, e}, s,
-              "insphere(tet " + std::to_string(t1) + ", opposite vertex " + out.name(e) + ") > 0");
-    else if (s == 0)
+    const auto k = positive_order(f);
+    if (code == kNonDelaunay)
+      out.add(DefectKind::non_delaunay, {t1, t2}, {k[0], k[1], k[2], k[3], k[4]}, 1,
+              "insphere(tet " + std::to_string(t1) + ", opposite vertex " + out.name(k[4]) + ") > 0");
+    else
       report.cospherical_pairs.emplace_back(t1, t2);
   };
   const std::vector<std::uint32_t> rank = first_appearance(T, n);
-  const FacetTable table =
-      opt.delaunay ? build_facet_table(T, rank, delaunay) : build_facet_table(T, rank);
+  const FacetTable table = opt.delaunay ? build_facet_table(T, rank, classify, record, opt.threads)
+                                        : build_facet_table(T, rank, {}, {}, opt.threads);
   st.cospherical_facets = report.cospherical_pairs.size();
   st.interior_facets = table.interior;
   st.boundary_facets = table.boundary;
@@ -211,7 +225,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     }
   }
   // Euler characteristics.
-  st.edges = count_edges(T, rank);
+  st.edges = count_edges(T, rank, opt.threads);
   const auto F = static_cast<std::int64_t>(st.interior_facets + st.boundary_facets);
   st.euler = static_cast<std::int64_t>(st.vertices) - static_cast<std::int64_t>(st.edges) + F -
              static_cast<std::int64_t>(T.size());

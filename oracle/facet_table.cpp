@@ -1,9 +1,11 @@
 #include "oracle/facet_table.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <memory>
 
 #include "kernel/ids.hpp"
+#include "kernel/parallel_for.hpp"
 
 namespace dtlab {
 namespace {
@@ -120,8 +122,86 @@ std::vector<std::uint32_t> first_appearance(std::span<const Tet> tets, std::size
   return rank;
 }
 
+namespace {
+
+// What the workers of one pass find in their buckets, merged in bucket order.
+struct PartResult {
+  std::vector<std::uint32_t> boundary_refs;
+  std::vector<std::vector<std::uint32_t>> overshared;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> same_side;
+  std::vector<std::pair<FacetPair, int>> flagged;  // (pair, classify's nonzero code)
+  std::uint64_t interior = 0;
+};
+
+// Groups the entries of buckets [a0, a1) (ranks, relative offsets `off` from `lo`).
+void scan_buckets(std::span<const Tet> tets, std::span<const std::uint32_t> rank, Entry* entries,
+                  const std::vector<std::uint64_t>& off, std::size_t lo, std::size_t a0, std::size_t a1,
+                  const FacetPairClassifier& classify, PartResult& out) {
+  std::array<std::uint32_t, 3> byrank;
+  for (std::size_t a = a0; a < a1; ++a) {
+    if (off[a - lo] == off[a - lo + 1]) continue;
+    // The bucket's vertex: the first vertex of any of its facets, by rank.
+    const Entry& any = entries[off[a - lo]];
+    byrank = facet_vertices(tets[any.ref / 4], static_cast<int>(any.ref % 4));
+    sort3(byrank, rank);
+    const std::uint32_t va = byrank[0];
+    for_each_group(entries + off[a - lo], entries + off[a - lo + 1], [&](Entry* i, Entry* j) {
+      const auto n = j - i;
+      if (n == 1) {
+        out.boundary_refs.push_back(i->ref);
+      } else if (n == 2) {
+        ++out.interior;
+        const Entry& x = *i;
+        const Entry& y = *(i + 1);
+        if ((x.apex_parity & kOdd) == (y.apex_parity & kOdd)) out.same_side.emplace_back(x.ref, y.ref);
+        if (classify) {
+          const FacetPair pair{x.ref, y.ref, {va, x.b, x.c}, x.apex_parity & ~kOdd, y.apex_parity & ~kOdd,
+                               (x.apex_parity & kOdd) != 0};
+          if (const int code = classify(pair)) out.flagged.emplace_back(pair, code);
+        }
+      } else {
+        std::vector<std::uint32_t> refs;
+        for (Entry* k = i; k != j; ++k) refs.push_back(k->ref);
+        out.overshared.push_back(std::move(refs));
+      }
+    });
+  }
+}
+
+// Buckets [lo, hi) cut into about `parts` ranges of similar entry counts.
+std::vector<std::size_t> split_buckets(const std::vector<std::uint64_t>& off, std::size_t lo, std::size_t hi,
+                                       std::size_t parts) {
+  std::vector<std::size_t> cut{lo};
+  const std::uint64_t total = off[hi - lo];
+  for (std::size_t p = 1; p < parts; ++p) {
+    const std::uint64_t want = total * p / parts;
+    const auto at = std::lower_bound(off.begin(), off.begin() + static_cast<std::ptrdiff_t>(hi - lo), want);
+    cut.push_back(std::max(cut.back(), lo + static_cast<std::size_t>(at - off.begin())));
+  }
+  cut.push_back(hi);
+  return cut;
+}
+
+void merge_part(PartResult& part, FacetTable& out, const FacetPairRecorder& record) {
+  out.interior += part.interior;
+  out.boundary += part.boundary_refs.size();
+  out.boundary_refs.insert(out.boundary_refs.end(), part.boundary_refs.begin(), part.boundary_refs.end());
+  for (auto& refs : part.overshared) out.overshared.push_back(std::move(refs));
+  out.same_side.insert(out.same_side.end(), part.same_side.begin(), part.same_side.end());
+  if (record)
+    for (const auto& [pair, code] : part.flagged) record(pair, code);
+}
+
+}  // namespace
+
 FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uint32_t> rank,
                              const FacetPairVisitor& on_pair) {
+  if (!on_pair) return build_facet_table(tets, rank, {}, {}, 1);
+  return build_facet_table(tets, rank, [&](const FacetPair& p) { return on_pair(p), 0; }, {}, 1);
+}
+
+FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uint32_t> rank,
+                             const FacetPairClassifier& classify, const FacetPairRecorder& record, unsigned threads) {
   FacetTable out;
   const std::size_t point_count = rank.size();
   // Buckets by the facet's lowest-ranked vertex: the tet's lowest (the three facets
@@ -147,8 +227,8 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uin
     const TwoLowest s = two_lowest(tets[t], rank);
     return std::pair{s.r0, s.r1};
   });
+  const unsigned workers = thread_count(threads);
   std::vector<std::uint64_t> off;
-  std::array<std::uint32_t, 3> byrank;
   for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
     const std::size_t lo = cut[part], hi = cut[part + 1];
     off.assign(hi - lo + 1, 0);
@@ -168,42 +248,21 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uin
           if (f != s.slot0) put(t, f);
       if (s.r1 < hi) put(t, s.slot0);
     }
-    for (std::size_t a = lo; a < hi; ++a) {
-      if (off[a - lo] == off[a - lo + 1]) continue;
-      // The bucket's vertex: the first vertex of any of its facets, by rank.
-      const Entry& any = entries[off[a - lo]];
-      {
-        const Tet& k = tets[any.ref / 4];
-        byrank = facet_vertices(k, static_cast<int>(any.ref % 4));
-        sort3(byrank, rank);
-      }
-      const std::uint32_t va = byrank[0];
-      for_each_group(entries.get() + off[a - lo], entries.get() + off[a - lo + 1], [&](Entry* i, Entry* j) {
-        const auto n = j - i;
-        if (n == 1) {
-          ++out.boundary;
-          out.boundary_refs.push_back(i->ref);
-        } else if (n == 2) {
-          ++out.interior;
-          const Entry& x = *i;
-          const Entry& y = *(i + 1);
-          if ((x.apex_parity & kOdd) == (y.apex_parity & kOdd)) out.same_side.emplace_back(x.ref, y.ref);
-          if (on_pair)
-            on_pair({x.ref, y.ref, {va, x.b, x.c}, x.apex_parity & ~kOdd, y.apex_parity & ~kOdd,
-                     (x.apex_parity & kOdd) != 0});
-        } else {
-          std::vector<std::uint32_t> refs;
-          for (Entry* k = i; k != j; ++k) refs.push_back(k->ref);
-          out.overshared.push_back(std::move(refs));
-        }
-      });
-    }
+    // The buckets' groups in parallel (disjoint entry ranges), merged in bucket order:
+    // the table and the recorded pairs are those of one thread.
+    const std::vector<std::size_t> sub = split_buckets(off, lo, hi, workers == 1 ? 1 : 4 * workers);
+    std::vector<PartResult> results(sub.size() - 1);
+    parallel_chunks(results.size(), workers, 1, [&](std::size_t i, std::size_t, unsigned) {
+      scan_buckets(tets, rank, entries.get(), off, lo, sub[i], sub[i + 1], classify, results[i]);
+    });
+    for (PartResult& r : results) merge_part(r, out, record);
   }
   std::sort(out.boundary_refs.begin(), out.boundary_refs.end());
   return out;
 }
 
-std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32_t> rank) {
+std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32_t> rank, unsigned threads) {
+  const unsigned workers = thread_count(threads);
   // An edge's lowest-ranked vertex is the tet's i-th lowest for 3 - i of its edges;
   // the edge is stored in that vertex's bucket as the other vertex's rank.
   const std::size_t point_count = rank.size();
@@ -227,7 +286,7 @@ std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32
     return std::pair{s.r[0], s.r[2]};
   });
   std::vector<std::uint64_t> off;
-  std::vector<std::uint32_t> seen(point_count, kNone);
+  std::vector<std::uint32_t> seen(workers == 1 ? point_count : 0, kNone);
   std::uint64_t edges = 0;
   for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
     const std::size_t lo = cut[part], hi = cut[part + 1];
@@ -242,11 +301,27 @@ std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32
         if (s.r[i] >= lo && s.r[i] < hi)
           for (int j = i + 1; j < 4; ++j) other[pos[s.r[i] - lo]++] = s.r[j];
     }
-    // Distinct other ends per bucket: seen[r] holds the last bucket that met rank r
-    // (buckets are visited once each, in increasing order, so it never needs a reset).
-    for (std::size_t a = lo; a < hi; ++a)
-      for (std::uint64_t i = off[a - lo]; i < off[a - lo + 1]; ++i)
-        if (seen[other[i]] != a) seen[other[i]] = static_cast<std::uint32_t>(a), ++edges;
+    if (workers == 1) {
+      // Distinct other ends per bucket: seen[r] holds the last bucket that met rank r
+      // (buckets are visited once each, in increasing order, so it never needs a reset).
+      for (std::size_t a = lo; a < hi; ++a)
+        for (std::uint64_t i = off[a - lo]; i < off[a - lo + 1]; ++i)
+          if (seen[other[i]] != a) seen[other[i]] = static_cast<std::uint32_t>(a), ++edges;
+      continue;
+    }
+    // In parallel: each bucket's other ends sorted in place and counted once each.
+    std::atomic<std::uint64_t> found{0};
+    parallel_chunks(hi - lo, workers, 4096, [&](std::size_t b, std::size_t e, unsigned) {
+      std::uint64_t local = 0;
+      for (std::size_t a = b; a < e; ++a) {
+        std::uint32_t* first = other.get() + off[a];
+        std::uint32_t* last = other.get() + off[a + 1];
+        std::sort(first, last);
+        local += static_cast<std::uint64_t>(std::unique(first, last) - first);
+      }
+      found += local;
+    });
+    edges += found;
   }
   return edges;
 }

@@ -59,7 +59,18 @@ std::vector<std::uint32_t> first_appearance(std::span<const Tet> tets, std::size
 FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uint32_t> rank,
                              const FacetPairVisitor& on_pair = {});
 
-// Number of distinct edges of the tets (rank as above).
-std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32_t> rank);
+// The same table built on `threads` threads (0: all). `classify` sees every facet in
+// two tets, from any worker at once (it must be thread-safe, e.g. an exact sign), and
+// returns 0 or a code; `record(pair, code)` then sees the pairs with a nonzero code on
+// the calling thread, in the order one thread finds them, so the table and the
+// recorded pairs are the same for every thread count.
+using FacetPairClassifier = std::function<int(const FacetPair&)>;
+using FacetPairRecorder = std::function<void(const FacetPair&, int)>;
+FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uint32_t> rank,
+                             const FacetPairClassifier& classify, const FacetPairRecorder& record,
+                             unsigned threads);
+
+// Number of distinct edges of the tets (rank as above), on `threads` threads (0: all).
+std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32_t> rank, unsigned threads = 1);
 
 }  // namespace dtlab

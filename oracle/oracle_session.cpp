@@ -46,6 +46,7 @@ OracleSession run_oracle_session(std::span<const Point3> pts, const OracleSessio
     throw std::invalid_argument(s.built.failure->detail);
   CheckOptions check_options;
   check_options.duplicates = s.built.duplicates;
+  check_options.threads = opt.peers.threads;
   s.ours = check_tetrahedralization(s.built.mesh, check_options);
   s.ours_ok = s.ours.ok() && !s.built.failure;
 

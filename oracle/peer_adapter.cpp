@@ -86,10 +86,11 @@ void normalise_answer(std::span<const Point3> points, const PeerAnswer& answer, 
   run.mesh = std::move(t);
 }
 
-void judge_answer(PeerRun& run) {
+void judge_answer(PeerRun& run, unsigned threads) {
   if (!run.mesh) return;
   CheckOptions co;
   co.duplicates = run.unused;
+  co.threads = threads;
   run.report = check_tetrahedralization(*run.mesh, co);
   run.verdict = run.extra_tets ? Verdict::extra_points : verdict_of(*run.report);
 }

@@ -30,6 +30,6 @@ void normalise_answer(std::span<const Point3> points, const PeerAnswer& answer, 
 
 // Runs the exact checker on run.mesh (run.unused as the producer's duplicates) and
 // sets run.report and run.verdict (extra-points when extra tets were left out).
-void judge_answer(PeerRun& run);
+void judge_answer(PeerRun& run, unsigned threads = 1);
 
 }  // namespace dtlab

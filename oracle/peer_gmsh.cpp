@@ -12,7 +12,7 @@ namespace dtlab {
 
 #if DTLAB_HAVE_GMSH
 
-PeerAnswer peer_gmsh(const std::vector<Point3>& points, bool hxt) {
+PeerAnswer peer_gmsh(const std::vector<Point3>& points, bool hxt, unsigned threads) {
   std::vector<double> coord(points.size() * 3);
   for (std::size_t i = 0; i < points.size(); ++i) {
     coord[3 * i] = points[i].x;
@@ -23,6 +23,8 @@ PeerAnswer peer_gmsh(const std::vector<Point3>& points, bool hxt) {
   gmsh::option::setNumber("General.Terminal", 1);
   gmsh::option::setNumber("General.Verbosity", 1);  // errors only
   if (hxt) gmsh::option::setNumber("Mesh.Algorithm3D", 10);
+  gmsh::option::setNumber("General.NumThreads", threads);
+  gmsh::option::setNumber("Mesh.MaxNumThreads3D", threads);
   std::vector<std::size_t> tetra;
   PeerAnswer a;
   const auto start = std::chrono::steady_clock::now();
@@ -66,7 +68,7 @@ std::string gmsh_version() {
 
 #else
 
-PeerAnswer peer_gmsh(const std::vector<Point3>&, bool) { throw PeerNotInstalled("built without gmsh (Debian libgmsh-dev)"); }
+PeerAnswer peer_gmsh(const std::vector<Point3>&, bool, unsigned) { throw PeerNotInstalled("built without gmsh (Debian libgmsh-dev)"); }
 std::string gmsh_version() { throw PeerNotInstalled("built without gmsh (Debian libgmsh-dev)"); }
 
 #endif

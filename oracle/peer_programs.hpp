@@ -37,9 +37,21 @@ int print_peer_version(Version&& version, int error_exit) {
   }
 }
 
+// A helper's THREADS argument: 1..1024, else std::invalid_argument (exit 2).
+inline unsigned peer_thread_count(const std::string& text) {
+  std::size_t used = 0;
+  const unsigned long n = text.empty() || text.size() > 4 || text[0] < '0' || text[0] > '9' ? 0 : std::stoul(text, &used);
+  if (used != text.size() || n < 1 || n > 1024) throw std::invalid_argument("bad thread count '" + text + "'");
+  return static_cast<unsigned>(n);
+}
+
 // CGAL Delaunay_triangulation_3 over Simple_cartesian<double>; cells in CGAL's
 // order (its positive orientation: swap two vertices for dtlab's).
 PeerAnswer peer_cgal_inexact(const std::vector<Point3>& points);
+
+// CGAL Delaunay_triangulation_3 with Parallel_tag (oneTBB) on `threads` threads;
+// cells in CGAL's order. PeerNotInstalled when built without TBB.
+PeerAnswer peer_cgal_parallel(const std::vector<Point3>& points, unsigned threads);
 
 // libqhull_r: "d Qbb Qc Qz Q12 Qt" (scipy's defaults), or "d QJ" when `joggle`.
 // Lower-Delaunay facets, vertices as input indices (the point at infinity of Qz,
@@ -49,7 +61,8 @@ std::string qhull_version();
 
 // gmsh::model::mesh::tetrahedralize; `hxt` sets Mesh.Algorithm3D = 10 first. gmsh
 // numbers nodes from 1: the adapter makes them 0-based.
-PeerAnswer peer_gmsh(const std::vector<Point3>& points, bool hxt);
+// `threads`: gmsh's General.NumThreads and Mesh.MaxNumThreads3D (HXT is the parallel one).
+PeerAnswer peer_gmsh(const std::vector<Point3>& points, bool hxt, unsigned threads = 1);
 std::string gmsh_version();
 
 }  // namespace dtlab

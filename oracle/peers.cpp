@@ -10,6 +10,7 @@
 
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
+#include "kernel/parallel_for.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
 #include "oracle/child_process.hpp"
@@ -35,18 +36,20 @@ struct PeerSpec {
   Runner runner;
   PeerOrientation orientation;
   bool slow_start = false;  // its helper has a --serve mode (PeerOptions::servers)
+  bool threaded = false;    // its helper takes a THREADS argument (PeerOptions::threads)
 };
 
 const PeerSpec kPeers[] = {
     {"cgal", Runner::helper, PeerOrientation::dtlab},
     {"cgal-inexact", Runner::helper, PeerOrientation::swapped},
+    {"cgal-parallel", Runner::helper, PeerOrientation::swapped, false, true},
     {"tetgen", Runner::tetgen, PeerOrientation::dtlab},
     {"tetgen-flip", Runner::tetgen, PeerOrientation::dtlab},
     {"qhull", Runner::helper, PeerOrientation::by_sign},
     {"qhull-qj", Runner::helper, PeerOrientation::by_sign},
     {"scipy", Runner::python, PeerOrientation::by_sign, true},
     {"gmsh", Runner::helper, PeerOrientation::by_sign, true},
-    {"gmsh-hxt", Runner::helper, PeerOrientation::by_sign, true},
+    {"gmsh-hxt", Runner::helper, PeerOrientation::by_sign, true, true},
     {"dtlab:naive", Runner::helper, PeerOrientation::dtlab},
     {"dtlab:epsilon", Runner::helper, PeerOrientation::dtlab},
     {"dtlab:adaptive", Runner::helper, PeerOrientation::dtlab},
@@ -238,7 +241,7 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
       run.message = "wrote no .ele";
     }
     normalise_answer(points, a, spec->orientation, run);
-    if (options.check) judge_answer(run);
+    if (options.check) judge_answer(run, options.threads);
     return run;
   }
 
@@ -251,12 +254,14 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
   if (options.servers && spec->slow_start) {
     argv.push_back("--serve");
     if (spec->runner == Runner::helper) argv.push_back(name);
+    if (spec->threaded) argv.push_back(std::to_string(thread_count(options.threads)));
     std::string reply;
     c = options.servers->get(name, argv, limits).ask(in + "\t" + out, limits.timeout_s, reply);
     write_text_file(log, reply + "\n");  // where failure_of looks for the message
   } else {
     if (spec->runner == Runner::helper) argv.push_back(name);
     argv.insert(argv.end(), {in, out});
+    if (spec->threaded) argv.push_back(std::to_string(thread_count(options.threads)));
     c = run_child(argv, limits);
   }
   if (auto v = failure_of(c, log, run)) {
@@ -273,7 +278,7 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
   }
   run.seconds = a.seconds;
   normalise_answer(points, a, spec->orientation, run);
-  if (options.check) judge_answer(run);
+  if (options.check) judge_answer(run, options.threads);
   return run;
 }
 

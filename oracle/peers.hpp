@@ -6,6 +6,7 @@
 //
 //   cgal          CGAL Delaunay_triangulation_3, EPICK          dtlab_peer
 //   cgal-inexact  the same with Simple_cartesian<double>        dtlab_peer
+//   cgal-parallel the same as cgal with Parallel_tag (oneTBB)   dtlab_peer
 //   tetgen        TetGen -QzJNF (Bowyer-Watson)                 the tetgen binary
 //   tetgen-flip   TetGen -QzJNFl (flip-based insertion)         the tetgen binary
 //   qhull         libqhull_r "d Qbb Qc Qz Q12 Qt" (scipy's)     dtlab_peer
@@ -36,6 +37,9 @@ struct PeerOptions {
   std::string peer_binary;         // the helper for every helper peer (tests); "": $DTLAB_PEER,
                                    // $DTLAB_PEER_GMSH (gmsh peers), else those built with dtlab
   bool check = true;               // judge the answer with the exact checker
+  // Threads of the parallel peers (cgal-parallel, gmsh-hxt; 0: all hardware threads),
+  // and of the checker that judges every answer.
+  unsigned threads = 1;
   // When set, the peers whose start costs most of a small run (gmsh, gmsh-hxt: their
   // libraries; scipy: its import) run in a helper kept from one call to the next
   // (oracle/served_child.hpp), under the same limits; a crash or hang ends that

@@ -13,7 +13,7 @@
 #include "voronoi/cell_buffer.hpp"
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/dual_cell.hpp"
-#include "voronoi/parallel_for.hpp"
+#include "kernel/parallel_for.hpp"
 
 namespace dtlab {
 
