@@ -45,9 +45,17 @@ void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd, VtuForma
   std::vector<double> volume;
   std::vector<std::uint8_t> defect;
   const double tol = 1e-9 * vd.box.diagonal();
-  for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+  // Cells by vertex count (stable): meshio reads polyhedra into one block per vertex
+  // count, in order of first appearance, but splits the cell data in ascending count;
+  // the two agree only in this order. VTK and ParaView take any order.
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < vd.cells.size(); ++i)
+    if (!vd.cells[i].vertices.empty()) order.push_back(i);  // a repeated site's empty cell is left out
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return vd.cells[a].vertices.size() < vd.cells[b].vertices.size();
+  });
+  for (const std::size_t i : order) {
     const VoronoiCell& c = vd.cells[i];
-    if (c.vertices.empty()) continue;  // a repeated site's empty cell
     g.add_polyhedron(c.vertices, c.face_offsets, c.face_vertices);
     site.push_back(static_cast<std::int64_t>(i));
     volume.push_back(c.volume);

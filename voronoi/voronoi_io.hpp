@@ -11,7 +11,8 @@
 namespace dtlab {
 
 void write_cells_obj(const std::string& path, const VoronoiDiagram& vd);
-// VTK_POLYHEDRON cells (repeated sites' empty cells left out) with cell data `site`
+// VTK_POLYHEDRON cells (repeated sites' empty cells left out), in ascending vertex count
+// (the order meshio needs to match cell data to its per-count blocks), with cell data `site`
 // (the site's index), `volume`, `walls` (faces on the box) and `defect` (1: the cell
 // fails voronoi/cell_check.hpp's check_cell at 1e-9 of the box diagonal).
 void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd, VtuFormat format = VtuFormat::binary);

@@ -20,7 +20,7 @@ from typing import Any, Union
 
 import numpy as np
 
-from . import _core, fuzz
+from . import _core, _meshio, fuzz
 from ._results import (DEFECT_KINDS, BuildFailure, CheckReport, Comparison, Defect, Failure, Mesh,
                        OracleReport, OracleRun, Piece, Pieces, Tetrahedralization, VoronoiCell,
                        VoronoiDiagram)
@@ -31,7 +31,7 @@ __all__ = [
     "BuildFailure", "CheckReport", "Comparison", "DEFECT_KINDS", "Defect", "Failure", "Mesh",
     "OracleReport", "OracleRun", "Piece", "Pieces", "Tetrahedralization", "VoronoiCell",
     "VoronoiDiagram", "check", "compare", "fracture", "fuzz", "oracle", "read_mesh", "sample",
-    "tetrahedralize", "voronoi",
+    "tetrahedralize", "voronoi", "spatial", "from_meshio",
 ]
 
 MeshLike = Union[str, "os.PathLike[str]", Mesh, tuple[Any, Any]]
@@ -278,3 +278,13 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
     out.mesh_volume = float(raw["manifest"]["mesh_volume"])
     out.relative_volume_error = float(raw["manifest"]["relative_volume_error"])
     return out
+
+
+def from_meshio(mesh: Any) -> Mesh:
+    """The triangle surface of a meshio.Mesh as a dtlab Mesh (vertices, faces), the
+    input read_mesh gives: for sample() and fracture(). "triangle" cells are taken and
+    "quad" cells split in two; other cell types raise ValueError."""
+    return Mesh(*_meshio.mesh_arrays(mesh))
+
+
+from . import spatial  # noqa: E402 (it builds on the functions above)

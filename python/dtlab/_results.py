@@ -6,9 +6,17 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import _core
+from . import _core, _meshio
 
 DEFECT_KINDS: tuple[str, ...] = tuple(_core.defect_kinds())
+
+
+class _Summary:
+    """Notebook display of a result class: its one-line __repr__, HTML-escaped."""
+
+    def _repr_html_(self) -> str:
+        text = repr(self).replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+        return f"<code>{text}</code>"
 
 
 class Mesh(NamedTuple):
@@ -31,8 +39,8 @@ class Failure:
         return f"{self.kind} while inserting point {self.point}: {self.detail}"
 
 
-@dataclass(frozen=True)
-class Tetrahedralization:
+@dataclass(frozen=True, repr=False)
+class Tetrahedralization(_Summary):
     """The Delaunay tetrahedralization of `points`.
 
     tets: (m, 4) uint32 input indices, every tet with orient3d > 0 (positive
@@ -50,6 +58,16 @@ class Tetrahedralization:
     skipped: np.ndarray
     stats: dict[str, Any]
     failure: Failure | None = None
+
+    def __repr__(self) -> str:
+        state = f"FAILED: {self.failure}" if self.failure else "built"
+        return (f"<dtlab.Tetrahedralization: {len(self.points)} points, {len(self.tets)} tets, "
+                f"{len(self.duplicates)} duplicates, {state} in {self.stats.get('seconds', 0):.3g} s "
+                f"({self.stats.get('predicates', '?')} predicates)>")
+
+    def to_meshio(self) -> Any:
+        """A meshio.Mesh of the tets ("tetra" cells, VTK's order); needs meshio."""
+        return _meshio.tetrahedralization_mesh(self.points, self.tets)
 
 
 class BuildFailure(RuntimeError):
@@ -77,8 +95,8 @@ class Defect:
     sign: int
 
 
-@dataclass(frozen=True)
-class CheckReport:
+@dataclass(frozen=True, repr=False)
+class CheckReport(_Summary):
     """The exact checker's verdict on a tetrahedralization.
 
     ok: it is the Delaunay tetrahedralization of its points. verdict: one line.
@@ -114,13 +132,17 @@ class CheckReport:
         swapped = int(raw.pop("swapped", 0))
         return cls(ok, verdict, counts, defects, raw, orientation, swapped)
 
+    def __repr__(self) -> str:
+        return (f"<dtlab.CheckReport: {self.verdict}; {self.stats.get('tets', '?')} tets, "
+                f"{self.stats.get('seconds', 0):.3g} s>")
+
 
 def _cell_text(cell: tuple[int, ...]) -> str:
     return "{" + " ".join(str(v) for v in cell) + "}"
 
 
-@dataclass(frozen=True)
-class Comparison:
+@dataclass(frozen=True, repr=False)
+class Comparison(_Summary):
     """Two tetrahedralizations of the same points compared canonically.
 
     verdict: "identical" (same tets), "same Delaunay complex" (the tets differ only
@@ -173,6 +195,9 @@ class Comparison:
         verdict = "identical" if te else "same Delaunay complex" if ce else "different"
         return cls(verdict, detail, te, ce, gp, cells, only_a, only_b, a, b)
 
+    def __repr__(self) -> str:
+        return f"<dtlab.Comparison: {self.verdict}: {self.detail}>"
+
 
 @dataclass(frozen=True)
 class OracleRun:
@@ -195,8 +220,8 @@ class OracleRun:
     raw: dict[str, Any]
 
 
-@dataclass(frozen=True)
-class OracleReport:
+@dataclass(frozen=True, repr=False)
+class OracleReport(_Summary):
     """dtlab.oracle's verdict, the same as `dtlab oracle --json`'s: ok, exit (0 ok;
     1 dtlab's result is wrong or differs from a proven peer; 3 some peer gave no
     answer), the problems found, the peers not compared (no answer, or a wrong one),
@@ -210,6 +235,10 @@ class OracleReport:
     dtlab: OracleRun
     peers: dict[str, OracleRun]
     comparisons: dict[str, Comparison]
+
+    def __repr__(self) -> str:
+        runs = ", ".join(f"{r.name} {r.verdict} {r.seconds:.3g} s" for r in [self.dtlab, *self.peers.values()])
+        return f"<dtlab.OracleReport: {'ok' if self.ok else 'NOT OK'} (exit {self.exit}); {runs}>"
 
 
 @dataclass(frozen=True)
@@ -234,8 +263,8 @@ class VoronoiCell:
     duplicate_of: int
 
 
-@dataclass(frozen=True)
-class VoronoiDiagram:
+@dataclass(frozen=True, repr=False)
+class VoronoiDiagram(_Summary):
     """Voronoi cells of every site, clipped to `box` ((xmin, ymin, zmin), (xmax, ymax,
     zmax)); `clipped`: cells built by the general clipping engine (hull sites, doubtful
     duals), `box_clipped`: dual cells then cut by the box walls."""
@@ -247,6 +276,11 @@ class VoronoiDiagram:
     box_clipped: int
     seconds_delaunay: float
     seconds_cells: float
+
+    def __repr__(self) -> str:
+        volume = sum(c.volume for c in self.cells)
+        return (f"<dtlab.VoronoiDiagram: {len(self.cells)} cells, volume {volume:.6g}, {self.tets} tets, "
+                f"{self.seconds_delaunay:.3g} s Delaunay + {self.seconds_cells:.3g} s cells>")
 
 
 @dataclass(frozen=True)
@@ -275,7 +309,7 @@ class Piece:
     island: int = 0
 
 
-class Pieces(list[Piece]):
+class Pieces(list[Piece], _Summary):
     """The pieces of dtlab.fracture, a list, plus `mesh_volume`,
     `relative_volume_error` (|sum of piece volumes - mesh volume| / mesh volume) and the
     `manifest` `dtlab fracture --json` prints."""
@@ -283,3 +317,13 @@ class Pieces(list[Piece]):
     mesh_volume: float
     relative_volume_error: float
     manifest: dict[str, Any]
+
+    def __repr__(self) -> str:
+        seconds = getattr(self, "manifest", {}).get("seconds", {})  # per stage
+        timing = f", {sum(seconds.values()):.3g} s" if isinstance(seconds, dict) and seconds else ""
+        return (f"<dtlab.Pieces: {len(self)} pieces, mesh volume {getattr(self, 'mesh_volume', float('nan')):.6g}, "
+                f"relative volume error {getattr(self, 'relative_volume_error', float('nan')):.2g}{timing}>")
+
+    def to_meshio(self) -> Any:
+        """One meshio.Mesh of all pieces' triangles, cell data "piece" and "cut"; needs meshio."""
+        return _meshio.pieces_mesh(self)

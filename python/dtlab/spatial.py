@@ -247,8 +247,10 @@ class ConvexHull(_Triangulated):
     offset: normal . x + offset <= 0 inside; triangles of one flat face, found by
     exact orientation tests, share one equation), vertices (sorted), volume, area,
     coplanar (duplicates of hull vertices: [index, facet, vertex]), nsimplex, npoints,
-    ndim, min_bound, max_bound, good (None). Points inside a flat hull face are
-    vertices of its triangulation (Qhull leaves them out of the facets).
+    ndim, min_bound, max_bound, good (None). vertices are the hull's corners (points
+    on three or more flat faces); points inside a flat face or an edge are not
+    corners but are vertices of the triangulation in simplices, where Qhull leaves
+    them out. faces: per triangle, its flat face (groups proven coplanar exactly).
     """
 
     def __init__(self, points: Any, incremental: bool = False, qhull_options: str | None = None, *,
@@ -262,8 +264,8 @@ class ConvexHull(_Triangulated):
         self.simplices = tri.astype(np.int32)
         self.nsimplex = len(tri)
         self.neighbors = _triangle_neighbors(tri)
-        self.vertices = np.unique(tri).astype(np.int32)
         self.faces = _core.spatial_coplanar_groups(self.points, tri, self.neighbors)
+        self.vertices = _extreme_vertices(tri, self.faces)
         self.equations = _face_equations(self.points, tri, self.faces)
         v = self.points[self._tets]
         self.volume = float(np.abs(np.linalg.det(v[:, 1:] - v[:, :1])).sum() / 6.0)
@@ -278,6 +280,14 @@ class ConvexHull(_Triangulated):
 
     def _repr_counts(self) -> str:
         return f"{self.nsimplex} facets in {int(self.faces.max()) + 1 if len(self.faces) else 0} planes"
+
+
+def _extreme_vertices(tri: np.ndarray, faces: np.ndarray) -> np.ndarray:
+    """The hull's corners, sorted: boundary points on three or more flat faces (a point
+    inside one face lies on one, inside an edge on two)."""
+    pairs = np.unique(np.stack([tri.ravel().astype(np.int64), np.repeat(faces, 3)], axis=1), axis=0)
+    v, count = np.unique(pairs[:, 0], return_counts=True)
+    return v[count >= 3].astype(np.int32)
 
 
 def _triangle_neighbors(tri: np.ndarray) -> np.ndarray:

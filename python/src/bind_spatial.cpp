@@ -58,16 +58,10 @@ py::array_t<std::int32_t> locate(py::handle points, py::handle tets, py::handle 
   const DoubleArray q = point_array(queries, "xi");
   const std::vector<Tet> k = tet_rows(tets, pts.shape(0));
   const TetNeighbors nb = neighbour_rows<4>(nbs, k.size(), "neighbors");
-  std::vector<std::int32_t> out(q.shape(0));
+  std::vector<std::int32_t> out;
   {
     py::gil_scoped_release nogil;
-    std::uint64_t rng = 0x9e3779b97f4a7c15ull;
-    std::int32_t last = 0;
-    const auto qs = points_of(q);
-    for (std::size_t i = 0; i < qs.size(); ++i) {
-      out[i] = locate_point(points_of(pts), k, nb, qs[i], last, rng);
-      if (out[i] >= 0) last = out[i];  // queries in a row are often close: start there
-    }
+    out = locate_points(points_of(pts), k, nb, points_of(q));
   }
   return to_numpy<std::int32_t, 1>(std::move(out));
 }

@@ -1,8 +1,11 @@
 #include "python/src/spatial_topology.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <utility>
 
+#include "kernel/spatial_order.hpp"
 #include "oracle/facet_table.hpp"
 #include "predicates/adaptive.hpp"
 
@@ -136,6 +139,35 @@ std::int32_t locate_point(std::span<const Point3> pts, std::span<const Tet> tets
     if (!beyond(tets[s], 0) && !beyond(tets[s], 1) && !beyond(tets[s], 2) && !beyond(tets[s], 3))
       return static_cast<std::int32_t>(s);
   return -1;
+}
+
+std::vector<std::int32_t> locate_points(std::span<const Point3> pts, std::span<const Tet> tets,
+                                        const TetNeighbors& nb, std::span<const Point3> queries) {
+  Point3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const Point3& q : queries) {
+    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
+    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
+  }
+  constexpr int kBits = 10;
+  auto cell = [&](double v, double l, double h) {  // grid coordinate in [0, 2^kBits)
+    const double t = h > l ? (v - l) / (h - l) : 0.0;
+    return static_cast<std::uint32_t>(std::clamp(t * (1 << kBits), 0.0, (1 << kBits) - 1.0));
+  };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> order(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const Point3& q = queries[i];
+    order[i] = {hilbert_index(cell(q.x, lo.x, hi.x), cell(q.y, lo.y, hi.y), cell(q.z, lo.z, hi.z), kBits),
+                static_cast<std::uint32_t>(i)};
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<std::int32_t> out(queries.size());
+  std::uint64_t rng = 0x9e3779b97f4a7c15ull;
+  std::int32_t last = 0;
+  for (const auto& [key, i] : order) {
+    out[i] = locate_point(pts, tets, nb, queries[i], last, rng);
+    if (out[i] >= 0) last = out[i];
+  }
+  return out;
 }
 
 std::vector<std::int32_t> cospherical_groups(std::span<const Point3> pts, std::span<const Tet> tets,

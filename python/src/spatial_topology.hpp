@@ -22,6 +22,11 @@ TetNeighbors tet_neighbors(std::span<const Tet> tets, std::size_t point_count);
 std::int32_t locate_point(std::span<const Point3> pts, std::span<const Tet> tets, const TetNeighbors& nb,
                           const Point3& q, std::int32_t start, std::uint64_t& rng);
 
+// locate_point for every query, visited along a Hilbert curve over their bounding box so
+// that each walk starts at the previous answer, close by.
+std::vector<std::int32_t> locate_points(std::span<const Point3> pts, std::span<const Tet> tets,
+                                        const TetNeighbors& nb, std::span<const Point3> queries);
+
 // Tets sharing one circumsphere (insphere of a neighbour's apex exactly 0): the cells of
 // the Delaunay complex, one Voronoi vertex each.
 std::vector<std::int32_t> cospherical_groups(std::span<const Point3> pts, std::span<const Tet> tets,

@@ -12,6 +12,8 @@ import pytest
 
 from dtlab import spatial
 
+pytestmark = pytest.mark.filterwarnings("ignore::pytest.PytestUnknownMarkWarning")  # scipy's "slow"
+
 scipy = pytest.importorskip("scipy", reason="scipy (python3-scipy) is not installed")
 PATH = os.path.join(os.path.dirname(scipy.__file__), "spatial", "tests", "test_qhull.py")
 if not os.path.exists(PATH):

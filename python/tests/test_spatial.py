@@ -162,6 +162,8 @@ def test_convex_hull_of_a_lattice_merges_flat_faces():
     hull = ConvexHull(g)
     assert hull.volume == 27.0 and hull.area == 54.0
     assert int(hull.faces.max()) + 1 == 6  # six flat faces, proven coplanar exactly
+    assert (hull.vertices == [0, 3, 12, 15, 48, 51, 60, 63]).all()  # the cube's corners
+    assert (hull.vertices == scipy_spatial.ConvexHull(g).vertices).all()
     assert len(np.unique(hull.equations, axis=0)) == 6
     p = g[hull.simplices]
     normals = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
