@@ -37,12 +37,14 @@ asan:
 	@$(MAKE) --no-print-directory test PRESET=asan
 
 # ThreadSanitizer on what runs threads: the kernel's (parallel loop, writers), the
-# checker's ([threads] cases: parallel == serial) and the Voronoi tests.
+# checker's ([threads] cases: parallel == serial) and the Voronoi tests. The parallel
+# peers ([peers]) are left out: Debian's oneTBB is not instrumented, so TSan reports
+# CGAL's Parallel_tag insertion inside TBB's scheduler, which is not our code.
 tsan: setup
 	@[ -f build/tsan/build.ninja ] || cmake --preset tsan >/dev/null
 	@cmake --build --preset tsan -j $(JOBS)
 	@ctest --test-dir build/tsan -L 'kernel|voronoi' -LE slow -j $(JOBS) --output-on-failure
-	@build/tsan/oracle/dtlab_oracle_tests "[threads]"
+	@build/tsan/oracle/dtlab_oracle_tests "[threads]~[peers]"
 
 bench: build
 	@$(BUILD)/bench/dtlab_bench_predicates

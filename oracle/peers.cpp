@@ -208,10 +208,10 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
   limits.timeout_s = options.timeout_s;
   limits.memory_bytes = options.memory_bytes ? options.memory_bytes : default_memory();
   limits.log_path = log;
-#if defined(__SANITIZE_ADDRESS__)
-  // An AddressSanitizer build of our own helpers reserves terabytes of shadow address
-  // space as it starts, so RLIMIT_AS would kill them before they run: in sanitizer
-  // builds only, they run without the memory limit (the time limit stays).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  // An AddressSanitizer or ThreadSanitizer build of our own helpers reserves terabytes
+  // of shadow address space as it starts, so RLIMIT_AS would kill them before they run:
+  // in sanitizer builds only, they run without the memory limit (the time limit stays).
   if (spec->runner == Runner::helper) limits.memory_bytes = 0;
 #endif
   const std::vector<Point3> pts(points.begin(), points.end());

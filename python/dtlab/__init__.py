@@ -84,7 +84,7 @@ def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "so
 
 
 def check(points: Any, tets: Any, orientation: str = "any", *, duplicates: Any = None,
-          witnesses: int = 16, delaunay: bool = True) -> CheckReport:
+          witnesses: int = 16, delaunay: bool = True, threads: int = 1) -> CheckReport:
     """Proves exactly that `tets` is the Delaunay tetrahedralization of `points`, or
     names each defect with witnesses: broken-adjacency, inverted, flat, non-delaunay,
     hull-not-convex, overlap, gap, missing-point, duplicate-vertex, euler (see
@@ -102,8 +102,14 @@ def check(points: Any, tets: Any, orientation: str = "any", *, duplicates: Any =
     duplicates: input indices the producer left out as repeats of another point (each
     is verified to have the coordinates of a vertex; exact repeats need not be listed).
     witnesses: defects listed per kind. delaunay=False skips the insphere tests.
+    threads: threads of the check (0: all cores, at most 1024); the report is the same
+    for every count.
     """
-    raw = _core.check(points, tets, orientation, duplicates, _count(witnesses, "witnesses"), bool(delaunay))
+    nthreads = _count(threads, "threads")
+    if nthreads > 1024:
+        raise ValueError(f"threads: expected at most 1024, got {threads!r}")
+    raw = _core.check(points, tets, orientation, duplicates, _count(witnesses, "witnesses"), bool(delaunay),
+                      nthreads)
     return CheckReport._from_raw(raw)
 
 

@@ -45,7 +45,7 @@ py::dict report_dict(const Checked& c) {
 }
 
 py::dict check(py::handle points, py::handle tets, const std::string& orientation, py::handle duplicates,
-               std::size_t witnesses, bool delaunay) {
+               std::size_t witnesses, bool delaunay, unsigned threads) {
   check_orientation_mode(orientation);
   Tetrahedralization t;
   t.points = input_points(points);
@@ -58,7 +58,7 @@ py::dict check(py::handle points, py::handle tets, const std::string& orientatio
     // t is ours: the owning check renumbers it for locality (the report keeps the caller's ids).
     c.orientation = orient_tets(t, orientation);
     c.report = check_tetrahedralization(std::move(t), {.duplicates = dups, .delaunay = delaunay,
-                                                       .witnesses_per_kind = witnesses});
+                                                       .witnesses_per_kind = witnesses, .threads = threads});
   }
   return report_dict(c);
 }
@@ -106,7 +106,7 @@ py::list defect_kinds() {
 
 void bind_check(py::module_& m) {
   m.def("check", &check, py::arg("points"), py::arg("tets"), py::arg("orientation"), py::arg("duplicates"),
-        py::arg("witnesses"), py::arg("delaunay"), "Exact invariant check; returns the raw report (see dtlab.check).");
+        py::arg("witnesses"), py::arg("delaunay"), py::arg("threads"), "Exact invariant check; returns the raw report (see dtlab.check).");
   m.def("compare", &compare, py::arg("points"), py::arg("tets_a"), py::arg("tets_b"), py::arg("orientation"),
         "Checks both meshes and compares them canonically (see dtlab.compare).");
   m.def("defect_kinds", &defect_kinds, "The checker's defect kinds, in its order.");

@@ -98,3 +98,19 @@ def test_any_integer_dtype(uniform):
     for dtype in (np.int32, np.int64, np.uint16, np.uint64):
         assert dtlab.check(uniform, tets.astype(dtype)).ok
     assert dtlab.check(uniform.tolist(), tets.tolist()).ok
+
+
+def test_threads_give_the_serial_report(uniform):
+    dt = dtlab.tetrahedralize(uniform)
+    broken = dt.tets.copy()
+    broken[3, [0, 1]] = broken[3, [1, 0]]  # one inverted tet
+    broken = broken[5:]                     # and a hole
+    for tets in (dt.tets, broken):
+        serial = dtlab.check(uniform, tets, "positive", witnesses=100)
+        for threads in (0, 2, 3):
+            r = dtlab.check(uniform, tets, "positive", witnesses=100, threads=threads)
+            assert r.counts == serial.counts and r.stats["edges"] == serial.stats["edges"]
+            assert [(d.kind, d.tets, d.vertices) for d in r.defects] == \
+                [(d.kind, d.tets, d.vertices) for d in serial.defects]
+    with pytest.raises(ValueError, match="threads"):
+        dtlab.check(uniform, dt.tets, threads=-1)

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# tetra's outputs (issue 26): the same .ele bytes and the same check at 1, 2 and 3
+# threads; a 0-based input .node copied (or kept, as the output itself) byte for byte;
+# --format npy files that numpy.load reads (skipped without numpy), with the tets of
+# the .ele in dtlab's orientation; oracle and bench take --threads.
+set -u
+. "$(dirname "$0")/expect.sh"
+
+expect 0 "sample" -- "$dtlab" sample builtin --count 3000 --out "$tmp/p.xyz"
+for t in 1 2 3; do
+  expect 0 "tetra --threads $t --check" -- "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/t$t" --threads "$t" --check
+  grep -q "check: valid" "$tmp/out" && pass=$((pass + 1)) || { echo "FAIL: check at $t threads"; fails=$((fails + 1)); }
+done
+for t in 2 3; do
+  cmp -s "$tmp/t1.ele" "$tmp/t$t.ele" && cmp -s "$tmp/t1.node" "$tmp/t$t.node" && pass=$((pass + 1)) ||
+    { echo "FAIL: files differ between 1 and $t threads"; fails=$((fails + 1)); }
+done
+expect 0 "tetra on a .node (copied)" -- "$dtlab" tetra "$tmp/t1.node" --out "$tmp/c" --json
+grep -q '"node_file": "copied"' "$tmp/out" && cmp -s "$tmp/t1.node" "$tmp/c.node" && pass=$((pass + 1)) ||
+  { echo "FAIL: the input .node was not copied byte for byte"; fails=$((fails + 1)); }
+cp "$tmp/t1.node" "$tmp/k.node"
+expect 0 "tetra on a .node into itself (kept)" -- "$dtlab" tetra "$tmp/k.node" --out "$tmp/k" --json
+grep -q '"node_file": "kept"' "$tmp/out" && cmp -s "$tmp/t1.node" "$tmp/k.node" && cmp -s "$tmp/t1.ele" "$tmp/k.ele" &&
+  pass=$((pass + 1)) || { echo "FAIL: the kept .node or its .ele changed"; fails=$((fails + 1)); }
+expect 0 "dtlab check on the kept pair" -- "$dtlab" check "$tmp/k"
+expect 2 "--format bad" -- "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/x" --format csv
+expect 2 "--threads -1" -- "$dtlab" tetra "$tmp/p.xyz" --threads -1
+expect 0 "tetra --format npy" -- "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/n" --format npy
+if /usr/bin/python3 -c "import numpy" 2>/dev/null; then
+  /usr/bin/python3 - "$tmp" <<'PY' && pass=$((pass + 1)) || fails=$((fails + 1))
+import sys, numpy as np
+d = sys.argv[1]
+p, t = np.load(d + "/n.points.npy"), np.load(d + "/n.tets.npy")
+assert p.dtype == np.float64 and p.shape == (3000, 3), (p.dtype, p.shape)
+ele = np.loadtxt(d + "/t1.ele", skiprows=1, dtype=np.int64)[:, 1:]
+ele[:, [0, 1]] = ele[:, [1, 0]]  # .ele is TetGen's orientation
+assert t.dtype == np.uint32 and (t == ele).all(), "npy tets differ from the .ele"
+xyz = np.loadtxt(d + "/p.xyz")
+assert (p == xyz).all(), "npy points differ from the input"
+PY
+else
+  echo "SKIP: numpy not installed (python3-numpy): .npy not read back"
+fi
+expect 0 "oracle --threads 2" -- "$dtlab" oracle "$tmp/p.xyz" --against cgal --threads 2 --quiet
+expect 0 "bench with the parallel peers" -- "$dtlab" bench --sizes 2000 --runs 1 --tools dtlab,cgal-parallel,gmsh-hxt \
+  --threads 2 --quiet --json
+
+echo "$pass passed, $fails failed"
+[ "$fails" -eq 0 ]
