@@ -7,6 +7,7 @@
 
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
+#include "voronoi_check/check_json.hpp"
 #include "voronoi_check/voronoi_peers.hpp"
 
 namespace dtlab::cli {
@@ -14,22 +15,6 @@ namespace dtlab::cli {
 namespace {
 
 constexpr int kNoAnswer = 3;
-
-nlohmann::json report_json(const VoronoiCheckReport& r) {
-  nlohmann::json counts = nlohmann::json::object();
-  for (int k = 0; k < kVoronoiDefects; ++k)
-    if (r.counts[k]) counts[voronoi_defect_name(static_cast<VoronoiDefect>(k))] = r.counts[k];
-  nlohmann::json w = nlohmann::json::array();
-  for (const auto& x : r.witnesses)
-    w.push_back({{"kind", voronoi_defect_name(x.kind)}, {"site", x.site}, {"neighbor", x.neighbor},
-                 {"size", x.size}, {"detail", x.detail}});
-  return {{"topology", topology_name(r.topology)}, {"counts", counts}, {"witnesses", w},
-          {"largest_wrong_face", r.largest_wrong_face}, {"largest_small_face", r.largest_small_face},
-          {"max_vertex_ulps", r.max_vertex_ulps}, {"max_vertex_error", r.max_vertex_error},
-          {"volume_sum", r.volume_sum}, {"box_volume", r.box_volume}, {"volume_error", r.volume_error},
-          {"cells", r.cells}, {"faces", r.faces}, {"voronoi_edges", r.voronoi_edges},
-          {"degenerate_edges", r.degenerate_edges}, {"seconds_check", r.seconds}};
-}
 
 std::string line_of(const VoronoiPeerRun& r) {
   std::ostringstream s;
@@ -64,9 +49,11 @@ std::vector<std::string> parse_voronoi_peers(const std::string& list) {
 int judge_voronoi_peers(const std::vector<Point3>& sites, const VoronoiDiagram& diagram, const VoronoiAgainst& a,
                         bool json, nlohmann::json& out) {
   const VoronoiCheckReport ours = check_voronoi(sites, diagram.box, tool_cells_of(diagram));
-  out["exact_check"] = report_json(ours);
-  out["exact_check"]["verdict"] = voronoi_verdict_name(ours.verdict);
-  if (!json) std::printf("dtlab: %s (%s)\n", voronoi_verdict_name(ours.verdict), voronoi_counts_text(ours).c_str());
+  out["exact_check"] = to_json(ours);
+  if (!json) {
+    const std::string counts = voronoi_counts_text(ours);
+    std::printf("dtlab: %s%s\n", voronoi_verdict_name(ours.verdict), counts.empty() ? "" : (" (" + counts + ")").c_str());
+  }
   VoronoiPeerOptions o;
   o.timeout_s = a.timeout;
   out["peers"] = nlohmann::json::object();
@@ -76,8 +63,8 @@ int judge_voronoi_peers(const std::vector<Point3>& sites, const VoronoiDiagram& 
     progress.update("peers", k, a.peers.size(), "running " + a.peers[k]);
     const VoronoiPeerRun r = run_voronoi_peer(a.peers[k], sites, diagram.box, o);
     all_answered &= r.report.has_value();
-    nlohmann::json j = r.report ? report_json(*r.report) : nlohmann::json::object();
-    j["verdict"] = voronoi_verdict_name(r.verdict);
+    nlohmann::json j = r.report ? to_json(*r.report) : nlohmann::json::object();
+    j["verdict"] = voronoi_verdict_name(r.verdict);  // also when there is no report
     j["message"] = r.message;
     j["seconds"] = r.seconds;
     j["wall_seconds"] = r.wall_seconds;

@@ -11,6 +11,8 @@
 #   - an unbounded cell (a hull site): the box clipped by the bisectors of the
 #     tool's ridge neighbours (the tool's topology, the adapter's vertices).
 # Exit: 0 answered, 2 bad usage, 3 the tool refused (its message last on stderr), 4 not installed.
+# The Python module imports the clipping part (cells_from_ridges) as dtlab._voronoi_regions
+# (dtlab.check_voronoi on a scipy.spatial.Voronoi): one adapter for both.
 import struct, subprocess, sys, time
 
 try:
@@ -200,4 +202,5 @@ def main():
     return 0
 
 
-sys.exit(main())
+if __name__ == "__main__":
+    sys.exit(main())

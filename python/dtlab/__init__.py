@@ -31,7 +31,7 @@ __all__ = [
     "BuildFailure", "CheckReport", "Comparison", "DEFECT_KINDS", "Defect", "Failure", "Mesh",
     "OracleReport", "OracleRun", "Piece", "Pieces", "Tetrahedralization", "VoronoiCell",
     "VoronoiDiagram", "check", "compare", "fracture", "fuzz", "oracle", "read_mesh", "sample",
-    "tetrahedralize", "voronoi", "spatial", "from_meshio",
+    "tetrahedralize", "voronoi", "spatial", "from_meshio", "check_voronoi",
 ]
 
 MeshLike = Union[str, "os.PathLike[str]", Mesh, tuple[Any, Any]]
@@ -189,6 +189,51 @@ def voronoi(points: Any, box: Any = None, *, margin: float = 0.1, predicates: st
                                  tuple(c["centroid"]), int(c["duplicate_of"])))
     return VoronoiDiagram(tuple(tuple(x) for x in raw["box"]), cells, int(raw["tets"]), int(raw["clipped"]),
                           int(raw["box_clipped"]), float(raw["seconds_delaunay"]), float(raw["seconds_cells"]))
+
+
+def _tool_cells(points: Any, cells: Any, box: list[float]) -> list[tuple[Any, ...]]:
+    """(site, vertices, face_offsets, face_vertices, face_neighbors) per cell of a
+    dtlab VoronoiDiagram, a scipy.spatial.Voronoi (its regions clipped to the box by the
+    adapter of the scipy-voronoi peer) or a list of (site, vertices, faces, neighbors)."""
+    if hasattr(cells, "ridge_points") and hasattr(cells, "ridge_vertices"):
+        from ._voronoi_regions import cells_from_ridges
+        pts = np.asarray(points, dtype=np.float64)
+        ridges = [(int(p), int(q), [int(v) for v in vs]) for (p, q), vs in zip(cells.ridge_points, cells.ridge_vertices)]
+        clipped = cells_from_ridges(pts, cells.vertices, ridges, box[:3], box[3:])
+        cells = [(i, verts, faces, tags) for i, (verts, faces, tags) in sorted(clipped.items())]
+    elif isinstance(cells, VoronoiDiagram):
+        cells = [(c.site, c.vertices, c.faces, c.face_neighbors) for c in cells.cells if len(c.faces)]
+    out = []
+    for site, verts, faces, neighbors in cells:
+        sizes = [len(f) for f in faces]
+        offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.uint32)
+        corners = np.concatenate([np.asarray(f, dtype=np.uint32) for f in faces]) if faces else np.zeros(0, np.uint32)
+        out.append((int(site), np.asarray(verts, dtype=np.float64).reshape(-1, 3), offsets, corners,
+                    np.asarray(neighbors, dtype=np.int32)))
+    return out
+
+
+def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float = 1e-9,
+                  vertex_tolerance: float = 1e-9, volume_tolerance: float = 1e-9) -> dict[str, Any]:
+    """Judge any tool's Voronoi cells with dtlab's exact Voronoi checker.
+
+    cells: a dtlab VoronoiDiagram, a scipy.spatial.Voronoi (its regions clipped to the
+    box as the scipy-voronoi peer does: bounded regions keep scipy's vertices, unbounded
+    ones are the box cut by the bisectors of scipy's ridge neighbours), or a list of
+    (site, vertices (n, 3), faces (lists of vertex indices, counter-clockwise from
+    outside), face neighbours (site ids, -1..-6 for the walls x-lo..z-hi)).
+    box: as for voronoi(); default: a VoronoiDiagram's own box, else the bounding box
+    grown by 10% per side. Returns the report: verdict (exact-topology,
+    rounded-topology, bad-geometry, volume-mismatch, wrong-topology), topology, counts,
+    witnesses, largest_wrong_face, max_vertex_ulps, volume_error, ...
+    """
+    if box is None:
+        b = _box_arg(cells.box) if isinstance(cells, VoronoiDiagram) else _core.default_box(points, 0.1)
+    else:
+        b = _box_arg(box)
+    assert b is not None
+    return _core.check_voronoi(points, _tool_cells(points, cells, b), b, float(small_face), float(vertex_tolerance),
+                               float(volume_tolerance))
 
 
 def read_mesh(path: str | os.PathLike[str]) -> Mesh:

@@ -8,6 +8,7 @@ void bind_tetrahedralize(pybind11::module_& m);
 void bind_check(pybind11::module_& m);
 void bind_oracle(pybind11::module_& m);
 void bind_voronoi(pybind11::module_& m);
+void bind_voronoi_check(pybind11::module_& m);
 void bind_sampling(pybind11::module_& m);
 void bind_fracture(pybind11::module_& m);
 void bind_fuzz(pybind11::module_& m);

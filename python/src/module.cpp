@@ -25,6 +25,7 @@ PYBIND11_MODULE(_core, m) {
   dtlab::python::bind_check(m);
   dtlab::python::bind_oracle(m);
   dtlab::python::bind_voronoi(m);
+  dtlab::python::bind_voronoi_check(m);
   dtlab::python::bind_sampling(m);
   dtlab::python::bind_fracture(m);
   dtlab::python::bind_fuzz(m);
