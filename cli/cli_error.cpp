@@ -1,5 +1,7 @@
 #include "cli/cli_error.hpp"
 
+#include <new>
+
 #include <algorithm>
 #include <cstdio>
 
@@ -40,6 +42,10 @@ CliError current_error(const std::string& command) {
   } catch (const CLI::ParseError& x) {
     e.reason = x.what();
     if (e.reason.empty()) e.reason = x.get_name();
+  } catch (const std::bad_alloc&) {
+    // Not the input's fault: a named failure of this run (exit 1), not bad input.
+    e.reason = "out of memory (the input may be fine: give the run more memory or a smaller input)";
+    e.exit = kDefect;
   } catch (const std::exception& x) {
     e.reason = x.what();
   } catch (...) {

@@ -1,5 +1,7 @@
 // dtlab sample: points on or inside a triangle mesh (chapter 3 of the thesis, plus
 // the robust winding-number sampler), with a mesh report and an inside/outside check.
+#include <cctype>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -32,11 +34,12 @@ struct SampleArgs {
   bool no_check = false;
 };
 
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 int run_sample(const SampleArgs& a) {
+  // Points are written as .node, or as x y z text (.xyz, .txt, .pwn): never text under a mesh extension.
+  std::string ext = a.out.substr(std::min(a.out.size(), a.out.find_last_of('.')));
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".node" && ext != ".xyz" && ext != ".txt" && ext != ".pwn")
+    throw CLI::ValidationError("--out", "'" + a.out + "': sample writes points as .xyz or .node");
   const auto method = parse_sample_method(a.method);
   if (!method) throw CLI::ValidationError("--method", "expected surface, rays, sdf or winding");
   const auto t0 = std::chrono::steady_clock::now();
@@ -55,7 +58,7 @@ int run_sample(const SampleArgs& a) {
   req.blue_noise_ratio = a.ratio;
   const SampleOutput out = sampler.sample(req);
   const auto t2 = std::chrono::steady_clock::now();
-  if (ends_with(a.out, ".node")) write_node(a.out, out.points);
+  if (ext == ".node") write_node(a.out, out.points);
   else write_xyz(a.out, out.points);
   const bool volume = *method != SampleMethod::surface;
   OutsideStats outside;

@@ -1,5 +1,7 @@
 // dtlab voronoi INPUT: Voronoi cells of a point file, clipped to a box. A failed
 // Delaunay build exits 1 with its named failure (e.g. walk-cycle).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -38,6 +40,44 @@ struct VoronoiArgs {
   bool quiet = false;
 };
 
+// The cells are clipped in doubles: squared distances of coordinates beyond 1e100 or
+// below 1e-100 overflow or underflow. Such inputs are refused, naming the range.
+constexpr double kCellCoordinateMax = 1e100, kCellExtentMin = 1e-100;
+
+// Without --check (which computes the cells anyway and reports their defects, exit 1).
+void check_voronoi_range(const std::string& input, const std::vector<Point3>& points,
+                         const std::optional<vor::Box>& box, bool checked) {
+  Point3 lo = points[0], hi = points[0];
+  for (const Point3& p : points) {
+    if (std::abs(p.x) > kCellCoordinateMax || std::abs(p.y) > kCellCoordinateMax || std::abs(p.z) > kCellCoordinateMax)
+      throw InputError(input, 0, "site coordinates beyond 1e100 in magnitude (their squares overflow a double): Voronoi cells are computed for |x| <= 1e100");
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  if (std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) < kCellExtentMin)
+    throw InputError(input, 0, "sites span less than 1e-100: Voronoi cells need an extent of at least 1e-100");
+  if (box && !checked)
+    for (double c : {box->lo.x, box->lo.y, box->lo.z, box->hi.x, box->hi.y, box->hi.z})
+      if (std::abs(c) > kCellCoordinateMax)
+        throw UsageError("--box: corners beyond 1e100 in magnitude (their squares overflow a double): cells are computed for |x| <= 1e100; --check reports what goes wrong beyond");
+}
+
+// The last line of defence without --check (which reports them as defects, exit 1): a
+// cell whose volume is NaN, infinite or zero, or cells that do not fill the box, are
+// never written as a result.
+void refuse_lost_cells(const std::string& input, const VoronoiDiagram& vd) {
+  double sum = 0;
+  for (const auto& c : vd.cells) {
+    if (c.duplicate_of >= 0) continue;
+    if (!std::isfinite(c.volume) || c.volume <= 0)
+      throw InputError(input, 0, "a Voronoi cell with no volume (zero or NaN): the sites are too close for cells "
+                                 "in double precision");
+    sum += c.volume;
+  }
+  if (!(std::abs(sum - vd.box.volume()) <= 1e-6 * vd.box.volume()))
+    throw InputError(input, 0, "the cells do not fill the box (double precision lost on these sites)");
+}
+
 int run_voronoi(const VoronoiArgs& a) {
   const bool obj = !a.no_obj;
   PointFile in = read_input_points(a.input);
@@ -52,6 +92,7 @@ int run_voronoi(const VoronoiArgs& a) {
       throw UsageError("--box needs xmin ymin zmin xmax ymax zmax with min < max");
     o.box = vor::Box{{a.box[0], a.box[1], a.box[2]}, {a.box[3], a.box[4], a.box[5]}};
   }
+  check_voronoi_range(a.input, in.points, o.box, a.check);
   std::optional<VoronoiDiagram> built;
   try {
     built = compute_voronoi(in.points, o);
@@ -67,6 +108,7 @@ int run_voronoi(const VoronoiArgs& a) {
     return kDefect;
   }
   const VoronoiDiagram& vd = *built;
+  if (!a.check) refuse_lost_cells(a.input, vd);
   nlohmann::json m = cells_manifest(vd);
   m["input"] = a.input;
   m["timing"] = {{"seconds_delaunay", vd.seconds_dt}, {"seconds_cells", vd.seconds_cells},

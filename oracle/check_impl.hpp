@@ -166,11 +166,15 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   st.interior_facets = table.interior;
   st.boundary_facets = table.boundary;
   for (const auto& refs : table.overshared) {
+    // A witness names at most 16 of the tets (a facet may be shared by all of them).
+    constexpr std::size_t kListed = 16;
     std::vector<std::uint32_t> tets;
-    for (auto r : refs) tets.push_back(r / 4);
+    for (auto r : refs)
+      if (tets.size() < kListed) tets.push_back(r / 4);
     const auto f = facet_vertices(T[refs[0] / 4], static_cast<int>(refs[0] % 4));
     out.add(DefectKind::broken_adjacency, std::move(tets), {f[0], f[1], f[2]}, 0,
-            "facet shared by " + std::to_string(refs.size()) + " tets");
+            "facet shared by " + std::to_string(refs.size()) + " tets" +
+                (refs.size() > kListed ? " (the first 16 listed)" : ""));
   }
   for (const auto& [r1, r2] : table.same_side) {
     const auto f = facet_vertices(T[r1 / 4], static_cast<int>(r1 % 4));

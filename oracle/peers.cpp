@@ -238,7 +238,10 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
         return run;
       }
     } else {
-      run.message = "wrote no .ele";
+      // Our input spans a volume (dtlab refuses flat inputs first): no .ele is no answer.
+      run.verdict = Verdict::refused;
+      run.message = "wrote no .ele (exit 0 without an answer)";
+      return run;
     }
     normalise_answer(points, a, spec->orientation, run);
     if (options.check) judge_answer(run, options.threads);

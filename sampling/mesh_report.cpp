@@ -43,7 +43,8 @@ std::string count_text(std::uint64_t n, const char* one, const char* many) {
 }  // namespace
 
 bool MeshReport::solid() const {
-  return closed && manifold && oriented && self_intersections == 0 && degenerate_triangles == 0 && volume != 0;
+  return closed && manifold && oriented && self_intersections == 0 && degenerate_triangles == 0 && volume != 0 &&
+         !overflow;  // a NaN or infinite volume proves nothing
 }
 
 std::vector<std::string> MeshReport::problems() const {
@@ -64,6 +65,7 @@ std::vector<std::string> MeshReport::problems() const {
   if (degenerate_triangles > 0)
     p.push_back(count_text(degenerate_triangles, "degenerate triangle", "degenerate triangles") + at_text(degenerate_at));
   if (triangles > 0 && closed && volume == 0) p.push_back("encloses no volume");
+  if (overflow) p.push_back("coordinates too large: the area or volume overflows a double");
   if (duplicate_vertices > 0)
     p.push_back(count_text(duplicate_vertices, "duplicate vertex", "duplicate vertices") + " (merged)" +
                 at_text(duplicate_at));

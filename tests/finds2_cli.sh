@@ -1,0 +1,218 @@
+#!/usr/bin/env bash
+# The second hostile probe's finds (tests/finds2/README.txt), replayed: interrupts that
+# left peers and temp folders behind, readers that dropped data, campaign files that
+# resumed the wrong results, numbers at the edges. Each check asserts the fixed
+# behaviour. Usage: finds2_cli.sh DTLAB FINDS2_DIR [PYTHONPATH of the dtlab module]
+set -u
+dtlab="$1"
+finds="$2"
+pypath="${3:-}"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+pass=0
+expect() {  # expect CODE DESCRIPTION -- command...   (each command gets 60 s at most)
+  local want=$1 what=$2
+  shift 3
+  timeout 60 "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    echo "FAIL: $what: exit $got, expected $want"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1))
+  else
+    pass=$((pass + 1))
+  fi
+}
+says() {  # says DESCRIPTION PATTERN: the last command's stdout+stderr matches PATTERN
+  if grep -qE -- "$2" "$tmp/out" "$tmp/err"; then pass=$((pass + 1)); else
+    echo "FAIL: $1: no /$2/ in:"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1)); fi
+}
+never() {  # never DESCRIPTION PATTERN
+  if grep -qE -- "$2" "$tmp/out" "$tmp/err"; then
+    echo "FAIL: $1: /$2/ in:"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1)); else pass=$((pass + 1)); fi
+}
+ok() {  # ok DESCRIPTION CONDITION...
+  local what=$1; shift
+  if "$@"; then pass=$((pass + 1)); else echo "FAIL: $what"; fails=$((fails + 1)); fi
+}
+
+# --- Interrupts: SIGINT to the group, SIGTERM, SIGHUP, SIGKILL during `oracle` with a
+# peer that never answers. Afterwards no stand-in runs and the temp folder is empty.
+mark="7$$"  # the stand-in's sleep, unique to this run
+printf '#!/bin/sh\nsleep 5%s\n' "$mark" > "$tmp/slowtg.sh"
+chmod +x "$tmp/slowtg.sh"
+running() { ps -eo stat,args | grep -v '^Z' | grep -q "[s]leep 5$mark"; }
+interrupt() {  # interrupt SIGNAL WANT_EXIT: starts oracle in its own session, signals its group
+  local sig=$1 want=$2 td="$tmp/t-$1"
+  mkdir -p "$td"
+  TMPDIR="$td" python3 "$finds/launch.py" "$tmp/int.out" "$dtlab" oracle "$finds/five.xyz" --against tetgen \
+    --tetgen "$tmp/slowtg.sh" --quiet &
+  local launcher=$!
+  for _ in $(seq 50); do running && break; sleep 0.1; done
+  ok "$sig: the stand-in peer started" running
+  if [ "$sig" = KILL ]; then kill -KILL "$launcher"; else kill -"$sig" -- -"$launcher"; fi
+  wait "$launcher"
+  local got=$?
+  ok "$sig: exit $got, expected $want" [ "$got" -eq "$want" ]
+  for _ in $(seq 30); do running || break; sleep 0.1; done
+  ok "$sig: no peer left running" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[s]leep 5$mark'; }"
+  for _ in $(seq 30); do [ -z "$(ls -A "$td")" ] && break; sleep 0.1; done
+  ok "$sig: the temp folder holds nothing of dtlab's ($(ls "$td"))" [ -z "$(ls -A "$td")" ]
+}
+interrupt INT 130
+interrupt TERM 143
+interrupt HUP 129
+interrupt KILL 137
+
+# Python's oracle() answers Ctrl-C within a second (not after the peer's timeout).
+if [ -n "$pypath" ] && PYTHONPATH="$pypath" python3 -c "import dtlab" 2>/dev/null; then
+  cat > "$tmp/py_int.py" <<EOF
+import os, signal, sys, threading, time, numpy as np
+import dtlab
+threading.Timer(1.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+t0 = time.monotonic()
+try:
+    dtlab.oracle(np.random.default_rng(1).random((20, 3)), against=("tetgen",), tetgen="$tmp/slowtg.sh", timeout=30)
+    print("no interrupt")
+except KeyboardInterrupt:
+    print("interrupted after %.2f s" % (time.monotonic() - t0))
+    sys.exit(0 if time.monotonic() - t0 < 2.5 else 1)
+sys.exit(1)
+EOF
+  expect 0 "python oracle() + SIGINT answers within a second" -- env PYTHONPATH="$pypath" python3 "$tmp/py_int.py"
+  says "python oracle() raised KeyboardInterrupt" "interrupted after"
+  for _ in $(seq 30); do running || break; sleep 0.1; done
+  ok "python: no peer left running" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[s]leep 5$mark'; }"
+fi
+
+# --- Readers.
+# The fast .ele reader declines a FIFO's content: the strict reader must not reopen it.
+printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 1 1 1\n' > "$tmp/f.node"
+mkfifo "$tmp/f.ele"
+(printf '# tets\n2 4 0\n0 1 4 2 3\n1 1 3 2 0\n' > "$tmp/f.ele" &)
+expect 0 "check with a FIFO .ele does not hang" -- timeout 10 "$dtlab" check "$tmp/f"
+# A line too long for the memory is a read error, not the end of the file.
+mkfifo "$tmp/long.xyz"
+(python3 "$finds/gen_longline.py" > "$tmp/long.xyz" 2>/dev/null &)
+expect 2 "a huge line under ulimit -v" -- bash -c "ulimit -v 400000; exec '$dtlab' tetra '$tmp/long.xyz'"
+says "the huge line is a read error" "long.xyz:1001: read error"
+# .xyz: x y z, then numeric attributes, as many on every line.
+expect 2 "six.xyz (6 then 3 columns)" -- "$dtlab" tetra "$finds/six.xyz"
+says "six.xyz names the column count" "six.xyz:2: expected 6 fields as on line 1, got 3"
+expect 2 "junk.xyz" -- "$dtlab" tetra "$finds/junk.xyz"
+says "junk.xyz names the line" "junk.xyz:[0-9]+: "
+printf '0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n0 0 1 0 0 1\n1 1 1 0 0 1\n' > "$tmp/kitten.xyz"
+expect 0 "six columns (x y z nx ny nz) are five points" -- "$dtlab" tetra "$tmp/kitten.xyz" --json
+says "kitten.xyz: five points" '"points": 5'
+cp "$tmp/kitten.xyz" "$tmp/kitten.pwn"
+expect 0 ".pwn is read as .xyz" -- "$dtlab" tetra "$tmp/kitten.pwn"
+cp "$tmp/kitten.xyz" "$tmp/UPPER.XYZ"
+expect 0 "upper-case .XYZ" -- "$dtlab" tetra "$tmp/UPPER.XYZ"
+printf '0 0 0 0 0 1\n1 0 0 0 0 x\n' > "$tmp/junkattr.xyz"
+expect 2 "a junk attribute" -- "$dtlab" tetra "$tmp/junkattr.xyz"
+says "junk attribute named" "junkattr.xyz:2: not a number: 'x'"
+expect 2 "euro.xyz (decimal comma)" -- "$dtlab" tetra "$finds/euro.xyz" --out "$tmp/e"
+says "euro.xyz names the decimal comma" "euro.xyz:1: .*decimal comma"
+expect 2 "euro.obj (decimal comma)" -- "$dtlab" tetra "$finds/euro.obj"
+says "euro.obj names the decimal comma" "euro.obj:1: .*decimal comma"
+expect 0 "bom.xyz: a UTF-8 BOM is skipped" -- "$dtlab" tetra "$finds/bom.xyz"
+printf '\xef\xbb\xbfx 0 0\n' > "$tmp/bomjunk.xyz"
+expect 2 "a junk token after a BOM" -- "$dtlab" tetra "$tmp/bomjunk.xyz"
+printf 'x\x01 0 0\n' > "$tmp/ctrl.xyz"
+expect 2 "a control character" -- "$dtlab" tetra "$tmp/ctrl.xyz"
+says "invisible bytes are shown" "not a number: 'x\\\\x01'"
+expect 2 "dim2.node" -- "$dtlab" tetra "$finds/dim2.node"
+says "dim2.node names the dimension" "dim2.node:1: dimension must be 3, got 2"
+# Meshes: records past the header's count, short counts, float indices, several solids.
+for f in off_trailing_faces.off off_header_fewer_faces.off; do
+  expect 2 "$f" -- "$dtlab" mesh check "$finds/$f"
+  says "$f: data after the last face" "$f:[0-9]+: unexpected data after the last face"
+done
+expect 2 "ply_ascii_trailing_faces.ply" -- "$dtlab" mesh check "$finds/ply_ascii_trailing_faces.ply"
+says "PLY trailing data" "unexpected data after the last element"
+expect 2 "ply_float_index_truncated.ply" -- "$dtlab" mesh check "$finds/ply_float_index_truncated.ply"
+says "PLY float index" "face index is not an integer"
+expect 0 "stl_two_solids.stl: both solids" -- "$dtlab" mesh check "$finds/stl_two_solids.stl"
+says "stl_two_solids.stl: 8 triangles" "8 triangles"
+expect 2 "nannorm.stl (ASCII NaN normal)" -- "$dtlab" mesh check "$finds/nannorm.stl"
+expect 2 "nanbin.stl (binary NaN normal)" -- "$dtlab" mesh check "$finds/nanbin.stl"
+says "nanbin.stl names the normal" "non-finite normal"
+expect 2 "badcnt.stl (binary with 'solid', wrong count)" -- "$dtlab" mesh check "$finds/badcnt.stl"
+says "badcnt.stl: the count, not endsolid" "binary STL announces 5 triangles"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 2 3 9\n' > "$tmp/idx.obj"
+expect 2 "OBJ index 9 of 4" -- "$dtlab" mesh check "$tmp/idx.obj"
+says "the OBJ index as written" "written 9"
+printf 'v 0 0 0 1\nv 1 0 0 0.5 0.5 0.5\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n' > "$tmp/w.obj"
+expect 0 "OBJ v x y z [w] and colours" -- "$dtlab" tetra "$tmp/w.obj"
+
+# --- Numbers at the edges: exact cells or exit 2 naming the range.
+for f in sc_1e155.xyz sc_1e-300.xyz ulp.xyz mix.xyz; do
+  expect 2 "voronoi $f" -- "$dtlab" voronoi "$finds/$f" --out "$tmp/v"
+  never "voronoi $f writes no NaN" "nan"
+done
+# shellcheck disable=SC2046
+expect 2 "voronoi --box 1e200" -- "$dtlab" voronoi "$finds/five.xyz" --box $(cat "$finds/voronoi_box_1e200.args") --out "$tmp/v"
+says "--box names the range" "beyond 1e100"
+expect 1 "tet_1e110.off: not solid with a NaN volume" -- "$dtlab" mesh check "$finds/tet_1e110.off"
+never "tet_1e110.off is never called solid" "^  solid"
+
+# --- Campaign files.
+D="$tmp/camp"
+expect 1 "fuzz eps 1e-12 (epsilon fails these)" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 --out "$D" --quiet --no-shrink
+expect 2 "fuzz resume with another --eps is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 0.1 --out "$D" --quiet --no-shrink
+says "the refusal names --eps" "with --eps 1e-12"
+expect 2 "fuzz resume with another --points is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 --points 20 --out "$D" --quiet --no-shrink
+says "the refusal names --points" "with --points 64"
+expect 2 "fuzz resume with another --order is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 --order input --out "$D" --quiet --no-shrink
+says "the refusal names --order" "with --order"
+# A results.jsonl whose last line was cut: the cut case runs again, nothing doubled.
+# (campT is the probe's folder after the old resume: line 6 is a cut record with a
+# whole one glued to it; here the cut is made afresh from its first five lines.)
+cp -r "$finds/fuzz_cut_line/campT" "$tmp/campT"
+chmod -R u+w "$tmp/campT"
+expect 0 "resume of the probe's folder" -- "$dtlab" fuzz --family uniform --cases 6 --out "$tmp/campT" --quiet
+says "its six cases are there, none rerun" "0 cases run now, 6 resumed"
+head -n 5 "$finds/fuzz_cut_line/campT/results.jsonl" > "$tmp/campT/results.jsonl"
+tail -n 1 "$finds/fuzz_cut_line/campT/results.jsonl" | head -c 200 >> "$tmp/campT/results.jsonl"
+expect 0 "resume of a cut results.jsonl" -- "$dtlab" fuzz --family uniform --cases 6 --out "$tmp/campT" --quiet
+says "the cut case runs again" "1 cases run now, 5 resumed"
+ok "6 whole records after the repair (got $(wc -l < "$tmp/campT/results.jsonl"))" \
+  [ "$(wc -l < "$tmp/campT/results.jsonl")" -eq 6 ]
+ok "every line is a record" python3 -c "import json,sys; [json.loads(l) for l in open(sys.argv[1])]" "$tmp/campT/results.jsonl"
+expect 0 "a second resume runs nothing" -- "$dtlab" fuzz --family uniform --cases 6 --out "$tmp/campT" --quiet
+says "nothing rerun" "0 cases run now, 6 resumed"
+# Two campaigns on one --out at once: the second is refused.
+flock "$tmp/campT/results.jsonl" sleep 3 &
+holder=$!
+sleep 0.3
+expect 2 "a second campaign on a locked --out" -- "$dtlab" fuzz --family uniform --cases 6 --out "$tmp/campT" --quiet
+says "the lock is named" "another campaign is writing"
+wait "$holder"
+
+# --- The low rows.
+for s in 0/4294967297 0/-3 1/1 a/2; do
+  expect 2 "--shard $s" -- "$dtlab" fuzz --family uniform --cases 2 --shard "$s" --out "$tmp/sh" --quiet
+done
+for s in -1 18446744073709551616 1e23; do
+  expect 2 "tetra --seed $s" -- "$dtlab" tetra "$finds/five.xyz" --seed "$s"
+  expect 2 "fuzz --seed $s" -- "$dtlab" fuzz --family uniform --cases 1 --seed "$s" --out "$tmp/sd" --quiet
+done
+expect 0 "--seed 18446744073709551615 is a seed" -- "$dtlab" tetra "$finds/five.xyz" --seed 18446744073709551615
+expect 2 "--min-points above --points" -- "$dtlab" fuzz --family uniform --cases 1 --points 10 --min-points 100 --out "$tmp/mp" --quiet
+says "--min-points named" "--min-points 100 is above --points 10"
+printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > "$tmp/tet.off"
+expect 1 "out of memory is not bad input" -- bash -c "ulimit -v 300000; exec '$dtlab' sample '$tmp/tet.off' --count 1073741824 --out '$tmp/s.xyz'"
+says "out of memory named" "out of memory"
+expect 3 "--tetgen /bin/true is no answer" -- "$dtlab" oracle "$finds/five.xyz" --against tetgen --tetgen /bin/true
+says "/bin/true refused" "refused"
+expect 2 "sample --out x.ply" -- "$dtlab" sample "$tmp/tet.off" --count 10 --out "$tmp/s.ply"
+ok "sample --out x.ply wrote nothing" [ ! -e "$tmp/s.ply" ]
+
+# A witness line lists at most 16 tets, however many share the facet.
+cp "$finds/rep5.node" "$tmp/rep5.node"
+python3 -c "print(200000,4,0);[print(i,1,4,2,3) for i in range(200000)]" > "$tmp/rep5.ele"
+expect 1 "check rep5 (a facet shared by 200000 tets)" -- "$dtlab" check "$tmp/rep5"
+ok "rep5's witness lines are short" [ "$(awk '{ if (length($0) > m) m = length($0) } END { print m }' "$tmp/out")" -lt 400 ]
+says "rep5 names the count" "facet shared by 200000 tets \\(the first 16 listed\\)"
+
+echo "finds2_cli: $pass passed, $fails failed"
+[ "$fails" -eq 0 ]
