@@ -8,8 +8,11 @@ namespace dtlab::cli {
 std::string predicates_error(const std::string& name) {
   for (std::string_view b : kBackendNames)
     if (name == b) return "";
-  if (name.rfind(kPluginPrefix, 0) != 0)
-    return "unknown predicates '" + name + "' (naive, epsilon, adaptive, exact, plugin:PATH.so)";
+  if (name.rfind(kPluginPrefix, 0) != 0) {
+    std::string list;
+    for (std::string_view b : kBackendNames) list += (list.empty() ? "" : ",") + std::string(b);
+    return name + " not in {" + list + "} and not plugin:PATH.so";
+  }
   try {
     load_plugin(name.substr(kPluginPrefix.size()));
   } catch (const std::invalid_argument& e) {

@@ -138,5 +138,11 @@ node=$(ls "$tmp/f3/corpus/"*.node | head -1)
 expect 0 "replaying the shrunk input" -- "$dtlab" oracle "$node" --against drop --peer "drop=$tmp/drop.sh {in} {out}"
 has "^  drop +invalid" "still fails when replayed"
 
+# experiment leaderboard: a --peer gets its own row.
+expect 0 "leaderboard with a command peer" -- "$dtlab" experiment leaderboard --quick --peers cgal --peer "self=$self" \
+  --family uniform,kettner_grid --cases 1 --no-meshes --speed-n 500 --out "$tmp/lb" --quiet
+[ "$(grep -c '^self,' "$tmp/lb/leaderboard.csv")" -eq 2 ] && grep -q '^| `self` | command: ' "$tmp/lb/report.md" \
+  && pass=$((pass + 1)) || { echo "FAIL: no row for the command peer"; fails=$((fails + 1)); }
+
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]
