@@ -86,6 +86,13 @@ int ele_first_index(const std::string& path) {
   return 0;
 }
 
+// read_ele swaps two vertices into dtlab's orientation; a command peer's tets are
+// oriented by their exact sign instead, and a flat one keeps the order the peer wrote
+// (as the built-in adapters keep it), so the swap is undone.
+void unswap(std::vector<Tet>& tets) {
+  for (Tet& t : tets) std::swap(t[0], t[1]);
+}
+
 // {out}.ele with {out}.node when the peer wrote one (its points become extra
 // vertices, which the adapter maps back to input points by their coordinates).
 PeerAnswer read_command_answer(const std::string& prefix, std::size_t n) {
@@ -94,12 +101,14 @@ PeerAnswer read_command_answer(const std::string& prefix, std::size_t n) {
   if (std::filesystem::exists(node)) {
     PointFile pf = read_node(node);
     a.tets = read_ele(ele, pf.first_index, pf.points.size());
+    unswap(a.tets);
     for (Tet& t : a.tets)
       for (auto& v : t) v += static_cast<std::uint32_t>(n);
     a.extra = std::move(pf.points);
     return a;
   }
   a.tets = read_ele(ele, ele_first_index(ele), n);
+  unswap(a.tets);
   return a;
 }
 
