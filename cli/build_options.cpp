@@ -1,13 +1,30 @@
 #include "cli/build_options.hpp"
 
 #include "cli/number_options.hpp"
+#include "predicates/backend_choice.hpp"
 
 namespace dtlab::cli {
 
+std::string predicates_error(const std::string& name) {
+  for (std::string_view b : kBackendNames)
+    if (name == b) return "";
+  if (name.rfind(kPluginPrefix, 0) != 0) {
+    std::string list;
+    for (std::string_view b : kBackendNames) list += (list.empty() ? "" : ",") + std::string(b);
+    return name + " not in {" + list + "} and not plugin:PATH.so";
+  }
+  try {
+    load_plugin(name.substr(kPluginPrefix.size()));
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
 void KernelArgs::add_to(CLI::App& app, unsigned which) {
   if (which & kPredicatesOption)
-    app.add_option("--predicates", predicates, "predicate backend")
-        ->check(CLI::IsMember({"naive", "epsilon", "adaptive", "exact"}))
+    app.add_option("--predicates", predicates, "predicate backend: naive, epsilon, adaptive, exact, or plugin:PATH.so")
+        ->check(CLI::Validator(predicates_error, "BACKEND"))
         ->capture_default_str();
   if (which & kEpsOption) {
     app.add_option("--eps", eps, "tolerance of the epsilon backend")->check(number_in(0, 1e300))->capture_default_str();

@@ -26,6 +26,10 @@ enum KernelOption : unsigned {
   kThreadsOption = 1u << 6,
 };
 
+// "" when `name` is a backend (a built-in name, or plugin:PATH of a loadable plug-in),
+// else why not.
+std::string predicates_error(const std::string& name);
+
 struct KernelArgs {
   std::string predicates = "adaptive";
   double eps = 1e-12;

@@ -1,4 +1,5 @@
 // dtlab experiment: reproducible experiments that write a report folder.
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -8,9 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/build_options.hpp"
 #include "cli/cli_error.hpp"
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
+#include "cli/peer_definitions.hpp"
 #include "cli/stdout_to_stderr.hpp"
 #include "experiments/benchmark.hpp"
 #include "experiments/leaderboard.hpp"
@@ -60,6 +63,10 @@ void add_experiment_command(CLI::App& app, int& rc) {
   t->add_flag("--quick", thesis->quick, "fewer sizes and cases (seconds instead of minutes)");
   t->add_option("--seed", thesis->seed, "experiment seed")->check(seed_value())->capture_default_str();
   t->add_flag("--no-figures", *no_figures, "skip the matplotlib figures");
+  t->add_option("--extra-predicates", thesis->extra_predicates,
+                "more backends for the failure-rate table, without sos (plugin:PATH.so, ...)")
+      ->delimiter(',')
+      ->check(CLI::Validator(predicates_error, "BACKEND"));
   auto thesis_json = std::make_shared<bool>(false);
   t->add_flag("--json", *thesis_json, "print a JSON summary (the report's headline facts) on stdout");
   t->add_flag("--quiet", *thesis_quiet, "no progress lines on stderr");
@@ -69,6 +76,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
     std::vector<std::string> args = {"--out", thesis->out.string(), "--seed", std::to_string(thesis->seed)};
     if (thesis->quick) args.push_back("--quick");
     if (*no_figures) args.push_back("--no-figures");
+    for (const auto& p : thesis->extra_predicates) args.insert(args.end(), {"--extra-predicates", p});
     thesis->command_line = command_line(t->get_name(), args);
     rc = run_experiment(*thesis_json, thesis->out, [&] { return experiments::run_thesis_failures(*thesis).exit_code; });
   });
@@ -112,6 +120,8 @@ void add_experiment_command(CLI::App& app, int& rc) {
   l->add_option("--out", board->out, "report folder")->type_name("DIR")->capture_default_str();
   l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 10^4, short shrinks");
   l->add_option("--peers", board->peers, "peers to judge, or all")->delimiter(',');
+  auto board_defined = std::make_shared<PeerDefinitionArgs>();
+  board_defined->add_to(*l, "--peers-file");
   l->add_option("--family,--families", board->families,
                 "fuzz families, as fuzz --family (none given: all; --families is the old spelling)")
       ->delimiter(',');
@@ -133,7 +143,12 @@ void add_experiment_command(CLI::App& app, int& rc) {
   l->add_option("--cgal-data", board->cgal_data, "CGAL demo data.tar.gz (default: libcgal-demo's)");
   l->add_flag("--json", *board_json, "print a JSON summary (the report's headline facts) on stdout");
   l->add_flag("--quiet", *board_quiet, "no progress lines on stderr");
-  l->callback([board, board_json, board_no_meshes, board_quiet, l, &rc] {
+  l->callback([board, board_json, board_no_meshes, board_quiet, board_defined, l, &rc] {
+    // Every defined peer gets its own row.
+    for (const auto& name : board_defined->register_all())
+      if (std::find(board->peers.begin(), board->peers.end(), name) == board->peers.end() &&
+          std::find(board->peers.begin(), board->peers.end(), "all") == board->peers.end())
+        board->peers.push_back(name);
     board->meshes = !*board_no_meshes;
     board->progress = !*board_quiet;
     std::vector<std::string> args = {"--out", board->out.string(), "--seed", std::to_string(board->seed)};
@@ -152,6 +167,8 @@ void add_experiment_command(CLI::App& app, int& rc) {
     };
     if (board->peers != std::vector<std::string>{"all"}) args.insert(args.end(), {"--peers", join(board->peers)});
     if (!board->families.empty()) args.insert(args.end(), {"--family", join(board->families)});
+    for (const auto& d : board_defined->definitions) args.insert(args.end(), {"--peer", d});
+    for (const auto& f : board_defined->files) args.insert(args.end(), {"--peers-file", f});
     board->command_line = command_line(l->get_name(), args);
     rc = run_experiment(*board_json, board->out, [&] { return experiments::run_leaderboard(*board).exit_code; });
   });

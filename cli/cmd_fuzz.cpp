@@ -17,10 +17,12 @@
 #include "cli/cli_error.hpp"
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
+#include "cli/peer_definitions.hpp"
 #include "cli/progress.hpp"
 #include "experiments/peer_campaign.hpp"
 #include "oracle/check.hpp"
 #include "oracle/compare.hpp"
+#include "oracle/peer_command.hpp"
 #include "oracle/peers.hpp"
 #include "fuzz/campaign.hpp"
 #include "fuzz/campaign_report.hpp"
@@ -59,6 +61,7 @@ struct FuzzArgs {
   bool json = false;
   bool quiet = false;
   bool predicates_given = false;
+  PeerDefinitionArgs defined;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -75,8 +78,7 @@ std::vector<std::string> split(const std::string& s) {
 std::vector<PredicateSpec> backends_of(const FuzzArgs& a) {
   std::vector<PredicateSpec> specs;
   for (const auto& name : split(a.predicates)) {
-    if (name != "naive" && name != "epsilon" && name != "adaptive" && name != "exact")
-      usage_error("unknown predicates '" + name + "' (naive, epsilon, adaptive, exact)");
+    if (const std::string why = predicates_error(name); !why.empty()) usage_error(why);
     for (const auto& p : split(a.perturb)) {
       if (p != "none" && p != "sos") usage_error("unknown perturbation '" + p + "' (none, sos)");
       PredicateSpec spec;
@@ -190,11 +192,12 @@ int run_target(const FuzzArgs& a, const std::vector<std::string>& families) {
     }
     for (const auto& f : failures)
       if (!f["corpus_file"].get<std::string>().empty())
-        std::printf("  %s case %zu: %s, shrunk to %zu points: %s/%s (dtlab oracle %s/%s --against %s)\n",
+        std::printf("  %s case %zu: %s, shrunk to %zu points: %s/%s (dtlab oracle %s/%s --against %s%s)\n",
                     f["source"].get<std::string>().c_str(), f["case"].get<std::size_t>(),
                     f["verdict"].get<std::string>().c_str(), f["shrunk_points"].get<std::size_t>(), a.out.c_str(),
                     f["corpus_file"].get<std::string>().c_str(), a.out.c_str(),
-                    f["corpus_file"].get<std::string>().c_str(), a.target.c_str());
+                    f["corpus_file"].get<std::string>().c_str(), a.target.c_str(),
+                    peer_definition_arguments(a.target).c_str());
     std::printf("%s: %zu cases, %zu failing%s\n", a.target.c_str(), cases.size(), failing,
                 not_installed ? " (not installed)" : "");
   }
@@ -327,6 +330,7 @@ int run_fuzz(const FuzzArgs& a) {
     return kOk;
   }
   if (!a.replay.empty()) return run_replay(a);
+  a.defined.register_all();
   if (a.summarize_only) return run_summarize(a);
   if (a.out.empty()) usage_error("--out DIR is required (or --replay, --list, --summarize DIR)");
 
@@ -384,7 +388,8 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   sub->add_option("--seed", args->seed, "campaign seed")->check(seed_value())->capture_default_str();
   sub->add_option("--points", args->max_points, "largest number of points per case")->transform(count_in(1, 1e7))->capture_default_str();
   sub->add_option("--min-points", args->min_points, "smallest number of points per case")->transform(count_in(1, 1e7))->each([args](const std::string&) { args->min_points_given = true; })->capture_default_str();
-  auto* pred = sub->add_option("--predicates", args->predicates, "comma list of naive, epsilon, adaptive, exact")
+  auto* pred = sub->add_option("--predicates", args->predicates,
+                               "comma list of naive, epsilon, adaptive, exact, plugin:PATH.so")
                    ->capture_default_str();
   sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();
   args->kernel.add_to(*sub, kEpsOption | kBoundaryOption | kOrderOption);
@@ -397,6 +402,7 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   sub->add_option("--target", args->target,
                   "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...); its failures are shrunk into "
                   "the corpus. Exit 1 when it failed, 3 when it is not installed");
+  args->defined.add_to(*sub);
   sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_option("--out", args->out, "campaign folder (results*.jsonl, corpus/, summary.md, environment.json)")
       ->type_name("DIR");

@@ -6,6 +6,7 @@
 // requested peer answered; 1: ours is wrong or differs; 2: bad usage or input;
 // 3: ours is fine but some peer gave no answer (crashed, hung, refused, or not
 // installed when named explicitly), so the comparison is incomplete.
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 #include "cli/number_options.hpp"
+#include "cli/peer_definitions.hpp"
 #include "cli/input_points.hpp"
 #include "kernel/build.hpp"
 #include "kernel/input_error.hpp"
@@ -41,13 +43,19 @@ struct Args {
   double memory_mb = 0;
   bool json = false;
   bool quiet = false;
+  bool against_given = false;
+  PeerDefinitionArgs defined;
 };
 
 void run_oracle(const Args& a, int& rc) {
+  // Defined peers run too unless --against names the peers to run.
+  std::vector<std::string> against = a.against;
+  for (const auto& name : a.defined.register_all())
+    if (!a.against_given && std::find(against.begin(), against.end(), name) == against.end()) against.push_back(name);
   const PointFile pf = read_input_points(a.input);
   const auto& pts = pf.points;
   OracleSessionOptions o;
-  o.against = a.against;
+  o.against = against;
   o.predicates = a.kernel.predicate_spec();
   o.build = a.kernel.build_options();
   o.peers.timeout_s = a.timeout;
@@ -55,7 +63,7 @@ void run_oracle(const Args& a, int& rc) {
   o.peers.tetgen = a.tetgen;
   o.peers.threads = thread_count(a.kernel.threads);
   try {
-    expand_peer_names(a.against);
+    expand_peer_names(against);
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--against", e.what());
   }
@@ -111,7 +119,10 @@ void add_oracle_command(CLI::App& app, int& rc) {
   sub->add_option("INPUT", a->input, kInputPointsHelp)->required();
   std::string peers;
   for (const auto& n : peer_names()) peers += (peers.empty() ? "" : ", ") + n;
-  sub->add_option("--against", a->against, "peers to run, or all: " + peers)->delimiter(',')->capture_default_str();
+  auto* against = sub->add_option("--against", a->against, "peers to run, or all: " + peers + " (and the --peer names)")
+                      ->delimiter(',')
+                      ->capture_default_str();
+  a->defined.add_to(*sub);
   sub->add_option("--tetgen", a->tetgen, "the tetgen binary")->capture_default_str();
   sub->add_option("--timeout", a->timeout, "seconds before a peer counts as hung")->check(number_in(0.001, 1e6))->capture_default_str();
   sub->add_option("--memory", a->memory_mb, "memory limit per peer in MB (0: half the machine's)")->check(number_in(0, 1e9));
@@ -121,7 +132,10 @@ void add_oracle_command(CLI::App& app, int& rc) {
   sub->footer(
       "Verdicts: delaunay, triangulation, flat-tets, invalid, unproven, missing-points, extra-points, crashed, hung, refused, "
       "not-installed.\nExit: 0 ok, 1 dtlab wrong or differing, 2 bad input, 3 some peer gave no answer.");
-  sub->callback([a, &rc] { run_oracle(*a, rc); });
+  sub->callback([a, against, &rc] {
+    a->against_given = against->count() > 0;
+    run_oracle(*a, rc);
+  });
 }
 
 }  // namespace dtlab::cli

@@ -28,6 +28,7 @@ void register_commands(CLI::App& app, int& rc) {
   add_voronoi_command(app, rc);
   add_fracture_command(app, rc);
   add_bench_command(app, rc);
+  add_predicates_command(app, rc);
   add_demo_command(app, rc);
   show_defaults(app);
 }

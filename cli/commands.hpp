@@ -14,6 +14,7 @@ void add_mesh_command(CLI::App& app, int& rc);
 void add_demo_command(CLI::App& app, int& rc);
 void add_experiment_command(CLI::App& app, int& rc);
 void add_bench_command(CLI::App& app, int& rc);
+void add_predicates_command(CLI::App& app, int& rc);
 
 // Registers every subcommand; defined in commands.cpp.
 void register_commands(CLI::App& app, int& rc);

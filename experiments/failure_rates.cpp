@@ -109,8 +109,15 @@ nlohmann::json rates_section(const SectionContext& c) {
   const std::vector<std::size_t> sizes = c.quick ? std::vector<std::size_t>{16, 64, 256}
                                                  : std::vector<std::size_t>{16, 64, 256, 1024, 4096};
   const int cases = c.quick ? 4 : 64;
-  std::vector<PredicateSpec> backends = {{"naive", 0, false, false}, {"epsilon", 1e-12, false, false},
-                                         {"adaptive", 0, false, true}, {"exact", 0, false, true}};
+  // The thesis's four, then the wider naive types (does precision fix it?), the interval
+  // filter with its exact fallback, and any extra backend asked for.
+  std::vector<PredicateSpec> backends = {{"naive", 0, false, false},       {"epsilon", 1e-12, false, false},
+                                         {"adaptive", 0, false, true},     {"exact", 0, false, true},
+                                         {"long-double", 0, false, false}, {"float128", 0, false, false},
+                                         {"interval", 0, false, true}};
+  backends.insert(backends.end(), c.extra_backends.begin(), c.extra_backends.end());
+  std::vector<std::string> labels;
+  for (const auto& spec : backends) labels.push_back(fuzz::backend_label(spec));
   std::vector<std::vector<std::string>> rows;
   nlohmann::json cells = nlohmann::json::array();
   for (const auto& fam : families)
@@ -146,7 +153,7 @@ nlohmann::json rates_section(const SectionContext& c) {
             {"backend", "family", "n", "cases", "failed", "failure_rate", "ci95_low", "ci95_high", "crash", "overlap_inverted",
              "missing_point", "non_delaunay", "mean_build_ms", "outcomes"},
             rows);
-  return {{"families", families}, {"sizes", sizes}, {"cases", cases}, {"cells", cells},
+  return {{"families", families}, {"sizes", sizes}, {"cases", cases}, {"cells", cells}, {"labels", labels},
           {"backends", {"naive", "epsilon (eps 1e-12, absolute)", "adaptive+sos", "exact+sos"}}};
 }
 

@@ -19,6 +19,7 @@
 #include "fuzz/outcome.hpp"
 #include "fuzz/shrink.hpp"
 #include "kernel/point_io.hpp"
+#include "oracle/peer_command.hpp"
 #include "oracle/peer_json.hpp"
 #include "experiments/report.hpp"
 #include "oracle/served_child.hpp"
@@ -205,7 +206,7 @@ void save_shrunk(PeerCase& c, std::size_t original_points, const std::string& ou
       {"shrink_stopped_by", c.shrink_stop},
       {"served_shrink_not_reproduced", c.served_not_reproduced},  // points of a served shrink a fresh run disagreed with
       {"shrunk_run", to_json(c.shrunk_run)},
-      {"command", "dtlab oracle " + c.corpus_file + " --against " + c.peer},
+      {"command", "dtlab oracle " + c.corpus_file + " --against " + c.peer + peer_definition_arguments(c.peer)},
       {"original_command", original_command},
   };
   if (c.hung_try_seconds > 0) j["hung_try_seconds"] = c.hung_try_seconds;  // the short limit of a hang's tries
@@ -250,7 +251,7 @@ std::vector<PeerCase> run_peer_campaign(const PeerCampaignOptions& o) {
     c.run = run_peer(c.peer, points, o.peer_options);
     c.run.mesh.reset();
     if (c.failed() && o.shrink && !o.out_dir.empty() && c.run.verdict != Verdict::hung) {
-      const std::string cmd = "dtlab fuzz --target " + c.peer + " --family " + c.source + " --case " +
+      const std::string cmd = "dtlab fuzz --target " + c.peer + peer_definition_arguments(c.peer) + " --family " + c.source + " --case " +
                               std::to_string(c.index) + " --seed " + std::to_string(o.seed) + " --min-points " +
                               std::to_string(o.min_points) + " --points " + std::to_string(o.max_points) +
                               " --out DIR";

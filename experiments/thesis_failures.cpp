@@ -154,7 +154,7 @@ std::string rates_markdown(const json& rates) {
   o << table_row(head) << table_rule(head.size());
   std::map<std::pair<std::string, std::string>, std::map<std::size_t, json>> grid;
   for (const auto& c : rates["cells"]) grid[{c["backend"], c["family"]}][c["n"]] = c;
-  for (const std::string b : {"naive", "epsilon", "adaptive+sos", "exact+sos"})
+  for (const std::string& b : rates["labels"].get<std::vector<std::string>>())
     for (const auto& fam : rates["families"]) {
       std::vector<std::string> row = {b + " / " + fam.get<std::string>()};
       for (const auto& n : sizes) {
@@ -480,7 +480,13 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
 ExperimentResult run_thesis_failures(const ThesisFailuresOptions& options) {
   const fs::path dir = options.out;
   fs::create_directories(dir / "data");
-  const SectionContext c{dir, options.quick, options.seed};
+  SectionContext c{dir, options.quick, options.seed, {}};
+  for (const auto& name : options.extra_predicates) {
+    PredicateSpec spec;
+    spec.backend = name;
+    spec.perturb = false;
+    c.extra_backends.push_back(spec);
+  }
   const auto t0 = std::chrono::steady_clock::now();
   auto step = [&](const char* what) {
     if (options.progress)

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,7 @@ struct ThesisFailuresOptions {
   bool figures = true;       // run the matplotlib script
   bool progress = false;     // one line per section on stderr
   std::string command_line;  // recorded in the report
+  std::vector<std::string> extra_predicates;  // more rows of the failure-rate table (plugin:PATH, ...), no sos
 };
 
 struct ExperimentResult {

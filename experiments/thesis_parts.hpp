@@ -16,6 +16,7 @@ struct SectionContext {
   std::filesystem::path dir;  // the report folder
   bool quick = false;
   std::uint64_t seed = 1;
+  std::vector<PredicateSpec> extra_backends;  // rows after the built-in ones (a plug-in, ...)
 };
 
 // A reproducible per-case seed from the experiment seed and what the case is.

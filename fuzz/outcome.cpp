@@ -1,5 +1,6 @@
 #include "fuzz/outcome.hpp"
 
+#include <filesystem>
 #include <chrono>
 #include <exception>
 
@@ -26,7 +27,11 @@ bool collinear(const Point3& a, const Point3& b, const Point3& c) {
 }  // namespace
 
 std::string backend_label(const PredicateSpec& spec) {
-  return spec.backend + (spec.perturb ? "+sos" : "");
+  // A plug-in by its file's stem: the label names files and table columns.
+  const std::string base = spec.backend.rfind("plugin:", 0) == 0
+                               ? "plugin:" + std::filesystem::path(spec.backend.substr(7)).stem().string()
+                               : spec.backend;
+  return base + (spec.perturb ? "+sos" : "");
 }
 
 bool is_lower_dimensional(std::span<const Point3> points) {

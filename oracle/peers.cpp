@@ -15,6 +15,8 @@
 #include "kernel/tet_io.hpp"
 #include "oracle/child_process.hpp"
 #include "oracle/peer_adapter.hpp"
+#include "oracle/peer_child.hpp"
+#include "oracle/peer_command.hpp"
 #include "oracle/peer_exchange.hpp"
 #include "oracle/served_child.hpp"
 #include "oracle/temp_dir.hpp"
@@ -59,6 +61,9 @@ const PeerSpec kPeers[] = {
 std::optional<PeerSpec> find_peer(const std::string& name) {
   for (const PeerSpec& p : kPeers)
     if (name == p.name) return p;
+  // dtlab:plugin:PATH: dtlab's inserter with a predicate plug-in, in the helper.
+  if (name.rfind("dtlab:plugin:", 0) == 0 && name.size() > 13 && name.find("+none") == std::string::npos)
+    return PeerSpec{"dtlab:plugin", Runner::helper, PeerOrientation::dtlab};
   // dtlab:B+none: the same backend without symbolic perturbation.
   const std::string suffix = "+none";
   if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
@@ -118,47 +123,6 @@ if msg:
 sys.exit(code)
 )PY";
 
-std::uint64_t default_memory() {
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page <= 0) return 0;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 2;
-}
-
-// The child's outcome when it gave no answer; nullopt when it exited 0.
-std::optional<Verdict> failure_of(const ChildResult& c, const std::string& log, PeerRun& run) {
-  run.wall_seconds = c.seconds;
-  run.seconds = c.seconds;
-  run.peak_rss_bytes = c.peak_rss_bytes;
-  switch (c.status) {
-    case ChildStatus::not_started:
-      run.message = c.message;
-      return Verdict::not_installed;
-    case ChildStatus::timed_out:
-      run.message = "killed after " + std::to_string(c.seconds).substr(0, 6) + " s";
-      return Verdict::hung;
-    case ChildStatus::signaled: {
-      const char* s = strsignal(c.signal);
-      run.message = std::string("signal ") + std::to_string(c.signal) + " (" + (s ? s : "?") + ")";
-      const std::string last = last_line_of(log);
-      if (!last.empty()) run.message += ": " + last;
-      return Verdict::crashed;
-    }
-    case ChildStatus::exited:
-      break;
-  }
-  const std::string last = last_line_of(log);
-  if (c.exit_code == 0) {
-    run.message = last;
-    return std::nullopt;
-  }
-  if (c.exit_code == 4) {
-    run.message = last.empty() ? "not installed" : last;
-    return Verdict::not_installed;
-  }
-  run.message = last.empty() ? "exit status " + std::to_string(c.exit_code) : last;
-  return Verdict::refused;
-}
-
 }  // namespace
 
 const std::vector<std::string>& peer_names() {
@@ -170,7 +134,9 @@ const std::vector<std::string>& peer_names() {
   return names;
 }
 
-bool is_peer_name(const std::string& name) { return find_peer(name).has_value(); }
+bool is_builtin_peer_name(const std::string& name) { return find_peer(name).has_value(); }
+
+bool is_peer_name(const std::string& name) { return is_builtin_peer_name(name) || find_command_peer(name).has_value(); }
 
 std::vector<std::string> expand_peer_names(const std::vector<std::string>& names) {
   std::vector<std::string> out;
@@ -178,11 +144,14 @@ std::vector<std::string> expand_peer_names(const std::vector<std::string>& names
     if (n == "all") {
       for (const auto& p : peer_names())
         if (std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
+      for (const auto& p : command_peer_names())
+        if (std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
       continue;
     }
     if (!is_peer_name(n)) {
       std::string list;
       for (const auto& p : peer_names()) list += (list.empty() ? "" : ", ") + p;
+      for (const auto& p : command_peer_names()) list += ", " + p;
       throw std::invalid_argument("unknown peer '" + n + "' (all, " + list + ")");
     }
     if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
@@ -198,6 +167,8 @@ std::string peer_binary(const PeerOptions& options, const std::string& name) {
 }
 
 PeerRun run_peer(const std::string& name, std::span<const Point3> points, const PeerOptions& options) {
+  if (const auto command = find_command_peer(name); command && !is_builtin_peer_name(name))
+    return run_command_peer(*command, points, options);
   const auto spec = find_peer(name);
   if (!spec) throw std::invalid_argument("unknown peer '" + name + "'");
   PeerRun run;
@@ -206,7 +177,7 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
   const std::string log = dir.file("log.txt");
   ChildLimits limits;
   limits.timeout_s = options.timeout_s;
-  limits.memory_bytes = options.memory_bytes ? options.memory_bytes : default_memory();
+  limits.memory_bytes = options.memory_bytes ? options.memory_bytes : default_peer_memory();
   limits.log_path = log;
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
   // An AddressSanitizer or ThreadSanitizer build of our own helpers reserves terabytes
@@ -221,7 +192,7 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
     write_node(node, pts);
     const std::string flags = name == "tetgen-flip" ? "-QzJNFl" : "-QzJNF";
     const ChildResult c = run_child({options.tetgen, flags, node}, limits);
-    if (auto v = failure_of(c, log, run)) {
+    if (auto v = child_failure(c, log, run)) {
       run.verdict = *v;
       return run;
     }
@@ -260,14 +231,14 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
     if (spec->threaded) argv.push_back(std::to_string(thread_count(options.threads)));
     std::string reply;
     c = options.servers->get(name, argv, limits).ask(in + "\t" + out, limits.timeout_s, reply);
-    write_text_file(log, reply + "\n");  // where failure_of looks for the message
+    write_text_file(log, reply + "\n");  // where child_failure looks for the message
   } else {
     if (spec->runner == Runner::helper) argv.push_back(name);
     argv.insert(argv.end(), {in, out});
     if (spec->threaded) argv.push_back(std::to_string(thread_count(options.threads)));
     c = run_child(argv, limits);
   }
-  if (auto v = failure_of(c, log, run)) {
+  if (auto v = child_failure(c, log, run)) {
     run.verdict = *v;
     return run;
   }
@@ -286,6 +257,8 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
 }
 
 std::string peer_version(const std::string& name, const PeerOptions& options) {
+  if (const auto command = find_command_peer(name); command && !is_builtin_peer_name(name))
+    return "command: " + command_text(command->argv);
   const auto spec = find_peer(name);
   if (!spec) throw std::invalid_argument("unknown peer '" + name + "'");
   TempDir dir("dtlab-peer");

@@ -16,6 +16,7 @@
 //   gmsh-hxt      the same with Mesh.Algorithm3D = 10 (HXT)     dtlab_peer_gmsh
 //   dtlab:B       dtlab's inserter, backend B (naive, epsilon, adaptive, exact),
 //                 symbolic perturbation on; dtlab:B+none without  dtlab_peer
+//   NAME          a command given by --peer NAME=COMMAND (oracle/peer_command.hpp)
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -66,8 +67,10 @@ struct PeerRun {
 
 // Every peer name, in the order of the table above (dtlab:B+none not listed).
 const std::vector<std::string>& peer_names();
+// A built-in peer or one registered by command (oracle/peer_command.hpp).
 bool is_peer_name(const std::string& name);
-// "all" expands to peer_names(); throws std::invalid_argument naming an unknown peer.
+bool is_builtin_peer_name(const std::string& name);
+// "all" expands to peer_names() and the command peers; throws std::invalid_argument naming an unknown peer.
 std::vector<std::string> expand_peer_names(const std::vector<std::string>& names);
 
 // Runs one peer on `points` and judges its answer. Never throws for what the peer

@@ -1,0 +1,50 @@
+#include "oracle/peer_child.hpp"
+
+#include <unistd.h>
+
+#include <cstring>
+
+namespace dtlab {
+
+std::uint64_t default_peer_memory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return 0;
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 2;
+}
+
+std::optional<Verdict> child_failure(const ChildResult& c, const std::string& log, PeerRun& run,
+                                     bool exit4_not_installed) {
+  run.wall_seconds = c.seconds;
+  run.seconds = c.seconds;
+  run.peak_rss_bytes = c.peak_rss_bytes;
+  switch (c.status) {
+    case ChildStatus::not_started:
+      run.message = c.message;
+      return Verdict::not_installed;
+    case ChildStatus::timed_out:
+      run.message = "killed after " + std::to_string(c.seconds).substr(0, 6) + " s";
+      return Verdict::hung;
+    case ChildStatus::signaled: {
+      const char* s = strsignal(c.signal);
+      run.message = std::string("signal ") + std::to_string(c.signal) + " (" + (s ? s : "?") + ")";
+      const std::string last = last_line_of(log);
+      if (!last.empty()) run.message += ": " + last;
+      return Verdict::crashed;
+    }
+    case ChildStatus::exited:
+      break;
+  }
+  const std::string last = last_line_of(log);
+  if (c.exit_code == 0) {
+    run.message = last;
+    return std::nullopt;
+  }
+  if (c.exit_code == 4 && exit4_not_installed) {
+    run.message = last.empty() ? "not installed" : last;
+    return Verdict::not_installed;
+  }
+  run.message = last.empty() ? "exit status " + std::to_string(c.exit_code) : last;
+  return Verdict::refused;
+}
+
+}  // namespace dtlab
