@@ -4,6 +4,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -14,6 +15,7 @@
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/peer_definitions.hpp"
+#include "oracle/peer_command.hpp"
 #include "cli/stdout_to_stderr.hpp"
 #include "experiments/benchmark.hpp"
 #include "experiments/leaderboard.hpp"
@@ -145,7 +147,8 @@ void add_experiment_command(CLI::App& app, int& rc) {
   l->add_flag("--quiet", *board_quiet, "no progress lines on stderr");
   l->callback([board, board_json, board_no_meshes, board_quiet, board_defined, l, &rc] {
     // Every defined peer gets its own row.
-    for (const auto& name : board_defined->register_all())
+    const std::vector<std::string> defined = board_defined->register_all();
+    for (const auto& name : defined)
       if (std::find(board->peers.begin(), board->peers.end(), name) == board->peers.end() &&
           std::find(board->peers.begin(), board->peers.end(), "all") == board->peers.end())
         board->peers.push_back(name);
@@ -167,8 +170,8 @@ void add_experiment_command(CLI::App& app, int& rc) {
     };
     if (board->peers != std::vector<std::string>{"all"}) args.insert(args.end(), {"--peers", join(board->peers)});
     if (!board->families.empty()) args.insert(args.end(), {"--family", join(board->families)});
-    for (const auto& d : board_defined->definitions) args.insert(args.end(), {"--peer", d});
-    for (const auto& f : board_defined->files) args.insert(args.end(), {"--peers-file", f});
+    // Each defined peer as a quoted --peer, so the recorded command runs as it is.
+    for (const auto& name : defined) args.push_back(peer_definition_arguments(name).substr(1));
     board->command_line = command_line(l->get_name(), args);
     rc = run_experiment(*board_json, board->out, [&] { return experiments::run_leaderboard(*board).exit_code; });
   });
