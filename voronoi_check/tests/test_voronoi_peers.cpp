@@ -32,8 +32,8 @@ TEST_CASE("every installed Voronoi peer is exact on random sites") {
   for (const auto& name : voronoi_peer_names()) {
     if (name == "dtlab:naive" || name == "dtlab:epsilon") continue;  // not robust: no promise
     const VoronoiPeerRun r = run_voronoi_peer(name, sites, kBox, quick());
-    INFO(name << ": " << voronoi_verdict_name(r.verdict) << " " << r.message
-              << (r.report ? " " + voronoi_counts_text(*r.report) : ""));
+    const std::string counts = r.report ? voronoi_counts_text(*r.report) : std::string();
+    INFO(name << ": " << voronoi_verdict_name(r.verdict) << " " << r.message << " " << counts);
     if (r.verdict == VoronoiVerdict::not_installed) {
       WARN(name << " not installed: " << r.message);
       continue;
