@@ -155,6 +155,13 @@ says "--box names the range" "beyond 1e100"
 expect 1 "tet_1e110.off: not solid with a NaN volume" -- "$dtlab" mesh check "$finds/tet_1e110.off"
 never "tet_1e110.off is never called solid" "^  solid"
 
+# Nested shells of the same orientation: diagnosed, and united by --repair.
+expect 1 "nested_same.off is not solid" -- "$dtlab" mesh check "$finds/nested_same.off"
+says "nested_same.off diagnosed" "inside a shell of the same orientation"
+expect 0 "mesh repair nested_same.off" -- "$dtlab" mesh repair "$finds/nested_same.off" --out "$tmp/nested_fixed.off"
+expect 0 "the repaired mesh is solid" -- "$dtlab" mesh check "$tmp/nested_fixed.off"
+expect 0 "fracture --repair nested_same.off" -- "$dtlab" fracture "$finds/nested_same.off" --pieces 8 --repair --out "$tmp/nf" --quiet
+
 # --- Campaign files.
 D="$tmp/camp"
 expect 1 "fuzz eps 1e-12 (epsilon fails these)" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 --out "$D" --quiet --no-shrink
