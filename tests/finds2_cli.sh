@@ -65,6 +65,13 @@ interrupt TERM 143
 interrupt HUP 129
 interrupt KILL 137
 
+# bench forks a measuring child that runs TetGen: SIGINT through `timeout` ends both.
+mkdir -p "$tmp/tb"
+TMPDIR="$tmp/tb" "$py" "$finds/launch.py" "$tmp/bench.out" timeout -s INT 3 "$dtlab" bench --sizes 2e6 --tools tetgen --runs 1 --quiet
+for _ in $(seq 30); do [ -z "$(ls -A "$tmp/tb")" ] && break; sleep 0.1; done
+ok "bench + SIGINT: the temp folder holds nothing of dtlab's ($(ls "$tmp/tb"))" [ -z "$(ls -A "$tmp/tb")" ]
+ok "bench + SIGINT: no tetgen left" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[t]etgen -QzJNF $tmp/tb/'; }"
+
 # Python's oracle() answers Ctrl-C within a second (not after the peer's timeout).
 if [ -n "$pypath" ] && PYTHONPATH="$pypath" "$py" -c "import dtlab" 2>/dev/null; then
   cat > "$tmp/py_int.py" <<EOF
