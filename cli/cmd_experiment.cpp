@@ -142,7 +142,7 @@ void add_experiment_command(CLI::App& app, int& rc) {
   l->add_option("--speed-n", board->speed_n, "one size for the speed table (0: 10^5 and 10^6; 10^4 with --quick)")
       ->transform(count_in(0, 1e9));
   l->add_flag("--no-meshes", *board_no_meshes, "leave out the CGAL demo mesh samples");
-  l->add_option("--cgal-data", board->cgal_data, "CGAL demo data.tar.gz (default: libcgal-demo's)");
+  l->add_option("--cgal-data", board->cgal_data, "CGAL demo data.tar.gz (default: libcgal-demo's)")->check(CLI::ExistingFile);
   l->add_flag("--json", *board_json, "print a JSON summary (the report's headline facts) on stdout");
   l->add_flag("--quiet", *board_quiet, "no progress lines on stderr");
   l->callback([board, board_json, board_no_meshes, board_quiet, board_defined, l, &rc] {

@@ -49,44 +49,10 @@ void append(TriangleMesh& a, const TriangleMesh& b) {
   for (const auto& t : b.triangles) a.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
 }
 
-// Connected components across shared edges, each with only its own vertices.
-std::vector<TriangleMesh> components(const TriangleMesh& m) {
-  std::vector<std::uint32_t> parent(m.triangles.size());
-  for (std::uint32_t t = 0; t < parent.size(); ++t) parent[t] = t;
-  auto find = [&](std::uint32_t a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  };
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> first;
-  for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const auto u = m.triangles[t][k], v = m.triangles[t][(k + 1) % 3];
-      const auto [it, fresh] = first.emplace(std::minmax(u, v), t);
-      if (!fresh) parent[find(t)] = find(it->second);
-    }
-  std::map<std::uint32_t, std::size_t> index;
-  std::vector<TriangleMesh> out;
-  std::vector<std::map<std::uint32_t, std::uint32_t>> ids;
-  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
-    const auto [it, fresh] = index.emplace(find(t), out.size());
-    if (fresh) out.emplace_back(), ids.emplace_back();
-    TriangleMesh& c = out[it->second];
-    auto& id = ids[it->second];
-    std::array<std::uint32_t, 3> tri{};
-    for (int k = 0; k < 3; ++k) {
-      const auto [jt, added] = id.emplace(m.triangles[t][k], static_cast<std::uint32_t>(c.vertices.size()));
-      if (added) c.vertices.push_back(m.vertices[m.triangles[t][k]]);
-      tri[k] = jt->second;
-    }
-    c.triangles.push_back(tri);
-  }
-  return out;
-}
-
 // The union of the shells of `m` when each shell alone is a solid (outward), by exact
 // corefinements; false when that does not apply or a corefinement fails.
 bool union_of_shells(const TriangleMesh& m, TriangleMesh& out, std::size_t& count) {
-  std::vector<TriangleMesh> shells = components(m);
+  std::vector<TriangleMesh> shells = connected_shells(m);
   count = shells.size();
   if (shells.size() < 2 || shells.size() > 500) return false;
   for (auto& c : shells) {
@@ -257,7 +223,7 @@ RepairResult repair_mesh(const TriangleMesh& input) {
   //    dropped when other shells enclose a volume.
   MeshReport now = analyze_mesh(current);
   {
-    std::vector<TriangleMesh> shells = components(current);
+    std::vector<TriangleMesh> shells = connected_shells(current);
     double total = 0;
     std::vector<double> volumes;
     for (const auto& c : shells) total += std::abs(volumes.emplace_back(signed_volume(c)));
@@ -271,6 +237,25 @@ RepairResult repair_mesh(const TriangleMesh& input) {
       step("dropped shells that enclose no volume", dropped);
       current = std::move(kept);
       now = analyze_mesh(current);
+    }
+  }
+
+  // 7b. Shells nested in a shell of the same orientation (a volume covered twice): their
+  //     union, which is the outer shell alone.
+  if (now.nested_shells > 0) {
+    const std::vector<TriangleMesh> shells = connected_shells(current);
+    const std::vector<char> nested = nested_same_orientation(shells);
+    TriangleMesh kept;
+    std::size_t dropped = 0;
+    for (std::size_t j = 0; j < shells.size(); ++j) {
+      if (nested[j]) ++dropped;
+      else append(kept, shells[j]);
+    }
+    const MeshReport check = analyze_mesh(kept);
+    if (dropped > 0 && check.nested_shells == 0) {
+      step("united nested shells of the same orientation (kept the outer)", dropped);
+      current = std::move(kept);
+      now = check;
     }
   }
 

@@ -1,6 +1,7 @@
 #include "kernel/exit_guard.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <mutex>
+#include <new>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -28,6 +30,9 @@ std::atomic<int> g_socket{-1};
 pid_t g_watchdog = -1;
 std::atomic<bool> g_interrupted{false};
 int g_signal_pipe[2] = {-1, -1};
+// Set around our own forks that exec (a child program) or run the watchdog: the fork
+// handler below leaves those children's state alone.
+thread_local bool t_own_fork = false;
 
 // The watchdog's list and what it does with it once dtlab is gone.
 struct Guarded {
@@ -87,12 +92,43 @@ void isolate_watchdog(int sock) {
   _exit(0);
 }
 
+// A plain fork of a guarded process (bench's measuring child) that goes on running
+// dtlab code: it drops its parent's list (its children are listed with a watchdog of its
+// own, started on first use), ends with its parent (PR_SET_PDEATHSIG), and takes the
+// signals' default actions (it has no signal thread).
+void after_plain_fork(pid_t parent) {
+  if (t_own_fork) return;
+  const int sock = g_socket.exchange(-1);
+  if (sock >= 0) close(sock);
+  g_watchdog = -1;
+  new (&g_lock) std::mutex;  // another thread may have held it at the fork
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction old {};
+    sigaction(sig, nullptr, &old);
+    if (old.sa_handler != SIG_IGN) signal(sig, SIG_DFL);
+  }
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(1);
+}
+
+pid_t g_parent_at_fork = 0;
+
+void register_fork_handler() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    pthread_atfork([] { g_parent_at_fork = getpid(); }, nullptr, [] { after_plain_fork(g_parent_at_fork); });
+  });
+}
+
 void start_watchdog_locked() {
   if (g_socket.load() >= 0) return;
+  register_fork_handler();
   int sv[2];
   if (socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, sv) != 0)
     throw std::runtime_error("cannot start the exit watchdog: socketpair failed");
+  t_own_fork = true;
   const pid_t pid = fork();
+  t_own_fork = false;
   if (pid < 0) {
     close(sv[0]);
     close(sv[1]);
@@ -132,6 +168,8 @@ void on_signal(int sig) {
 }
 
 }  // namespace
+
+void mark_exec_fork(bool on) { t_own_fork = on; }
 
 void prepare_exit_guard() {
   std::lock_guard<std::mutex> hold(g_lock);

@@ -20,6 +20,10 @@ void release_group(int pgid);
 // prepare_exit_guard() before the fork.
 void guard_own_group_in_child();
 void prepare_exit_guard();
+// Set (true) just before and cleared (false) just after a fork whose child execs:
+// any other fork of a guarded process gets a fresh guard of its own in the child
+// (its own watchdog, the parent's death ending it: bench's measuring child).
+void mark_exec_fork(bool on);
 
 // The interrupt path: ends every listed group, removes every listed path and waits
 // for the watchdog to finish; later guard and release calls block for ever (the

@@ -103,7 +103,9 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   int pipe_fd[2];
   if (pipe2(pipe_fd, O_CLOEXEC) != 0) throw std::runtime_error("run_child: pipe failed");
   prepare_exit_guard();
+  mark_exec_fork(true);
   const pid_t pid = fork();
+  mark_exec_fork(false);
   if (pid < 0) {
     close(pipe_fd[0]);
     close(pipe_fd[1]);

@@ -10,6 +10,7 @@
 #include "sampling/bvh.hpp"
 #include "sampling/merge_vertices.hpp"
 #include "sampling/self_intersection.hpp"
+#include "sampling/winding_number.hpp"
 
 namespace dtlab {
 
@@ -40,11 +41,32 @@ std::string at_text(const std::vector<Point3>& at) {
 std::string count_text(std::uint64_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
+std::size_t count_nested_shells(const TriangleMesh& mesh) {
+  const std::vector<TriangleMesh> shells = connected_shells(mesh);
+  if (shells.size() < 2 || shells.size() > 64) return 0;
+  const std::vector<char> nested = nested_same_orientation(shells);
+  return static_cast<std::size_t>(std::count(nested.begin(), nested.end(), 1));
+}
+
 }  // namespace
+
+// Shell j is nested in shell i when a vertex of j has winding number +-1 with respect
+// to i (the shells are disjoint); with the same orientation (the signs of their volumes
+// agree) it covers its volume a second time.
+std::vector<char> nested_same_orientation(const std::vector<TriangleMesh>& shells) {
+  std::vector<double> volume;
+  for (const auto& c : shells) volume.push_back(signed_volume(c));
+  std::vector<char> nested(shells.size(), 0);
+  for (std::size_t j = 0; j < shells.size(); ++j)
+    for (std::size_t i = 0; i < shells.size() && !nested[j]; ++i)
+      nested[j] = i != j && (volume[i] > 0) == (volume[j] > 0) &&
+                  std::abs(winding_number_exact(shells[i], shells[j].vertices[0])) > 0.5;
+  return nested;
+}
 
 bool MeshReport::solid() const {
   return closed && manifold && oriented && self_intersections == 0 && degenerate_triangles == 0 && volume != 0 &&
-         !overflow;  // a NaN or infinite volume proves nothing
+         !overflow && nested_shells == 0;  // a NaN or infinite volume proves nothing
 }
 
 std::vector<std::string> MeshReport::problems() const {
@@ -66,6 +88,9 @@ std::vector<std::string> MeshReport::problems() const {
     p.push_back(count_text(degenerate_triangles, "degenerate triangle", "degenerate triangles") + at_text(degenerate_at));
   if (triangles > 0 && closed && volume == 0) p.push_back("encloses no volume");
   if (overflow) p.push_back("coordinates too large: the area or volume overflows a double");
+  if (nested_shells > 0)
+    p.push_back(count_text(nested_shells, "shell lies", "shells lie") +
+                " inside a shell of the same orientation (an inner shell inside-out, or overlapping solids)");
   if (duplicate_vertices > 0)
     p.push_back(count_text(duplicate_vertices, "duplicate vertex", "duplicate vertices") + " (merged)" +
                 at_text(duplicate_at));
@@ -197,6 +222,7 @@ MeshReport analyze_mesh(const TriangleMesh& input, std::size_t locations, std::u
     ++r.self_intersections;
     note(r.self_intersection_at, (1.0 / 3) * (mesh.corner(s, 0) + mesh.corner(s, 1) + mesh.corner(s, 2)));
   });
+  if (r.closed && r.oriented && r.self_intersections == 0 && !r.overflow) r.nested_shells = count_nested_shells(mesh);
   return r;
 }
 

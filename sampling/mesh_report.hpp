@@ -25,6 +25,9 @@ struct MeshReport {
   bool manifold = false;  // no edge used more than twice, one fan around every vertex
   bool oriented = false;  // every edge used twice is used once in each direction
   bool overflow = false;  // area, volume or extent beyond a double: no sampler can work
+  // Shells inside another shell of the same orientation (a second cover of a volume:
+  // an inner shell inside-out, or overlapping solids); checked for up to 64 shells.
+  std::size_t nested_shells = 0;
   double area = 0, volume = 0;  // volume: signed (negative: oriented inward)
   Box3 box;
   // Up to `locations` points per problem (an edge's midpoint, a vertex, a triangle's centroid).
@@ -44,5 +47,9 @@ struct MeshReport {
 
 // `self_intersection_limit` stops the pair count there (0: count all).
 MeshReport analyze_mesh(const TriangleMesh& mesh, std::size_t locations = 3, std::uint64_t self_intersection_limit = 0);
+
+// For disjoint closed shells: 1 where the shell lies inside another shell of the same
+// orientation (MeshReport::nested_shells counts them), else 0.
+std::vector<char> nested_same_orientation(const std::vector<TriangleMesh>& shells);
 
 }  // namespace dtlab

@@ -27,5 +27,7 @@ Box3 bounding_box(const TriangleMesh& mesh);
 double surface_area(const TriangleMesh& mesh);
 // Signed volume by the divergence theorem: positive for a closed, outward-oriented mesh.
 double signed_volume(const TriangleMesh& mesh);
+// Connected components across shared edges (shells), each with only its own vertices.
+std::vector<TriangleMesh> connected_shells(const TriangleMesh& mesh);
 
 }  // namespace dtlab

@@ -7,6 +7,8 @@ set -u
 dtlab="$1"
 finds="$2"
 pypath="${3:-}"
+py=/usr/bin/python3  # Debian's, with numpy (a pyenv shim may have none)
+[ -x "$py" ] || py=python3
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fails=0
@@ -44,7 +46,7 @@ running() { ps -eo stat,args | grep -v '^Z' | grep -q "[s]leep 5$mark"; }
 interrupt() {  # interrupt SIGNAL WANT_EXIT: starts oracle in its own session, signals its group
   local sig=$1 want=$2 td="$tmp/t-$1"
   mkdir -p "$td"
-  TMPDIR="$td" python3 "$finds/launch.py" "$tmp/int.out" "$dtlab" oracle "$finds/five.xyz" --against tetgen \
+  TMPDIR="$td" "$py" "$finds/launch.py" "$tmp/int.out" "$dtlab" oracle "$finds/five.xyz" --against tetgen \
     --tetgen "$tmp/slowtg.sh" --quiet &
   local launcher=$!
   for _ in $(seq 50); do running && break; sleep 0.1; done
@@ -63,8 +65,15 @@ interrupt TERM 143
 interrupt HUP 129
 interrupt KILL 137
 
+# bench forks a measuring child that runs TetGen: SIGINT through `timeout` ends both.
+mkdir -p "$tmp/tb"
+TMPDIR="$tmp/tb" "$py" "$finds/launch.py" "$tmp/bench.out" timeout -s INT 3 "$dtlab" bench --sizes 2e6 --tools tetgen --runs 1 --quiet
+for _ in $(seq 30); do [ -z "$(ls -A "$tmp/tb")" ] && break; sleep 0.1; done
+ok "bench + SIGINT: the temp folder holds nothing of dtlab's ($(ls "$tmp/tb"))" [ -z "$(ls -A "$tmp/tb")" ]
+ok "bench + SIGINT: no tetgen left" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[t]etgen -QzJNF $tmp/tb/'; }"
+
 # Python's oracle() answers Ctrl-C within a second (not after the peer's timeout).
-if [ -n "$pypath" ] && PYTHONPATH="$pypath" python3 -c "import dtlab" 2>/dev/null; then
+if [ -n "$pypath" ] && PYTHONPATH="$pypath" "$py" -c "import dtlab" 2>/dev/null; then
   cat > "$tmp/py_int.py" <<EOF
 import os, signal, sys, threading, time, numpy as np
 import dtlab
@@ -78,10 +87,20 @@ except KeyboardInterrupt:
     sys.exit(0 if time.monotonic() - t0 < 2.5 else 1)
 sys.exit(1)
 EOF
-  expect 0 "python oracle() + SIGINT answers within a second" -- env PYTHONPATH="$pypath" python3 "$tmp/py_int.py"
+  expect 0 "python oracle() + SIGINT answers within a second" -- env PYTHONPATH="$pypath" "$py" "$tmp/py_int.py"
   says "python oracle() raised KeyboardInterrupt" "interrupted after"
   for _ in $(seq 30); do running || break; sleep 0.1; done
   ok "python: no peer left running" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[s]leep 5$mark'; }"
+  expect 0 "python check() names a uint64 index as given" -- env PYTHONPATH="$pypath" "$py" -c "
+import numpy as np, dtlab
+try:
+    dtlab.check(np.random.default_rng(1).random((5, 3)), np.array([[0, 1, 2, 2**64 - 1]], dtype=np.uint64))
+except ValueError as e:
+    assert '18446744073709551615' in str(e), e
+else:
+    raise SystemExit('accepted')"
+else
+  echo "finds2_cli: the Python checks skipped (no dtlab module with numpy)"
 fi
 
 # --- Readers.
@@ -92,7 +111,7 @@ mkfifo "$tmp/f.ele"
 expect 0 "check with a FIFO .ele does not hang" -- timeout 10 "$dtlab" check "$tmp/f"
 # A line too long for the memory is a read error, not the end of the file.
 mkfifo "$tmp/long.xyz"
-(python3 "$finds/gen_longline.py" > "$tmp/long.xyz" 2>/dev/null &)
+("$py" "$finds/gen_longline.py" > "$tmp/long.xyz" 2>/dev/null &)
 expect 2 "a huge line under ulimit -v" -- bash -c "ulimit -v 400000; exec '$dtlab' tetra '$tmp/long.xyz'"
 says "the huge line is a read error" "long.xyz:1001: read error"
 # .xyz: x y z, then numeric attributes, as many on every line.
@@ -155,6 +174,13 @@ says "--box names the range" "beyond 1e100"
 expect 1 "tet_1e110.off: not solid with a NaN volume" -- "$dtlab" mesh check "$finds/tet_1e110.off"
 never "tet_1e110.off is never called solid" "^  solid"
 
+# Nested shells of the same orientation: diagnosed, and united by --repair.
+expect 1 "nested_same.off is not solid" -- "$dtlab" mesh check "$finds/nested_same.off"
+says "nested_same.off diagnosed" "inside a shell of the same orientation"
+expect 0 "mesh repair nested_same.off" -- "$dtlab" mesh repair "$finds/nested_same.off" --out "$tmp/nested_fixed.off"
+expect 0 "the repaired mesh is solid" -- "$dtlab" mesh check "$tmp/nested_fixed.off"
+expect 0 "fracture --repair nested_same.off" -- "$dtlab" fracture "$finds/nested_same.off" --pieces 8 --repair --out "$tmp/nf" --quiet
+
 # --- Campaign files.
 D="$tmp/camp"
 expect 1 "fuzz eps 1e-12 (epsilon fails these)" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 --out "$D" --quiet --no-shrink
@@ -177,7 +203,7 @@ expect 0 "resume of a cut results.jsonl" -- "$dtlab" fuzz --family uniform --cas
 says "the cut case runs again" "1 cases run now, 5 resumed"
 ok "6 whole records after the repair (got $(wc -l < "$tmp/campT/results.jsonl"))" \
   [ "$(wc -l < "$tmp/campT/results.jsonl")" -eq 6 ]
-ok "every line is a record" python3 -c "import json,sys; [json.loads(l) for l in open(sys.argv[1])]" "$tmp/campT/results.jsonl"
+ok "every line is a record" "$py" -c "import json,sys; [json.loads(l) for l in open(sys.argv[1])]" "$tmp/campT/results.jsonl"
 expect 0 "a second resume runs nothing" -- "$dtlab" fuzz --family uniform --cases 6 --out "$tmp/campT" --quiet
 says "nothing rerun" "0 cases run now, 6 resumed"
 # Two campaigns on one --out at once: the second is refused.
@@ -209,10 +235,12 @@ ok "sample --out x.ply wrote nothing" [ ! -e "$tmp/s.ply" ]
 
 # A witness line lists at most 16 tets, however many share the facet.
 cp "$finds/rep5.node" "$tmp/rep5.node"
-python3 -c "print(200000,4,0);[print(i,1,4,2,3) for i in range(200000)]" > "$tmp/rep5.ele"
+"$py" -c "print(200000,4,0);[print(i,1,4,2,3) for i in range(200000)]" > "$tmp/rep5.ele"
 expect 1 "check rep5 (a facet shared by 200000 tets)" -- "$dtlab" check "$tmp/rep5"
 ok "rep5's witness lines are short" [ "$(awk '{ if (length($0) > m) m = length($0) } END { print m }' "$tmp/out")" -lt 400 ]
 says "rep5 names the count" "facet shared by 200000 tets \\(the first 16 listed\\)"
+
+expect 2 "experiment leaderboard --cgal-data /missing" -- "$dtlab" experiment leaderboard --cgal-data "$tmp/missing.tar.gz" --out "$tmp/lb"
 
 echo "finds2_cli: $pass passed, $fails failed"
 [ "$fails" -eq 0 ]

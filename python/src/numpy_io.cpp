@@ -1,5 +1,6 @@
 #include "python/src/numpy_io.hpp"
 
+#include <cstdint>
 #include <cmath>
 #include <sstream>
 
@@ -25,6 +26,13 @@ py::array integer_array(py::handle obj, const char* what) {
   if (kind != 'i' && kind != 'u')
     throw py::value_error(std::string(what) + " must be an integer array, got dtype " +
                           py::str(a.dtype()).cast<std::string>());
+  // uint64 beyond int64 would wrap to a negative index in the message: named as given.
+  if (kind == 'u' && a.dtype().itemsize() == 8 && a.size() > 0) {
+    const py::object top = a.attr("max")();
+    if (top.attr("__gt__")(py::int_(INT64_MAX)).cast<bool>())
+      throw py::value_error(std::string(what) + ": vertex index " + py::str(top).cast<std::string>() +
+                            " out of range");
+  }
   return a;
 }
 
