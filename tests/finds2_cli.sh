@@ -4,38 +4,12 @@
 # resumed the wrong results, numbers at the edges. Each check asserts the fixed
 # behaviour. Usage: finds2_cli.sh DTLAB FINDS2_DIR [PYTHONPATH of the dtlab module]
 set -u
-dtlab="$1"
 finds="$2"
 pypath="${3:-}"
 py=/usr/bin/python3  # Debian's, with numpy (a pyenv shim may have none)
 [ -x "$py" ] || py=python3
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-pass=0
-expect() {  # expect CODE DESCRIPTION -- command...   (each command gets 60 s at most)
-  local want=$1 what=$2
-  shift 3
-  timeout 60 "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL: $what: exit $got, expected $want"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1))
-  else
-    pass=$((pass + 1))
-  fi
-}
-says() {  # says DESCRIPTION PATTERN: the last command's stdout+stderr matches PATTERN
-  if grep -qE -- "$2" "$tmp/out" "$tmp/err"; then pass=$((pass + 1)); else
-    echo "FAIL: $1: no /$2/ in:"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1)); fi
-}
-never() {  # never DESCRIPTION PATTERN
-  if grep -qE -- "$2" "$tmp/out" "$tmp/err"; then
-    echo "FAIL: $1: /$2/ in:"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1)); else pass=$((pass + 1)); fi
-}
-ok() {  # ok DESCRIPTION CONDITION...
-  local what=$1; shift
-  if "$@"; then pass=$((pass + 1)); else echo "FAIL: $what"; fails=$((fails + 1)); fi
-}
+EXPECT_TIMEOUT=60
+source "$(dirname "$0")/../cli/tests/expect.sh" "$1"
 
 # --- Interrupts: SIGINT to the group, SIGTERM, SIGHUP, SIGKILL during `oracle` with a
 # peer that never answers. Afterwards no stand-in runs and the temp folder is empty.

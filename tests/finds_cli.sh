@@ -4,31 +4,9 @@
 # 2 bad usage or input with a message naming the file; no hang, no NaN passed off as
 # a result, no "wrote" after a failed write.
 set -u
-dtlab="$1"
 finds="$2"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-pass=0
-expect() {  # expect CODE DESCRIPTION -- command...   (each command gets 60 s at most)
-  local want=$1 what=$2
-  shift 3
-  timeout 60 "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    echo "FAIL: $what: exit $got, expected $want"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1))
-  else
-    pass=$((pass + 1))
-  fi
-}
-says() {  # says DESCRIPTION PATTERN: the last command's stdout+stderr matches PATTERN
-  if grep -qE -- "$2" "$tmp/out" "$tmp/err"; then pass=$((pass + 1)); else
-    echo "FAIL: $1: no /$2/ in:"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1)); fi
-}
-never() {  # never DESCRIPTION PATTERN: the last command's output does not match PATTERN
-  if grep -qE -- "$2" "$tmp/out" "$tmp/err"; then
-    echo "FAIL: $1: /$2/ in:"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -8; fails=$((fails + 1)); else pass=$((pass + 1)); fi
-}
+EXPECT_TIMEOUT=60
+source "$(dirname "$0")/../cli/tests/expect.sh" "$1"
 cli="$finds/cli"
 
 # An axis extent in (0, 5.7e-306): the Hilbert order's NaN (spatial_order.cpp).
