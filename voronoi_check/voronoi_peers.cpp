@@ -38,6 +38,8 @@ std::uint64_t memory_limit(const std::string& name, const VoronoiPeerOptions& o)
   // it starts, so RLIMIT_AS would kill it before it runs (as for the DT peer helpers in
   // oracle/peers.cpp): in sanitizer builds only it runs without the memory limit.
   if (!is_python_peer(name)) return 0;
+#else
+  (void)name;
 #endif
   if (o.memory_bytes) return o.memory_bytes;
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
