@@ -1,7 +1,7 @@
 // The exact Voronoi checker: our own cells pass, and every mutation of them is caught.
 #include <catch2/catch.hpp>
 
-#include <random>
+#include "sites.hpp"
 
 #include "voronoi/convex_cell.hpp"
 #include "voronoi_check/voronoi_check.hpp"
@@ -10,15 +10,8 @@ using namespace dtlab;
 
 namespace {
 
-std::vector<Point3> random_sites(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Point3> p(n);
-  for (auto& q : p) q = {u(rng), u(rng), u(rng)};
-  return p;
-}
-
-const vor::Box kBox{{-0.1, -0.1, -0.1}, {1.1, 1.1, 1.1}};
+using test::kBox;
+using test::random_sites;
 
 VoronoiDiagram cells_of(const std::vector<Point3>& sites, const vor::Box& box = kBox) {
   VoronoiOptions o;
