@@ -30,13 +30,17 @@ Registry& registry() {
   return r;
 }
 
-void check_name(const std::string& name) {
+}  // namespace
+
+void check_peer_name(const std::string& name) {
   if (name.empty()) throw std::invalid_argument("a peer needs a name (NAME=COMMAND)");
   for (char c : name)
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' || c == '+'))
       throw std::invalid_argument("peer name '" + name + "': use letters, digits and _ - . + only");
   if (name == "all" || name == "none") throw std::invalid_argument("peer name '" + name + "' is reserved");
 }
+
+namespace {
 
 // Every {...} in the template must be {in} or {out}, and each must appear.
 void check_template(const std::string& name, const std::vector<std::string>& argv) {
@@ -147,7 +151,7 @@ std::vector<std::string> split_command(const std::string& s) {
 }
 
 CommandPeer make_command_peer(const std::string& name, std::vector<std::string> argv) {
-  check_name(name);
+  check_peer_name(name);
   check_template(name, argv);
   return {name, std::move(argv)};
 }

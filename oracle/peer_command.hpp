@@ -26,6 +26,9 @@ struct CommandPeer {
 CommandPeer parse_peer_definition(const std::string& definition);
 // Checks a name and an argv template as parse_peer_definition does (peers files).
 CommandPeer make_command_peer(const std::string& name, std::vector<std::string> argv);
+// Throws std::invalid_argument unless `name` can name a peer (letters, digits and
+// _ - . + only; not "all" or "none"): command and function peers (oracle/peer_function.hpp).
+void check_peer_name(const std::string& name);
 // Words of a command line: whitespace separates, '...' is literal, "..." is literal but
 // for \" and \\, a backslash outside quotes takes the next character as it is.
 std::vector<std::string> split_command(const std::string& command);

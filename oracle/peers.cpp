@@ -18,6 +18,7 @@
 #include "oracle/peer_child.hpp"
 #include "oracle/peer_command.hpp"
 #include "oracle/peer_exchange.hpp"
+#include "oracle/peer_function.hpp"
 #include "oracle/served_child.hpp"
 #include "oracle/temp_dir.hpp"
 
@@ -136,7 +137,9 @@ const std::vector<std::string>& peer_names() {
 
 bool is_builtin_peer_name(const std::string& name) { return find_peer(name).has_value(); }
 
-bool is_peer_name(const std::string& name) { return is_builtin_peer_name(name) || find_command_peer(name).has_value(); }
+bool is_peer_name(const std::string& name) {
+  return is_builtin_peer_name(name) || find_command_peer(name).has_value() || is_function_peer(name);
+}
 
 std::vector<std::string> expand_peer_names(const std::vector<std::string>& names) {
   std::vector<std::string> out;
@@ -169,6 +172,7 @@ std::string peer_binary(const PeerOptions& options, const std::string& name) {
 PeerRun run_peer(const std::string& name, std::span<const Point3> points, const PeerOptions& options) {
   if (const auto command = find_command_peer(name); command && !is_builtin_peer_name(name))
     return run_command_peer(*command, points, options);
+  if (is_function_peer(name)) return run_function_peer(name, points, options);
   const auto spec = find_peer(name);
   if (!spec) throw std::invalid_argument("unknown peer '" + name + "'");
   PeerRun run;

@@ -15,12 +15,12 @@ same result as the same command line (seeds included).
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any, Union
 
 import numpy as np
 
-from . import _core, _meshio, fuzz
+from . import _core, _function_peer, _meshio, fuzz
 from ._results import (DEFECT_KINDS, BuildFailure, CheckReport, Comparison, Defect, Failure, Mesh,
                        OracleReport, OracleRun, Piece, Pieces, Tetrahedralization, VoronoiCell,
                        VoronoiDiagram)
@@ -130,18 +130,25 @@ def compare(points: Any, tets_a: Any, tets_b: Any, orientation: str = "any") -> 
 def oracle(points: Any, against: Sequence[str] | str = ("cgal", "tetgen"), *, predicates: str = "adaptive",
            perturb: str = "sos", boundary: str = "infinite", order: str = "brio", seed: int = 1,
            eps: float = 1e-12, eps_mode: str = "absolute", tetgen: str = "tetgen", timeout: float = 600.0,
-           memory_mb: float = 0.0) -> OracleReport:
+           memory_mb: float = 0.0, peers: Mapping[str, Callable[[np.ndarray], Any]] | None = None) -> OracleReport:
     """`dtlab oracle` on an array: builds ours (the kernel options of tetrahedralize()),
     runs every peer in `against` ("all", or names such as cgal, cgal-inexact, tetgen,
     tetgen-flip, qhull, qhull-qj, scipy, gmsh, gmsh-hxt, dtlab:naive) in its own
     process with `timeout` seconds and `memory_mb` MB (0: half the machine's), judges
     every answer with the exact checker against the input points, and compares ours
     canonically with every peer proven Delaunay. A peer that crashes, hangs, refuses
-    or is missing gives no answer (exit 3), never a failure of ours."""
+    or is missing gives no answer (exit 3), never a failure of ours.
+
+    peers: {name: fn}, your own Delaunay code as peers (run after `against`): fn takes
+    the (n, 3) float64 points and returns an (m, 4) integer array of tets (0-based, any
+    orientation). It runs in a forked child under the same limits, so its segfault,
+    exception, hang or allocation is a verdict (crashed, refused, hung, ...), never the
+    interpreter's end; see dtlab._function_peer."""
     if isinstance(against, str):
         against = [a for a in against.split(",") if a]
-    raw = _core.oracle(points, list(against), predicates, perturb, boundary, order, int(seed), float(eps), eps_mode,
-                       tetgen, float(timeout), float(memory_mb))
+    against = list(against) + [name for name in (peers or {}) if name not in against]
+    raw = _core.oracle(points, against, predicates, perturb, boundary, order, int(seed), float(eps), eps_mode,
+                       tetgen, float(timeout), float(memory_mb), _function_peer.runners(peers))
     checks = raw["peer_checks"]
 
     def run(name: str, r: dict[str, Any], tets: Any, check: dict[str, Any] | None) -> OracleRun:

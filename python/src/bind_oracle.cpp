@@ -1,6 +1,6 @@
 // _core.oracle: `dtlab oracle` on a numpy array, through the same library call as
 // the CLI (oracle/oracle_session.hpp): the same peers, verdicts, comparisons and
-// exit code.
+// exit code. `functions`: {name: runner} of Python callables as peers (function_peers.hpp).
 #include <stdexcept>
 
 #include "oracle/child_process.hpp"
@@ -9,6 +9,8 @@
 #include <pybind11/stl.h>
 
 #include "python/src/bindings.hpp"
+#include "python/src/function_peers.hpp"
+#include "python/src/interrupt_check.hpp"
 #include "python/src/json_to_python.hpp"
 #include "python/src/kernel_options.hpp"
 #include "python/src/numpy_io.hpp"
@@ -18,26 +20,15 @@ namespace py = pybind11;
 namespace dtlab::python {
 namespace {
 
-// Polled while a peer runs: Python's own Ctrl-C handling (KeyboardInterrupt) answers
-// within the runner's poll interval instead of after the peer's timeout.
-bool python_signal_pending() {
-  py::gil_scoped_acquire gil;
-  return PyErr_CheckSignals() != 0;
-}
-
-struct InterruptCheck {
-  InterruptCheck() { set_interrupt_check(&python_signal_pending); }
-  ~InterruptCheck() { set_interrupt_check(nullptr); }
-};
-
 py::dict oracle(py::handle points, const std::vector<std::string>& against, const std::string& predicates,
                 const std::string& perturb, const std::string& boundary, const std::string& order,
                 std::uint64_t seed, double eps, const std::string& eps_mode, const std::string& tetgen,
-                double timeout, double memory_mb) {
+                double timeout, double memory_mb, const py::dict& functions) {
   // The same kernel options as `dtlab oracle` (and tetrahedralize()).
   const KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
   if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("--timeout: must be a number in [0.001, 1e6]");
   if (!(memory_mb >= 0 && memory_mb <= 1e9)) throw py::value_error("--memory: must be a number in [0, 1e9]");
+  const FunctionPeers function_peers(functions);
   try {
     expand_peer_names(against);
   } catch (const std::invalid_argument& e) {
@@ -84,7 +75,8 @@ py::dict oracle(py::handle points, const std::vector<std::string>& against, cons
 void bind_oracle(py::module_& m) {
   m.def("oracle", &oracle, py::arg("points"), py::arg("against"), py::arg("predicates"), py::arg("perturb"),
         py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"),
-        py::arg("tetgen"), py::arg("timeout"), py::arg("memory_mb"), "`dtlab oracle` on an array (see dtlab.oracle).");
+        py::arg("tetgen"), py::arg("timeout"), py::arg("memory_mb"), py::arg("functions") = py::dict(),
+        "`dtlab oracle` on an array (see dtlab.oracle).");
 }
 
 }  // namespace dtlab::python
