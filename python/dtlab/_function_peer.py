@@ -13,6 +13,7 @@ included) kills and reaps the child before it re-raises.
 """
 from __future__ import annotations
 
+import faulthandler
 import os
 import resource
 import select
@@ -54,6 +55,10 @@ def _child(fn: Callable[[np.ndarray], Any], points: np.ndarray, memory_bytes: in
         os.dup2(fd, 2)
         null = os.open(os.devnull, os.O_RDONLY)
         os.dup2(null, 0)
+        # Python-level streams too: a host may have replaced them (pytest's capture)
+        sys.stdout = open(1, "w", buffering=1, closefd=False)
+        sys.stderr = open(2, "w", buffering=1, closefd=False)
+        faulthandler.disable()  # its dump would go to the host's stderr; the signal is the verdict
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
         if memory_bytes:
             resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
