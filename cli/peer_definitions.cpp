@@ -5,6 +5,7 @@
 
 #include "cli/cli_error.hpp"
 #include "oracle/peer_command.hpp"
+#include "oracle/peers_file.hpp"
 
 namespace dtlab::cli {
 
@@ -13,7 +14,9 @@ void PeerDefinitionArgs::add_to(CLI::App& app, const std::string& file_option) {
                  "NAME=COMMAND: a peer run as a command (no shell); {in} is the input .node (0-based), {out} the "
                  "prefix of the .ele it writes (repeatable)")
       ->type_name("NAME=COMMAND");
-  app.add_option(file_option, files, "a JSON file of peers: {\"peers\": [{\"name\": ..., \"command\": ...}]}")
+  app.add_option(file_option, files,
+                 "a JSON or TOML (.toml) file of peers: {\"peers\": [{\"name\": ..., \"command\": ...}]}, or one "
+                 "[[peers]] table (name = ..., command = ...) per peer")
       ->type_name("FILE");
 }
 

@@ -4,10 +4,8 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <sstream>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
 
 #include "kernel/input_error.hpp"
 #include "kernel/point_io.hpp"
@@ -203,49 +201,6 @@ std::vector<std::string> command_peer_names() {
 std::string peer_definition_arguments(const std::string& name) {
   const auto p = find_command_peer(name);
   return p ? " --peer " + shell_quote(p->name + "=" + command_text(p->argv)) : "";
-}
-
-std::vector<CommandPeer> read_peers_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open file");
-  if (std::filesystem::is_directory(path)) throw InputError(path, 0, "is a directory");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  const auto line_of = [&](std::size_t byte) {
-    return 1 + static_cast<long>(std::count(s.begin(), s.begin() + static_cast<long>(std::min(byte, s.size())), '\n'));
-  };
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(s);
-  } catch (const nlohmann::json::parse_error& e) {
-    const std::string what = e.what();
-    throw InputError(path, line_of(e.byte ? e.byte - 1 : 0), "not JSON: " + what.substr(what.find(':') + 2));
-  }
-  const nlohmann::json list = j.is_object() && j.contains("peers") ? j["peers"] : j;
-  if (!list.is_array()) throw InputError(path, 1, "expected {\"peers\": [...]} or an array of peers");
-  std::vector<CommandPeer> peers;
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const nlohmann::json& e = list[i];
-    const std::string where = "peer " + std::to_string(i + 1) + ": ";
-    if (!e.is_object() || !e.contains("name") || !e["name"].is_string() || !e.contains("command"))
-      throw InputError(path, 0, where + "expected {\"name\": \"...\", \"command\": \"...\" or [...]}");
-    std::vector<std::string> argv;
-    if (e["command"].is_string()) {
-      argv = split_command(e["command"].get<std::string>());
-    } else if (e["command"].is_array() && std::all_of(e["command"].begin(), e["command"].end(),
-                                                       [](const nlohmann::json& a) { return a.is_string(); })) {
-      argv = e["command"].get<std::vector<std::string>>();
-    } else {
-      throw InputError(path, 0, where + "command must be a string or an array of strings");
-    }
-    try {
-      peers.push_back(make_command_peer(e["name"].get<std::string>(), std::move(argv)));
-    } catch (const std::invalid_argument& x) {
-      throw InputError(path, 0, where + x.what());
-    }
-  }
-  return peers;
 }
 
 PeerRun run_command_peer(const CommandPeer& peer, std::span<const Point3> points, const PeerOptions& options) {

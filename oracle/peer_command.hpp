@@ -33,10 +33,6 @@ void check_peer_name(const std::string& name);
 // for \" and \\, a backslash outside quotes takes the next character as it is.
 std::vector<std::string> split_command(const std::string& command);
 
-// A peers file: JSON, {"peers": [{"name": N, "command": "..." or ["argv", ...]}, ...]}
-// (or the array alone). Throws InputError (file:line: reason).
-std::vector<CommandPeer> read_peers_file(const std::string& path);
-
 // Adds a peer to this process's peer names. Throws std::invalid_argument when the name
 // is a built-in peer's or another command peer's with a different command.
 void register_command_peer(const CommandPeer& peer);

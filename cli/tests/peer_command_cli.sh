@@ -62,6 +62,51 @@ printf '{"peers": [{"name": "x", "command": "prog {in}"}]}\n' >"$tmp/noout.json"
 expect 2 "peers file entry without {out}" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/noout.json"
 has_err "noout.json:0: peer 1: .*no \{out\}" "file and entry named"
 expect 2 "missing peers file" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/none.json"
+# The same peers in TOML: the same run (verdicts, tets, agreement) as from the JSON file.
+cat >"$tmp/peers.toml" <<TOML
+# two ways to give the command
+[[peers]]
+name = "self"
+command = "$dtlab tetra {in} --out {out}"
+
+[[peers]]
+name = "self2"
+command = ["$dtlab", "tetra", "{in}", "--out", "{out}"]
+TOML
+"$dtlab" oracle "$tmp/pts.xyz" --against self,self2 --peers "$tmp/peers.json" --json >"$tmp/from_json.json" 2>/dev/null
+expect 0 "peers file, TOML" -- "$dtlab" oracle "$tmp/pts.xyz" --against self,self2 --peers "$tmp/peers.toml" --json
+python3 - "$tmp/from_json.json" "$tmp/out" <<'PY' || { echo "FAIL: JSON and TOML peers files gave different runs"; fails=$((fails + 1)); }
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+strip = lambda j: {k: {f: v for f, v in p.items() if "seconds" not in f and f != "peak_rss_bytes"} for k, p in j["peers"].items()}
+assert (a["exit"], a["problems"], strip(a)) == (b["exit"], b["problems"], strip(b)), (a, b)
+assert set(a["peers"]) == {"self", "self2"} and all(p["verdict"] == "delaunay" for p in a["peers"].values())
+PY
+# Bad TOML: one line, file:line, exit 2.
+printf '[[peers]]\nname = "x"\ncommand = "a {in} {out}\n' >"$tmp/bad.toml"
+expect 2 "peers file that is not TOML" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/bad.toml"
+has_err "bad.toml:3: not TOML: " "file:line of the TOML error"
+printf '[[peers]]\nname = "x"\ncomand = "a {in} {out}"\n' >"$tmp/typo.toml"
+expect 2 "TOML peer with an unknown field" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/typo.toml"
+has_err "typo.toml:3: peer 1: unknown field 'comand' \(name, command\)" "the misspelt key named"
+printf '[[peers]]\nname = "x"\n\n[[peers]]\nname = "y"\ncommand = "prog {in}"\n' >"$tmp/noout.toml"
+expect 2 "TOML peer without a command, then without {out}" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/noout.toml"
+has_err "noout.toml:1: peer 1: needs command" "the entry's line"
+printf '[[peers]]\nname = "y"\ncommand = "prog {in}"\n' >"$tmp/noout2.toml"
+expect 2 "TOML peer without {out}" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/noout2.toml"
+has_err "noout2.toml:3: peer 1: .*no \{out\}" "the command's line"
+printf '[[peers]]\nname = "y"\ncommand = ["prog", 3]\n' >"$tmp/argv.toml"
+expect 2 "TOML argv with a number" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/argv.toml"
+has_err "argv.toml:3: peer 1: command must be a string or an array of strings" "the command's type"
+printf 'peer = 1\n' >"$tmp/top.toml"
+expect 2 "TOML without [[peers]]" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/top.toml"
+has_err "top.toml:1: unknown key 'peer'" "the top-level key"
+printf '{"peers": [{"name": "x", "command": "a {in} {out}", "timeout": 5}]}\n' >"$tmp/extra.json"
+expect 2 "JSON peer with an unknown field" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/extra.json"
+has_err "extra.json:0: peer 1: unknown field 'timeout'" "the JSON field named"
+printf '{"peers": [{"name": "x", "command": "a {in} \\"{out}"}]}\n' >"$tmp/quote.json"
+expect 2 "JSON peer with an unterminated quote" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/quote.json"
+has_err "quote.json:0: peer 1: unterminated quote" "the split error, file-located"
 
 # Bad templates: exit 2, one line naming the problem.
 expect 2 "no {in}" -- "$dtlab" oracle "$tmp/pts.xyz" --peer "p=prog {out}"
