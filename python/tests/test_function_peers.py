@@ -31,6 +31,15 @@ def gone(pid):
     return False
 
 
+def ended(pid):
+    """Gone, or a zombie waiting for init (killed; not yet reaped)."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().rsplit(")", 1)[1].split()[0] == "Z"
+    except FileNotFoundError:
+        return True
+
+
 def test_same_verdicts_as_the_builtin_scipy_peer_on_every_family():
     for family in dtlab.fuzz.families():
         pts = dtlab.fuzz.case(family, 0)
@@ -125,10 +134,10 @@ def test_what_the_function_started_is_ended(tmp_path):
     assert r.peers["spawns"].verdict == "hung"
     pid = int(pidfile.read_text())
     for _ in range(100):  # killed at once; reaped by init
-        if gone(pid) or open(f"/proc/{pid}/stat").read().split()[2] == "Z":
+        if ended(pid):
             break
         time.sleep(0.01)
-    assert gone(pid) or open(f"/proc/{pid}/stat").read().split()[2] == "Z"
+    assert ended(pid)
 
 
 def test_ctrl_c_ends_the_child_and_answers_at_once(tmp_path):
@@ -227,3 +236,26 @@ def test_campaign_bad_arguments():
         dtlab.fuzz.campaign("no-such-peer", cases=1)
     with pytest.raises(ValueError, match="min-points"):
         dtlab.fuzz.campaign(scipy_fn, cases=1, points=10, min_points=20)
+
+
+def test_the_child_dies_with_a_killed_interpreter(tmp_path):
+    pidfile = tmp_path / "pid"
+    script = textwrap.dedent(f"""
+        import os, time, dtlab
+        def sleeps(p):
+            open({str(pidfile)!r}, "w").write(str(os.getpid()))
+            time.sleep(1000)
+        dtlab.oracle(dtlab.fuzz.case("uniform", 0), against=[], peers={{"sleeps": sleeps}})
+    """)
+    proc = subprocess.Popen([sys.executable, "-c", script])
+    deadline = time.monotonic() + 30
+    while not pidfile.exists() or not pidfile.read_text():
+        assert time.monotonic() < deadline and proc.poll() is None
+        time.sleep(0.02)
+    child = int(pidfile.read_text())
+    proc.kill()  # SIGKILL: no handler runs; PR_SET_PDEATHSIG ends the child
+    proc.wait()
+    deadline = time.monotonic() + 5
+    while not ended(child):
+        assert time.monotonic() < deadline, "the peer's child outlived the killed interpreter"
+        time.sleep(0.01)
