@@ -6,7 +6,6 @@
 #include <mutex>
 #include <stdexcept>
 
-
 #include "kernel/input_error.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"

@@ -69,8 +69,8 @@ PeerRun run_function_peer(const std::string& name, std::span<const Point3> point
   run.name = name;
   TempDir dir("dtlab-peer");
   const std::string log = dir.file("log.txt");
-  ChildLimits limits = ChildLimits::of(options.timeout_s, log,
-                                       options.memory_bytes ? options.memory_bytes : default_peer_memory());
+  ChildLimits limits =
+      ChildLimits::of(options.timeout_s, log, options.memory_bytes ? options.memory_bytes : default_peer_memory());
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
   limits.memory_bytes = 0;  // the forked interpreter holds the sanitizer's shadow reservation (oracle/peers.cpp)
 #endif

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <variant>
 
-#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
+#include <nlohmann/json.hpp>
 
 #include "kernel/input_error.hpp"
 
@@ -68,10 +68,12 @@ std::vector<CommandPeer> read_json(const std::string& path, const std::string& s
         throw InputError(path, 0, where + "unknown field '" + key + "' " + kFields);
     CommandField command;
     const nlohmann::json& c = e["command"];
-    if (c.is_string()) command = c.get<std::string>();
+    if (c.is_string())
+      command = c.get<std::string>();
     else if (c.is_array() && std::all_of(c.begin(), c.end(), [](const nlohmann::json& a) { return a.is_string(); }))
       command = c.get<std::vector<std::string>>();
-    else throw InputError(path, 0, where + "command must be a string or an array of strings");
+    else
+      throw InputError(path, 0, where + "command must be a string or an array of strings");
     peers.push_back(entry_peer(path, 0, i, e["name"].get<std::string>(), command));
   }
   return peers;
@@ -88,10 +90,12 @@ std::vector<CommandPeer> read_toml(const std::string& path, const std::string& s
   }
   for (const auto& [key, value] : root)
     if (key.str() != "peers")
-      throw InputError(path, line_of(value), "unknown key '" + std::string(key.str()) + "' (one [[peers]] table per peer)");
+      throw InputError(path, line_of(value),
+                       "unknown key '" + std::string(key.str()) + "' (one [[peers]] table per peer)");
   const toml::array* list = root["peers"].as_array();
-  if (!list) throw InputError(path, root.contains("peers") ? line_of(*root.get("peers")) : 1,
-                              "expected [[peers]] tables (name = \"...\", command = \"...\" or [...])");
+  if (!list)
+    throw InputError(path, root.contains("peers") ? line_of(*root.get("peers")) : 1,
+                     "expected [[peers]] tables (name = \"...\", command = \"...\" or [...])");
   std::vector<CommandPeer> peers;
   for (std::size_t i = 0; i < list->size(); ++i) {
     const toml::node& e = (*list)[i];
@@ -123,7 +127,8 @@ std::vector<CommandPeer> read_toml(const std::string& path, const std::string& s
 
 bool is_toml(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == ".toml";
 }
 

@@ -4,6 +4,7 @@
 // on a peer name or a Python callable; _core.wilson_interval: its rates' intervals.
 #include <stdexcept>
 
+#include <pybind11/stl.h>
 #include "experiments/peer_campaign.hpp"
 #include "fuzz/campaign.hpp"
 #include "fuzz/case_seed.hpp"
@@ -14,7 +15,6 @@
 #include "python/src/function_peers.hpp"
 #include "python/src/interrupt_check.hpp"
 #include "python/src/numpy_io.hpp"
-#include <pybind11/stl.h>
 
 namespace py = pybind11;
 
@@ -125,10 +125,13 @@ void bind_fuzz(py::module_& m) {
         py::arg("cases"), py::arg("min_points"), py::arg("max_points"), py::arg("seed"), py::arg("out_dir"),
         py::arg("shrink"), py::arg("shrink_budget"), py::arg("timeout"), py::arg("memory_mb"),
         "`dtlab fuzz --target PEER` on a peer name or a callable (see dtlab.fuzz.campaign).");
-  m.def("wilson_interval", [](std::size_t failures, std::size_t cases) {
-    const fuzz::RateInterval r = fuzz::wilson_interval(failures, cases);
-    return py::make_tuple(r.rate, r.low, r.high);
-  }, py::arg("failures"), py::arg("cases"), "(rate, low, high): the 95% Wilson score interval of a failure rate.");
+  m.def(
+      "wilson_interval",
+      [](std::size_t failures, std::size_t cases) {
+        const fuzz::RateInterval r = fuzz::wilson_interval(failures, cases);
+        return py::make_tuple(r.rate, r.low, r.high);
+      },
+      py::arg("failures"), py::arg("cases"), "(rate, low, high): the 95% Wilson score interval of a failure rate.");
 }
 
 }  // namespace dtlab::python

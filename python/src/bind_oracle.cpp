@@ -21,9 +21,9 @@ namespace dtlab::python {
 namespace {
 
 py::dict oracle(py::handle points, const std::vector<std::string>& against, const std::string& predicates,
-                const std::string& perturb, const std::string& boundary, const std::string& order,
-                std::uint64_t seed, double eps, const std::string& eps_mode, const std::string& tetgen,
-                double timeout, double memory_mb, const py::dict& functions) {
+                const std::string& perturb, const std::string& boundary, const std::string& order, std::uint64_t seed,
+                double eps, const std::string& eps_mode, const std::string& tetgen, double timeout, double memory_mb,
+                const py::dict& functions) {
   // The same kernel options as `dtlab oracle` (and tetrahedralize()).
   const KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
   if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("--timeout: must be a number in [0.001, 1e6]");
@@ -74,8 +74,8 @@ py::dict oracle(py::handle points, const std::vector<std::string>& against, cons
 
 void bind_oracle(py::module_& m) {
   m.def("oracle", &oracle, py::arg("points"), py::arg("against"), py::arg("predicates"), py::arg("perturb"),
-        py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"),
-        py::arg("tetgen"), py::arg("timeout"), py::arg("memory_mb"), py::arg("functions") = py::dict(),
+        py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"), py::arg("tetgen"),
+        py::arg("timeout"), py::arg("memory_mb"), py::arg("functions") = py::dict(),
         "`dtlab oracle` on an array (see dtlab.oracle).");
 }
 

@@ -46,16 +46,18 @@ FunctionAnswer call_runner(PyObject* runner, std::span<const Point3> points, con
   py::gil_scoped_acquire gil;
   FunctionAnswer a;
   try {
-    py::tuple r = py::reinterpret_borrow<py::object>(runner)(
-        points_to_numpy(std::vector<Point3>(points.begin(), points.end())), limits.timeout_s, limits.memory_bytes,
-        limits.log_path);
+    py::tuple r =
+        py::reinterpret_borrow<py::object>(runner)(points_to_numpy(std::vector<Point3>(points.begin(), points.end())),
+                                                   limits.timeout_s, limits.memory_bytes, limits.log_path);
     a.child.status = status_of(r[0].cast<std::string>());
     a.child.exit_code = r[1].cast<int>();
     a.child.signal = r[2].cast<int>();
     a.child.seconds = r[3].cast<double>();
     a.child.peak_rss_bytes = r[4].cast<std::uint64_t>();
-    if (a.child.status == ChildStatus::not_started) a.child.message = r[5].cast<std::string>();
-    else read_answer(r[5].cast<std::string>(), a);
+    if (a.child.status == ChildStatus::not_started)
+      a.child.message = r[5].cast<std::string>();
+    else
+      read_answer(r[5].cast<std::string>(), a);
   } catch (py::error_already_set& e) {
     e.restore();  // raised by the binding once the call has unwound
     throw ChildInterrupted();
