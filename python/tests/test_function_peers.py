@@ -140,7 +140,11 @@ def test_what_the_function_started_is_ended(tmp_path):
     assert ended(pid)
 
 
-def test_ctrl_c_ends_the_child_and_answers_at_once(tmp_path):
+@pytest.mark.parametrize("call", [
+    'dtlab.oracle(dtlab.fuzz.case("uniform", 0), against=[], peers={"sleeps": sleeps}, timeout=600)',
+    'dtlab.fuzz.campaign(sleeps, families=["uniform"], cases=3, timeout=600)',
+])
+def test_ctrl_c_ends_the_child_and_answers_at_once(tmp_path, call):
     pidfile = tmp_path / "pid"
     script = textwrap.dedent(f"""
         import os, sys, time, dtlab
@@ -148,7 +152,7 @@ def test_ctrl_c_ends_the_child_and_answers_at_once(tmp_path):
             open({str(pidfile)!r}, "w").write(str(os.getpid()))
             time.sleep(1000)
         try:
-            dtlab.oracle(dtlab.fuzz.case("uniform", 0), against=[], peers={{"sleeps": sleeps}}, timeout=600)
+            {call}
         except KeyboardInterrupt:
             print("KeyboardInterrupt", flush=True)
             sys.exit(7)
