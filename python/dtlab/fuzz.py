@@ -103,10 +103,10 @@ PeerTarget = Union[str, Callable[[np.ndarray], Any]]
 
 
 def _peer_name(target: PeerTarget, name: str | None) -> str:
-    if name is not None:
-        return name
     if isinstance(target, str):
         return target
+    if name is not None:
+        return name
     guess = re.sub(r"[^A-Za-z0-9_.+-]", "", getattr(target, "__name__", ""))
     return guess if guess and guess not in ("lambda", "all", "none") else "python-peer"
 
@@ -124,7 +124,7 @@ def campaign(target: PeerTarget, families: Sequence[str] | str = "all", cases: i
 
     target: a peer name ("scipy", "qhull", "dtlab:naive", ...) or a callable
     (points (n, 3) float64) -> (m, 4) integer tets, run in a forked child as
-    dtlab.oracle's peers are; `name` names it (default: its __name__). out: a folder
+    dtlab.oracle's peers are; `name` names it (default: its __name__; "python-peer" for a lambda). out: a folder
     for the corpus (<out>/corpus/*.node with a .json sidecar each, the CLI's files);
     None keeps the shrunk inputs in the result only. Returns a Campaign: per-family
     failure counts with Wilson intervals, and every case with its shrunk input. Cases
