@@ -108,7 +108,8 @@ def test_each_misbehaviour_is_its_verdict(tmp_path):
     v = {name: (run.verdict, run.message) for name, run in r.peers.items()}
     assert v["segfault"] == ("crashed", "signal 11 (Segmentation fault)")
     assert v["raises"] == ("refused", "RuntimeError: my bug")
-    assert v["sleeps"][0] == "hung" and v["sleeps"][1].startswith("killed after 1.5")
+    assert v["sleeps"][0] == "hung" and v["sleeps"][1].startswith("killed after ")
+    assert float(v["sleeps"][1].split()[2]) >= 1.5
     assert v["out_of_range"] == ("invalid", f"wrong answer: tet 3 has vertex {len(pts)}, not an index of the "
                                             f"{len(pts)} points (0-based)")
     assert v["negative"][0] == "invalid" and "vertex -1" in v["negative"][1]
@@ -165,9 +166,12 @@ def test_ctrl_c_ends_the_child_and_answers_at_once(tmp_path, call):
     child = int(pidfile.read_text())
     t0 = time.monotonic()
     proc.send_signal(signal.SIGINT)
-    out, _ = proc.communicate(timeout=10)
-    assert time.monotonic() - t0 < 1.5
-    assert proc.returncode == 7 and out.strip() == "KeyboardInterrupt"
+    line = proc.stdout.readline()  # the answer, before the interpreter's teardown
+    # Far below the peer's 600 s limit: the child is ended at once, not waited for
+    # (about 0.1 s on an idle machine; the bound leaves room for a loaded one).
+    assert time.monotonic() - t0 < 5
+    out, _ = proc.communicate(timeout=30)
+    assert proc.returncode == 7 and (line + out).strip() == "KeyboardInterrupt"
     assert gone(child)
 
 
