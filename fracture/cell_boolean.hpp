@@ -47,6 +47,16 @@ class MeshClipper {
   // a time whatever the threads: the progress of a long fracture.
   void set_progress(std::function<void(std::size_t, std::size_t)> progress);
 
+  // Exact tiling: intersect_all also sums the exact signed volumes of the pieces as
+  // the corefinement built them (exact constructions, before rounding to doubles).
+  void set_exact_tally(bool on);
+  struct ExactTally {
+    bool holds = false;    // sum of the exact piece volumes == the mesh's exact volume
+    double difference = 0; // that difference, rounded
+  };
+  // After intersect_all with the tally on (every cell's piece, cells with no piece add 0).
+  ExactTally exact_tally() const;
+
   // The repaired input (merged vertices, outward orientation).
   const TriangleMesh& mesh() const;
   double volume() const;

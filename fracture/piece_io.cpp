@@ -218,6 +218,8 @@ nlohmann::json fracture_manifest(const FractureResult& r, double density) {
   m["piece_volume_sum"] = sum;
   m["relative_volume_error"] = r.mesh_volume != 0 ? std::abs(sum - r.mesh_volume) / r.mesh_volume : 0.0;
   m["volume_identity"] = volume_identity_json(volume_identity(r), r.mesh_volume);
+  if (r.exact_tiling_checked)
+    m["volume_identity"]["exact_tiling"] = {{"holds", r.exact_tiling}, {"difference", r.exact_tiling_difference}};
   m["density"] = density;
   m["booleans"] = r.booleans;
   m["skipped_booleans"] = r.skipped;
