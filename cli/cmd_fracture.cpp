@@ -35,7 +35,7 @@ struct FractureArgs {
   std::string sites;                      // FILE | mesh-vertices (default: the sampler)
   std::vector<double> impact, cell_scale;  // X,Y,Z / SX,SY,SZ
   double impact_radius = 0, site_noise = 0, density = 1;
-  bool no_island_split = false, surfaces = false, gltf = false, tets = false;
+  bool no_island_split = false, surfaces = false, gltf = false, tets = false, exact_tiling = false;
   std::string tetgen = "tetgen";
 };
 
@@ -91,6 +91,7 @@ int run_fracture(const FractureArgs& a) {
   o.boolean_seconds = a.boolean_seconds;
   o.sites = site_options(a);
   o.island_split = !a.no_island_split;
+  o.exact_tiling = a.exact_tiling;
   if (!a.cell_scale.empty()) o.cell_scale = triple(a.cell_scale, "--cell-scale");
   o.progress = [&progress](std::size_t done, std::size_t total) { progress.update("booleans", done, total); };
   FractureResult r;
@@ -124,7 +125,7 @@ int run_fracture(const FractureArgs& a) {
                   {"recurse_pieces", a.recurse_pieces}, {"repair", a.repair}, {"split", a.split}, {"vtu", a.vtu},
                   {"boolean_seconds", a.boolean_seconds}, {"sites", a.sites.empty() ? "sampler" : a.sites},
                   {"impact", a.impact}, {"impact_radius", a.impact_radius}, {"site_noise", a.site_noise},
-                  {"island_split", !a.no_island_split}, {"cell_scale", a.cell_scale}, {"density", a.density}};
+                  {"island_split", !a.no_island_split}, {"cell_scale", a.cell_scale}, {"density", a.density}, {"exact_tiling", a.exact_tiling}, {"tets", a.tets}};
   if (!a.out.empty()) {
     progress.say("writing " + std::to_string(r.pieces.size()) + " pieces to " + a.out);
     std::filesystem::create_directories(a.out);
@@ -221,6 +222,8 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_flag("--surfaces", args->surfaces,
                 "also write OUT/surfaces.vtu: every piece as closed triangles with a 'piece' array (VTK integrates it)");
   sub->add_flag("--gltf", args->gltf, "also write OUT/pieces.gltf (glTF 2.0: a node per piece, cut faces a 2nd material)");
+  sub->add_flag("--exact-tiling", args->exact_tiling,
+                "prove sum(piece volumes) = mesh volume exactly on the unrounded pieces (exact arithmetic; costs time)");
   sub->add_flag("--tets", args->tets,
                 "also write OUT/tets.vtu: every piece tetrahedralized (TetGen -pY, surface kept) with a 'piece' array");
   sub->add_option("--tetgen", args->tetgen, "--tets: the TetGen program")->type_name("FILE")->capture_default_str();

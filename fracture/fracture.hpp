@@ -26,7 +26,7 @@ struct FractureOptions {
   std::vector<std::size_t> recurse;  // top-level pieces to fracture again
   std::size_t recurse_pieces = 4;    // pieces each of those is split into
   bool repair = false;               // repair_mesh first (else a mesh that is not solid is refused)
-  bool exact_tiling = true;          // prove the tiling exactly (not with a gap): FractureResult::exact_tiling
+  bool exact_tiling = false;         // prove the tiling exactly (not with a gap): FractureResult::exact_tiling
   double boolean_seconds = 30;       // time budget of one corefinement (0: none); past it, a named failure
   std::function<void(std::size_t, std::size_t)> progress;  // booleans done, in all (per level)
 };
