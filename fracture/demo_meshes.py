@@ -103,6 +103,8 @@ def components(verts, tris):
 
 
 def short_problems(report):
+    if 'triangles' not in report:  # an error object ({"error": ...}): the file was refused
+        return 'unreadable'
     words = []
     if report['triangles'] == 0:
         words.append('no triangles')
