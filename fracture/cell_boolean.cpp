@@ -157,14 +157,14 @@ struct MeshClipper::Impl {
   ExactFT mesh_volume6 = 0;
 };
 
-MeshClipper::MeshClipper(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
+MeshClipper::MeshClipper(const TriangleMesh& mesh, MeshCheck check) : impl_(std::make_unique<Impl>()) {
   std::vector<P3> points;
   for (const auto& p : mesh.vertices) points.emplace_back(p.x, p.y, p.z);
   std::vector<std::vector<std::size_t>> polygons;
   for (const auto& t : mesh.triangles) polygons.push_back({t[0], t[1], t[2]});
   if (polygons.empty()) throw std::invalid_argument("mesh has no triangles");
   PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  if (check == MeshCheck::full && !PMP::is_polygon_soup_a_polygon_mesh(polygons))
     throw std::invalid_argument("mesh is not manifold (an edge in more than two triangles, or inconsistent orientation)");
   Mesh& sm = impl_->sm;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);

@@ -167,7 +167,7 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
   } else if (r.report = analyze_mesh(mesh); !r.report.solid()) {
     throw std::invalid_argument("not a solid: " + r.report.why_not_solid() + " (--repair tries to fix it)");
   }
-  MeshClipper clipper(o.repair ? repaired : mesh);
+  MeshClipper clipper(o.repair ? repaired : mesh, MeshClipper::MeshCheck::solid);  // analyzed above
   clipper.set_time_budget(o.boolean_seconds);
   r.exact_tiling_checked = r.exact_tiling = o.exact_tiling && o.margin == 0;
   clipper.set_exact_tally(r.exact_tiling_checked);
@@ -201,7 +201,7 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
     if (!pr.solid())
       throw std::runtime_error("--recurse: piece " + std::to_string(i) + " is not a solid after rounding: " +
                                pr.why_not_solid());
-    MeshClipper sub_clipper(parent.geometry.mesh);
+    MeshClipper sub_clipper(parent.geometry.mesh, MeshClipper::MeshCheck::solid);
     sub_clipper.set_time_budget(o.boolean_seconds);
     sub_clipper.set_exact_tally(r.exact_tiling_checked);
     Level sub = fracture_once(sub_clipper, o, SiteOptions{}, o.seed * 1000003 + i, o.recurse_pieces, r);
