@@ -35,7 +35,8 @@ struct FractureArgs {
   std::string sites;                      // FILE | mesh-vertices (default: the sampler)
   std::vector<double> impact, cell_scale;  // X,Y,Z / SX,SY,SZ
   double impact_radius = 0, site_noise = 0, density = 1;
-  bool no_island_split = false, surfaces = false, gltf = false;
+  bool no_island_split = false, surfaces = false, gltf = false, tets = false, exact_tiling = false;
+  std::string tetgen = "tetgen";
 };
 
 Point3 triple(const std::vector<double>& v, const char* option) {
@@ -90,6 +91,7 @@ int run_fracture(const FractureArgs& a) {
   o.boolean_seconds = a.boolean_seconds;
   o.sites = site_options(a);
   o.island_split = !a.no_island_split;
+  o.exact_tiling = a.exact_tiling;
   if (!a.cell_scale.empty()) o.cell_scale = triple(a.cell_scale, "--cell-scale");
   o.progress = [&progress](std::size_t done, std::size_t total) { progress.update("booleans", done, total); };
   FractureResult r;
@@ -104,13 +106,26 @@ int run_fracture(const FractureArgs& a) {
     return kDefect;
   }
   nlohmann::json m = fracture_manifest(r, a.density);
+  std::vector<PieceTets> tets;
+  if (a.tets) {
+    progress.say("tetrahedralizing " + std::to_string(r.pieces.size()) + " pieces (" + a.tetgen + " -pY)");
+    try {
+      TetgenRunOptions to;
+      to.binary = a.tetgen;
+      tets = tetrahedralize_pieces(r, to);
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "dtlab fracture: %s: --tets: %s\n", a.mesh.c_str(), e.what());
+      return kDefect;
+    }
+    add_tets_to_manifest(m, tets);
+  }
   m["input"] = a.mesh;
   m["options"] = {{"pieces", a.pieces}, {"sampler", a.sampler}, {"seed", a.seed}, {"gap", a.gap}, {"margin", a.gap},
                   {"blue_noise", a.blue_noise}, {"explode", a.explode}, {"recurse", a.recurse},
                   {"recurse_pieces", a.recurse_pieces}, {"repair", a.repair}, {"split", a.split}, {"vtu", a.vtu},
                   {"boolean_seconds", a.boolean_seconds}, {"sites", a.sites.empty() ? "sampler" : a.sites},
                   {"impact", a.impact}, {"impact_radius", a.impact_radius}, {"site_noise", a.site_noise},
-                  {"island_split", !a.no_island_split}, {"cell_scale", a.cell_scale}, {"density", a.density}};
+                  {"island_split", !a.no_island_split}, {"cell_scale", a.cell_scale}, {"density", a.density}, {"exact_tiling", a.exact_tiling}, {"tets", a.tets}};
   if (!a.out.empty()) {
     progress.say("writing " + std::to_string(r.pieces.size()) + " pieces to " + a.out);
     std::filesystem::create_directories(a.out);
@@ -121,6 +136,7 @@ int run_fracture(const FractureArgs& a) {
     if (a.vtu) write_pieces_vtu(a.out + "/pieces.vtu", r, parse_vtu_format(a.vtu_format));
     if (a.surfaces) write_piece_surfaces_vtu(a.out + "/surfaces.vtu", r, parse_vtu_format(a.vtu_format));
     if (a.gltf) write_pieces_gltf(a.out + "/pieces.gltf", r);
+    if (a.tets) write_piece_tets_vtu(a.out + "/tets.vtu", r, tets, parse_vtu_format(a.vtu_format));
     if (a.split) {
       std::filesystem::create_directories(a.out + "/pieces");
       m["split_files"] = write_piece_files(a.out + "/pieces", r);
@@ -148,9 +164,14 @@ int run_fracture(const FractureArgs& a) {
     std::printf("%s: %zu pieces (%zu booleans, %zu skipped), mesh volume %.12g, relative volume error %.3g\n",
                 a.mesh.c_str(), r.pieces.size(), r.booleans, r.skipped, r.mesh_volume, rel);
     if (!a.out.empty())
-      std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s%s%s%s}\n", a.out.c_str(),
-                  a.split ? ", pieces/piece_NNNN.obj" : "", a.vtu ? ", pieces.vtu" : "",
-                  a.surfaces ? ", surfaces.vtu" : "", a.gltf ? ", pieces.gltf" : "");
+      std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s%s%s%s%s}\n",
+                  a.out.c_str(), a.split ? ", pieces/piece_NNNN.obj" : "", a.vtu ? ", pieces.vtu" : "",
+                  a.surfaces ? ", surfaces.vtu" : "", a.gltf ? ", pieces.gltf" : "", a.tets ? ", tets.vtu" : "");
+  }
+  if (a.tets && m["tets"]["pieces_exact"].get<std::size_t>() != tets.size()) {
+    std::fprintf(stderr, "dtlab fracture: %s: --tets: the tets of %zu pieces do not have their surface's exact volume\n",
+                 a.mesh.c_str(), tets.size() - m["tets"]["pieces_exact"].get<std::size_t>());
+    return kDefect;
   }
   // With a gap the pieces are meant to lose volume; without one they must tile the mesh.
   return a.gap == 0 && rel > 1e-9 ? kDefect : kOk;
@@ -201,6 +222,11 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_flag("--surfaces", args->surfaces,
                 "also write OUT/surfaces.vtu: every piece as closed triangles with a 'piece' array (VTK integrates it)");
   sub->add_flag("--gltf", args->gltf, "also write OUT/pieces.gltf (glTF 2.0: a node per piece, cut faces a 2nd material)");
+  sub->add_flag("--exact-tiling", args->exact_tiling,
+                "prove sum(piece volumes) = mesh volume exactly on the unrounded pieces (exact arithmetic; costs time)");
+  sub->add_flag("--tets", args->tets,
+                "also write OUT/tets.vtu: every piece tetrahedralized (TetGen -pY, surface kept) with a 'piece' array");
+  sub->add_option("--tetgen", args->tetgen, "--tets: the TetGen program")->type_name("FILE")->capture_default_str();
   sub->add_option("--density", args->density, "mass density for the manifest's mass and mass_inertia")
       ->check(number_in(1e-300, 1e300))->capture_default_str();
   sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file")->type_name("FILE");

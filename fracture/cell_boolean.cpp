@@ -6,6 +6,7 @@
 #include <future>
 #include <mutex>
 #include <thread>
+#include <tuple>
 #include <stdexcept>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -32,6 +33,22 @@ using P3 = K::Point_3;
 using Mesh = CGAL::Surface_mesh<P3>;
 using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+
+using ExactFT = K::Exact_kernel::FT;
+
+// 6 x the signed volume the closed mesh bounds, exactly (forces the exact coordinates).
+ExactFT exact_volume6(const Mesh& m) {
+  ExactFT sum = 0;
+  for (auto f : m.faces()) {
+    const auto h = m.halfedge(f);
+    const auto a = CGAL::exact(m.point(m.source(h)));
+    const auto b = CGAL::exact(m.point(m.target(h)));
+    const auto c = CGAL::exact(m.point(m.target(m.next(h))));
+    sum += a.x() * (b.y() * c.z() - b.z() * c.y()) + a.y() * (b.z() * c.x() - b.x() * c.z()) +
+           a.z() * (b.x() * c.y() - b.y() * c.x());
+  }
+  return sum;
+}
 
 // tm1 ∩ tm2 -> out within the time budget (0: none).
 bool intersect_within(Mesh& a, Mesh& b, Mesh& out, double budget) {
@@ -76,8 +93,14 @@ Mesh cell_mesh(const VoronoiCell& c) {
   for (const auto& p : c.vertices) vid.push_back(m.add_vertex(P3(p.x, p.y, p.z)));
   for (std::size_t f = 0; f < c.face_count(); ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
+    // Summed in sorted order: the neighbour cell, listing the same corners in another
+    // order, gets the same double and so the same fan (the cells tile space exactly).
+    std::vector<Point3> corners;
+    for (auto k = b; k < e; ++k) corners.push_back(c.vertices[c.face_vertices[k]]);
+    std::sort(corners.begin(), corners.end(),
+              [](const Point3& p, const Point3& q) { return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z); });
     Point3 ctr{0, 0, 0};
-    for (auto k = b; k < e; ++k) ctr = vor::vadd(ctr, c.vertices[c.face_vertices[k]]);
+    for (const Point3& p : corners) ctr = vor::vadd(ctr, p);
     ctr = vor::vscale(1.0 / (e - b), ctr);
     const auto cv = m.add_vertex(P3(ctr.x, ctr.y, ctr.z));
     for (auto k = b; k < e; ++k) {
@@ -129,16 +152,19 @@ struct MeshClipper::Impl {
   std::function<void(std::size_t, std::size_t)> progress;
   mutable std::mutex progress_mutex;
   mutable std::size_t done = 0, total = 0;  // of the running intersect_all, under progress_mutex
+  bool tally = false;
+  mutable ExactFT tally_sum = 0;  // under progress_mutex
+  ExactFT mesh_volume6 = 0;
 };
 
-MeshClipper::MeshClipper(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>()) {
+MeshClipper::MeshClipper(const TriangleMesh& mesh, MeshCheck check) : impl_(std::make_unique<Impl>()) {
   std::vector<P3> points;
   for (const auto& p : mesh.vertices) points.emplace_back(p.x, p.y, p.z);
   std::vector<std::vector<std::size_t>> polygons;
   for (const auto& t : mesh.triangles) polygons.push_back({t[0], t[1], t[2]});
   if (polygons.empty()) throw std::invalid_argument("mesh has no triangles");
   PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  if (check == MeshCheck::full && !PMP::is_polygon_soup_a_polygon_mesh(polygons))
     throw std::invalid_argument("mesh is not manifold (an edge in more than two triangles, or inconsistent orientation)");
   Mesh& sm = impl_->sm;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
@@ -155,6 +181,17 @@ MeshClipper::MeshClipper(const TriangleMesh& mesh) : impl_(std::make_unique<Impl
 
 MeshClipper::~MeshClipper() = default;
 void MeshClipper::set_time_budget(double seconds) { impl_->budget = seconds; }
+void MeshClipper::set_exact_tally(bool on) {
+  impl_->tally = on;
+  if (on) impl_->mesh_volume6 = exact_volume6(impl_->sm);
+}
+MeshClipper::ExactTally MeshClipper::exact_tally() const {
+  std::lock_guard<std::mutex> g(impl_->progress_mutex);
+  ExactTally t;
+  t.holds = impl_->tally && impl_->tally_sum == impl_->mesh_volume6;
+  t.difference = CGAL::to_double((impl_->tally_sum - impl_->mesh_volume6) / 6);
+  return t;
+}
 void MeshClipper::set_progress(std::function<void(std::size_t, std::size_t)> progress) {
   impl_->progress = std::move(progress);
 }
@@ -173,6 +210,7 @@ std::vector<PieceMesh> MeshClipper::intersect_all(const std::vector<VoronoiCell>
     std::lock_guard<std::mutex> g(impl_->progress_mutex);
     impl_->done = 0;
     impl_->total = ids.size();
+    impl_->tally_sum = 0;
   }
   impl_->split(impl_->sm, std::move(ids), cells, out, threads);
   return out;
@@ -275,6 +313,11 @@ PieceMesh MeshClipper::Impl::intersect_with(const Mesh& m, const VoronoiCell& c)
       throw std::runtime_error("corefinement failed for a cell");
   }
   piece.mesh = to_triangles(out);
+  if (tally) {
+    const ExactFT v = exact_volume6(out);
+    std::lock_guard<std::mutex> g(progress_mutex);
+    tally_sum += v;
+  }
   // Cut faces: triangles whose three corners lie on one of the cell's face planes.
   const double tol = 1e-9 * vor::vnorm(vor::vsub(Point3{box.xmax(), box.ymax(), box.zmax()},
                                                Point3{box.xmin(), box.ymin(), box.zmin()}));

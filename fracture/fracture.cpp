@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "fracture/anisotropic_cells.hpp"
+#include "fracture/cell_weld.hpp"
 #include "fracture/islands.hpp"
 #include "voronoi/voronoi.hpp"
 
@@ -45,8 +46,13 @@ ScaledCells level_cells(const MeshClipper& clipper, const FractureOptions& o, co
   const Point3 g = 0.05 * mb.extent() + Point3{1e-9, 1e-9, 1e-9};
   vo.box = vor::Box{mb.lo - g, mb.hi + g};
   vo.shrink = 0.5 * o.margin;
-  if (o.cell_scale.x == 1 && o.cell_scale.y == 1 && o.cell_scale.z == 1) return {compute_voronoi(sites, vo), {}};
-  return anisotropic_voronoi(sites, vo, o.cell_scale);
+  ScaledCells cells = o.cell_scale.x == 1 && o.cell_scale.y == 1 && o.cell_scale.z == 1
+                          ? ScaledCells{compute_voronoi(sites, vo), {}}
+                          : anisotropic_voronoi(sites, vo, o.cell_scale);
+  // Shared corners bit-identical (a few ulps apart where a cell was clipped in its site's
+  // frame), so the cells tile the box exactly; not with a gap (no shared corners).
+  if (o.margin == 0) weld_shared_corners(cells, 1e-12 * norm(vo.box->hi - vo.box->lo));
+  return cells;
 }
 
 // Site i's piece, split into its islands (or kept whole), tags naming islands.
@@ -90,6 +96,11 @@ Level fracture_once(const MeshClipper& clipper, const FractureOptions& o, const 
   t0 = Clock::now();
   std::vector<PieceMesh> geometry = clipper.intersect_all(cells.diagram.cells, o.threads);
   timing.seconds_boolean += since(t0);
+  if (timing.exact_tiling_checked) {
+    const MeshClipper::ExactTally t = clipper.exact_tally();
+    timing.exact_tiling = timing.exact_tiling && t.holds;
+    if (std::abs(t.difference) > std::abs(timing.exact_tiling_difference)) timing.exact_tiling_difference = t.difference;
+  }
   Level level;
   for (const auto& g : geometry)
     if (!g.mesh.triangles.empty()) ++(g.boolean_skipped ? level.skipped : level.booleans);
@@ -156,8 +167,10 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
   } else if (r.report = analyze_mesh(mesh); !r.report.solid()) {
     throw std::invalid_argument("not a solid: " + r.report.why_not_solid() + " (--repair tries to fix it)");
   }
-  MeshClipper clipper(o.repair ? repaired : mesh);
+  MeshClipper clipper(o.repair ? repaired : mesh, MeshClipper::MeshCheck::solid);  // analyzed above
   clipper.set_time_budget(o.boolean_seconds);
+  r.exact_tiling_checked = r.exact_tiling = o.exact_tiling && o.margin == 0;
+  clipper.set_exact_tally(r.exact_tiling_checked);
   clipper.set_progress(o.progress);
   r.input = clipper.mesh();
   r.mesh_volume = clipper.volume();
@@ -188,8 +201,9 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
     if (!pr.solid())
       throw std::runtime_error("--recurse: piece " + std::to_string(i) + " is not a solid after rounding: " +
                                pr.why_not_solid());
-    MeshClipper sub_clipper(parent.geometry.mesh);
+    MeshClipper sub_clipper(parent.geometry.mesh, MeshClipper::MeshCheck::solid);
     sub_clipper.set_time_budget(o.boolean_seconds);
+    sub_clipper.set_exact_tally(r.exact_tiling_checked);
     Level sub = fracture_once(sub_clipper, o, SiteOptions{}, o.seed * 1000003 + i, o.recurse_pieces, r);
     r.booleans += sub.booleans;
     r.skipped += sub.skipped;

@@ -26,6 +26,7 @@ struct FractureOptions {
   std::vector<std::size_t> recurse;  // top-level pieces to fracture again
   std::size_t recurse_pieces = 4;    // pieces each of those is split into
   bool repair = false;               // repair_mesh first (else a mesh that is not solid is refused)
+  bool exact_tiling = false;         // prove the tiling exactly (not with a gap): FractureResult::exact_tiling
   double boolean_seconds = 30;       // time budget of one corefinement (0: none); past it, a named failure
   std::function<void(std::size_t, std::size_t)> progress;  // booleans done, in all (per level)
 };
@@ -53,6 +54,11 @@ struct FractureResult {
   std::vector<Piece> pieces;
   std::size_t booleans = 0, skipped = 0;
   double seconds_sampling = 0, seconds_voronoi = 0, seconds_boolean = 0;
+  // The exact tiling, at every level: the pieces' exact volumes as the corefinement
+  // built them (before rounding to doubles) sum to their solid's exact volume.
+  bool exact_tiling_checked = false, exact_tiling = false;
+  double exact_tiling_difference = 0;  // the largest difference of a level, rounded
+  double seconds_exact = 0;
 };
 
 // Throws std::invalid_argument naming the problems (MeshReport::why_not_solid) when the

@@ -133,6 +133,52 @@ void write_piece_surfaces_vtu(const std::string& path, const FractureResult& r, 
   write_vtu_grid(path, g, format);
 }
 
+void write_piece_tets_vtu(const std::string& path, const FractureResult& r, const std::vector<PieceTets>& tets,
+                          VtuFormat format) {
+  VtuGrid g;
+  std::vector<std::int64_t> piece, site, island;
+  for (std::size_t i = 0; i < r.pieces.size() && i < tets.size(); ++i) {
+    const auto base = static_cast<std::int64_t>(g.points.size());
+    g.points.insert(g.points.end(), tets[i].points.begin(), tets[i].points.end());
+    for (const Tet& t : tets[i].tets) {
+      // VTK's order: (0, 1, 2) counter-clockwise seen from 3, dtlab's with 0 and 1 swapped.
+      for (auto v : {t[1], t[0], t[2], t[3]}) g.connectivity.push_back(base + v);
+      g.offsets.push_back(static_cast<std::int64_t>(g.connectivity.size()));
+      g.types.push_back(kVtkTetra);
+      piece.push_back(static_cast<std::int64_t>(i));
+      site.push_back(r.pieces[i].site_index);
+      island.push_back(r.pieces[i].island);
+    }
+  }
+  g.cell_data.push_back({"piece", std::move(piece)});
+  g.cell_data.push_back({"site", std::move(site)});
+  g.cell_data.push_back({"island", std::move(island)});
+  write_vtu_grid(path, g, format);
+}
+
+nlohmann::json volume_identity_json(const VolumeIdentity& id, double mesh_volume) {
+  return {{"float_difference", id.float_difference},
+          {"float_relative", id.relative(id.float_difference, mesh_volume)},
+          {"exact_difference", id.exact_difference},
+          {"exact_relative", id.relative(id.exact_difference, mesh_volume)},
+          {"exact", id.exact}};
+}
+
+void add_tets_to_manifest(nlohmann::json& m, const std::vector<PieceTets>& tets) {
+  std::size_t count = 0, steiner = 0, exact = 0;
+  for (std::size_t i = 0; i < tets.size() && i < m["pieces"].size(); ++i) {
+    auto& j = m["pieces"][i];
+    j["tets"] = tets[i].tets.size();
+    j["steiner_points"] = tets[i].steiner;
+    j["tet_volume"] = tets[i].volume;
+    j["tet_volume_exact"] = tets[i].exact_match;
+    count += tets[i].tets.size();
+    steiner += tets[i].steiner;
+    exact += tets[i].exact_match ? 1 : 0;
+  }
+  m["tets"] = {{"tets", count}, {"steiner_points", steiner}, {"pieces_exact", exact}, {"pieces", tets.size()}};
+}
+
 nlohmann::json fracture_manifest(const FractureResult& r, double density) {
   nlohmann::json pieces = nlohmann::json::array();
   double sum = 0;
@@ -171,6 +217,9 @@ nlohmann::json fracture_manifest(const FractureResult& r, double density) {
   m["mesh_volume"] = r.mesh_volume;
   m["piece_volume_sum"] = sum;
   m["relative_volume_error"] = r.mesh_volume != 0 ? std::abs(sum - r.mesh_volume) / r.mesh_volume : 0.0;
+  m["volume_identity"] = volume_identity_json(volume_identity(r), r.mesh_volume);
+  if (r.exact_tiling_checked)
+    m["volume_identity"]["exact_tiling"] = {{"holds", r.exact_tiling}, {"difference", r.exact_tiling_difference}};
   m["density"] = density;
   m["booleans"] = r.booleans;
   m["skipped_booleans"] = r.skipped;

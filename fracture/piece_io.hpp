@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "fracture/fracture.hpp"
+#include "fracture/piece_tets.hpp"
+#include "fracture/volume_identity.hpp"
 #include "kernel/vtu_writer.hpp"
 
 namespace dtlab {
@@ -28,6 +30,15 @@ void write_pieces_vtu(const std::string& path, const FractureResult& r, VtuForma
 // with cell data `piece`, `site`, `island`, `cut` (1 on cut faces): the form VTK
 // integrates correctly (vtkMassProperties per piece), unlike non-convex polyhedron cells.
 void write_piece_surfaces_vtu(const std::string& path, const FractureResult& r, VtuFormat format = VtuFormat::binary);
+// --tets: every piece's tets (VTK_TETRA, the piece's own points) with cell data
+// `piece`, `site`, `island`; tets[i] belongs to r.pieces[i].
+void write_piece_tets_vtu(const std::string& path, const FractureResult& r, const std::vector<PieceTets>& tets,
+                          VtuFormat format = VtuFormat::binary);
+// The manifest's `volume_identity`: both differences, relative, and whether the exact one is zero.
+nlohmann::json volume_identity_json(const VolumeIdentity& id, double mesh_volume);
+// Adds per piece `tets`, `steiner_points`, `tet_volume`, `tet_volume_exact` (the tets'
+// exact volume equals the surface's) and the totals under `tets`.
+void add_tets_to_manifest(nlohmann::json& manifest, const std::vector<PieceTets>& tets);
 // `density` scales the per-piece `mass` and `mass_inertia` (inertia stays unit density).
 nlohmann::json fracture_manifest(const FractureResult& r, double density = 1);
 

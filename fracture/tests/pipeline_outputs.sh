@@ -41,6 +41,35 @@ for p in m["pieces"]:
 print("manifest: %d pieces from %d sites" % (len(m["pieces"]), len({p["site_index"] for p in m["pieces"]})))
 PY
 
+# --tets: every piece tetrahedralized (TetGen -pY); VTK and meshio sum the tets to the
+# manifest's volumes; the tets' exact volume equals each surface's; the exact tiling.
+if command -v tetgen >/dev/null; then
+  "$dtlab" fracture builtin --pieces 6 --seed 1 --quiet --out "$tmp/t" --tets --exact-tiling >/dev/null ||
+    fail "fracture --tets --exact-tiling"
+  /usr/bin/python3 "$here/tet_volumes.py" "$tmp/t" --tolerance 1e-9
+  rc=$?
+  [ $rc -eq 0 ] || [ $rc -eq 77 ] || fail "tet volumes"
+  python3 - "$tmp/t/manifest.json" <<'PY' || fail "manifest tets, volume identity"
+import json, sys
+m = json.load(open(sys.argv[1]))
+assert m["tets"]["pieces"] == len(m["pieces"]) == m["tets"]["pieces_exact"], m["tets"]
+for p in m["pieces"]:
+    assert p["tets"] > 0 and p["tet_volume_exact"], p
+    assert abs(p["tet_volume"] - p["volume"]) <= 1e-12 * p["volume"], p
+vi = m["volume_identity"]
+assert vi["exact_tiling"]["holds"] and vi["exact_tiling"]["difference"] == 0, vi
+assert abs(vi["float_relative"]) <= 1e-12 and abs(vi["exact_relative"]) <= 1e-12, vi
+print("tets: %d in %d pieces, exact tiling, written coordinates off by %.1e (exact), %.1e (float)" %
+      (m["tets"]["tets"], len(m["pieces"]), vi["exact_relative"], vi["float_relative"]))
+PY
+  # A TetGen that is not there is a named failure (exit 1), not a crash.
+  "$dtlab" fracture builtin --pieces 3 --quiet --out "$tmp/t2" --tets --tetgen /nonexistent/tetgen 2>"$tmp/err"
+  rc=$?
+  [ $rc -eq 1 ] && grep -q "piece 0: tetgen" "$tmp/err" || fail "missing tetgen: exit $rc $(cat "$tmp/err")"
+else
+  echo "SKIP --tets: tetgen is not installed"
+fi
+
 # Errors: one line, exit 2.
 expect2() {
   local what=$1

@@ -22,6 +22,10 @@ def test_builtin_torus_into_closed_pieces():
         for j in p.neighbors:
             assert i in pieces[j].neighbors
     assert pieces.manifest["pieces"][0]["volume"] == pieces[0].volume
+    # The volume identity in floating point and computed exactly on the returned doubles.
+    vi = pieces.manifest["volume_identity"]
+    assert abs(vi["float_relative"]) < 1e-12 and abs(vi["exact_relative"]) < 1e-14
+    assert vi["exact"] == (vi["exact_difference"] == 0)
 
 
 def test_margin_loses_volume_and_recursion():
