@@ -1,14 +1,15 @@
 #include "bench/whole_run.hpp"
 
 #include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <stdexcept>
 
 #include "oracle/cgal_oracle.hpp"
+#include "oracle/child_process.hpp"
 #include "oracle/peers.hpp"
 #include "oracle/tetgen_oracle.hpp"
 
@@ -97,38 +98,31 @@ RunMeasure measure_run(const std::string& tool, std::vector<Point3>& points,
                        const PredicateSpec& spec, const BuildOptions& options, unsigned threads) {
   RunMeasure m;
   m.tool = tool;
-  int fd[2];
-  if (pipe(fd) != 0) {
-    m.note = "pipe failed";
+  // No time or memory limit of its own (a whole run is as long as it is); stdout and
+  // stderr stay the caller's.
+  ChildLimits limits = ChildLimits::of(1e9);
+  limits.log_cap_bytes = sizeof(ChildReport);
+  std::string reply;
+  const ChildResult c = run_forked(
+      [&](int fd) {
+        ChildReport rep = run_in_child(tool, points, spec, options, threads);
+        if (write(fd, &rep, sizeof rep) != static_cast<ssize_t>(sizeof rep)) throw std::runtime_error("write failed");
+      },
+      limits, reply);
+  if (reply.size() != sizeof(ChildReport)) {
+    m.note = "child died (signal " + std::to_string(c.status == ChildStatus::signaled ? c.signal : 0) + ")";
     return m;
   }
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    close(fd[0]);
-    ChildReport rep = run_in_child(tool, points, spec, options, threads);
-    const ssize_t w = write(fd[1], &rep, sizeof rep);
-    _exit(w == sizeof rep ? 0 : 1);
-  }
-  close(fd[1]);
   ChildReport rep{};
-  const ssize_t got = read(fd[0], &rep, sizeof rep);
-  close(fd[0]);
-  int status = 0;
-  rusage usage{};
-  wait4(pid, &status, 0, &usage);
-  if (got != sizeof rep) {
-    m.note = "child died (signal " + std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : 0) + ")";
-    return m;
-  }
+  std::memcpy(&rep, reply.data(), sizeof rep);
   m.ok = rep.ok;
   m.seconds = rep.seconds;
   m.tets = rep.tets;
   m.note = rep.note;
   // TetGen's memory is its own process's, not the parent's that waited for it.
-  m.peak_mb = tool == "tetgen" ? rep.peak_mb_children
+  m.peak_mb = tool == "tetgen"       ? rep.peak_mb_children
               : rep.peak_mb_peer > 0 ? rep.peak_mb_peer
-                                     : double(usage.ru_maxrss) / 1024.0;
+                                     : double(c.maxrss_bytes) / (1024.0 * 1024.0);
   m.bytes_per_tet = m.tets ? m.peak_mb * 1024.0 * 1024.0 / double(m.tets) : 0;
   return m;
 }

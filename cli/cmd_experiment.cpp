@@ -50,12 +50,8 @@ int run_experiment(bool json, const std::filesystem::path& out, Run&& run) {
   return code;
 }
 
-}  // namespace
-
-void add_experiment_command(CLI::App& app, int& rc) {
-  CLI::App* sub = app.add_subcommand("experiment", "reproducible experiments with reports (report.md/.html, figures, data)");
-  sub->require_subcommand(1);
-
+// `experiment thesis-failures`: the thesis's robustness failures (chapter 5).
+void add_thesis_failures_command(CLI::App* sub, int& rc) {
   auto thesis = std::make_shared<experiments::ThesisFailuresOptions>();
   thesis->out = "reports/thesis-failures";
   auto no_figures = std::make_shared<bool>(false);
@@ -82,7 +78,10 @@ void add_experiment_command(CLI::App& app, int& rc) {
     thesis->command_line = command_line(t->get_name(), args);
     rc = run_experiment(*thesis_json, thesis->out, [&] { return experiments::run_thesis_failures(*thesis).exit_code; });
   });
+}
 
+// `experiment benchmark`: dtlab vs CGAL vs TetGen, predicate costs.
+void add_benchmark_command(CLI::App* sub, int& rc) {
   auto bench = std::make_shared<experiments::BenchmarkOptions>();
   bench->out = "reports/benchmark";
   auto bench_no_figures = std::make_shared<bool>(false);
@@ -113,6 +112,10 @@ void add_experiment_command(CLI::App& app, int& rc) {
     bench->command_line = command_line(b->get_name(), args);
     rc = run_experiment(*bench_json, bench->out, [&] { return experiments::run_benchmark(*bench).exit_code; });
   });
+}
+
+// `experiment leaderboard`: the field's Delaunay codes judged by the exact checker.
+void add_leaderboard_command(CLI::App* sub, int& rc) {
   auto board = std::make_shared<experiments::LeaderboardOptions>();
   auto board_json = std::make_shared<bool>(false);
   auto board_no_meshes = std::make_shared<bool>(false);
@@ -175,6 +178,17 @@ void add_experiment_command(CLI::App& app, int& rc) {
     board->command_line = command_line(l->get_name(), args);
     rc = run_experiment(*board_json, board->out, [&] { return experiments::run_leaderboard(*board).exit_code; });
   });
+}
+
+}  // namespace
+
+void add_experiment_command(CLI::App& app, int& rc) {
+  CLI::App* sub =
+      app.add_subcommand("experiment", "reproducible experiments with reports (report.md/.html, figures, data)");
+  sub->require_subcommand(1);
+  add_thesis_failures_command(sub, rc);
+  add_benchmark_command(sub, rc);
+  add_leaderboard_command(sub, rc);
 }
 
 }  // namespace dtlab::cli

@@ -161,104 +161,89 @@ std::string stages_markdown(const json& builds) {
   return o.str();
 }
 
-}  // namespace
-
-ExperimentResult run_benchmark(const BenchmarkOptions& options) {
-  const fs::path dir = options.out;
-  fs::create_directories(dir / "data");
-  const auto t0 = std::chrono::steady_clock::now();
-  auto step = [&](const std::string& what) {
-    if (options.progress)
-      std::fprintf(stderr, "[%6.1f s] %s\n",
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), what.c_str());
-  };
-  const PredicateSpec spec;  // adaptive + SoS, the default
-  const std::vector<std::string> tools = {"dtlab", "cgal", "tetgen"};
+// Everything the benchmark measured, for data/ and the report.
+struct BenchmarkData {
   json rows = json::array(), runs_json = json::array(), builds = json::array();
   std::vector<std::vector<std::string>> run_rows, sum_rows;
   bool dtlab_failed = false;
-  for (const Plan& p : make_plan(options))
-    for (std::size_t n : p.sizes) {
-      const std::uint64_t seed = case_seed(options.seed, "benchmark/" + p.distribution, n, 0);
-      step(p.distribution + " n=" + std::to_string(n));
-      std::vector<Point3> points = experiment_points(p.distribution, n, seed);
-      BuildOptions bo;
-      bo.seed = seed;
-      // the forked child's resident memory before it does anything: the baseline (the
-      // points and the parent's heap; freed blocks are handed back to the system first)
-      malloc_trim(0);
-      const double baseline_mb = measure_run("none", points, spec, bo).peak_mb;
-      const int runs = n <= 100000 ? options.runs : 1;
-      for (const auto& tool : tools) {
-        BenchRow row{p.distribution, points.size(), tool, {}};
-        for (int r = 0; r < runs; ++r) {
-          row.runs.push_back(measure_run(tool, points, spec, bo));
-          const RunMeasure& m = row.runs.back();
-          runs_json.push_back({{"distribution", p.distribution}, {"n", points.size()}, {"tool", tool}, {"run", r},
-                               {"ok", m.ok}, {"seconds", m.seconds}, {"peak_mb", m.peak_mb}, {"tets", m.tets},
-                               {"note", m.note}});
-          run_rows.push_back({p.distribution, std::to_string(points.size()), tool, std::to_string(r), m.ok ? "1" : "0",
-                              fmt("%.6f", m.seconds), fmt("%.1f", m.peak_mb), std::to_string(m.tets), m.note});
-        }
-        const RunMeasure& last = row.runs.back();
-        const bool ok = row.median_seconds() > 0;
-        if (tool == "dtlab" && !ok) dtlab_failed = true;
-        const double med = row.median_seconds();
-        json j = {{"distribution", p.distribution}, {"n", points.size()}, {"tool", tool}, {"runs", runs},
-                  {"ok", ok}, {"median_s", med}, {"min_s", row.min_seconds()}, {"max_s", row.max_seconds()},
-                  {"spread", med > 0 ? (row.max_seconds() - row.min_seconds()) / med : 0.0},
-                  {"mpoints_per_s", med > 0 ? double(points.size()) / med / 1e6 : 0.0},
-                  {"peak_mb", row.median_peak_mb()}, {"baseline_mb", tool == "tetgen" ? 0.0 : baseline_mb},
-                  {"own_mb", std::max(0.0, row.median_peak_mb() - (tool == "tetgen" ? 0.0 : baseline_mb))},
-                  {"tets", last.tets}, {"bytes_per_tet", last.bytes_per_tet}, {"note", last.note}};
-        rows.push_back(j);
-        sum_rows.push_back({p.distribution, std::to_string(points.size()), tool, std::to_string(runs), ok ? "1" : "0",
-                            fmt("%.6f", med), fmt("%.6f", row.min_seconds()), fmt("%.6f", row.max_seconds()),
-                            fmt("%.4f", j["mpoints_per_s"]), fmt("%.1f", j["peak_mb"]), fmt("%.1f", j["baseline_mb"]), fmt("%.1f", j["own_mb"]),
-                            std::to_string(last.tets), fmt("%.1f", last.bytes_per_tet), last.note});
-      }
-      // predicate calls and adaptive stages of dtlab's build at 10^5 (or the largest below)
-      if (n == std::min<std::size_t>(100000, p.sizes.back())) {
-        for (const std::string backend : {"naive", "adaptive", "exact"}) {
-          if (backend == "exact" && n > 100000) continue;
-          PredicateSpec s = spec;
-          s.backend = backend;
-          s.perturb = backend != "naive";
-          const auto b0 = std::chrono::steady_clock::now();
-          const BuildResult r = build_delaunay(points, s, bo);
-          const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - b0).count();
-          json stages = json::object();
-          for (const auto& [name, calls] : r.stats.stages) stages[name] = calls;
-          builds.push_back({{"distribution", p.distribution}, {"n", points.size()},
-                            {"backend", backend + (s.perturb ? "+sos" : "")}, {"seconds", sec},
-                            {"failure", r.failure ? failure_name(r.failure->kind) : ""},
-                            {"orient3d_calls", r.stats.orient3d_calls}, {"insphere_calls", r.stats.insphere_calls},
-                            {"walk_steps", r.stats.walk_steps}, {"stages", stages}});
-        }
-      }
-    }
-  step("predicate costs");
-  const json pred =
-      measure_predicate_costs(options.quick || (options.max_n && options.max_n < 100000) ? 200000 : 2000000, options.seed);
+};
 
-  write_csv(dir / "data" / "runs.csv", {"distribution", "n", "tool", "run", "ok", "seconds", "peak_mb", "tets", "note"},
-            run_rows);
-  write_csv(dir / "data" / "summary.csv",
-            {"distribution", "n", "tool", "runs", "ok", "median_s", "min_s", "max_s", "mpoints_per_s", "peak_mb",
-             "baseline_mb", "own_mb", "tets", "bytes_per_tet", "note"},
-            sum_rows);
-  const json env = environment(options.command_line, options.seed);
-  write_text_file((dir / "data" / "results.json").string(), json{{"experiment", "benchmark"}, {"environment", env}, {"summary", rows}, {"runs", runs_json},
-              {"builds", builds}, {"predicates", pred}}.dump(1) + "\n");
-  write_text_file((dir / "environment.json").string(), env.dump(2) + "\n");
-  write_text(dir / "commands.sh", "#!/bin/sh\n# the command that wrote this report\n" + options.command_line +
-                                      "\n# redraw the figures from data/\n/usr/bin/python3 plot_figures.py .\n");
-  json facts = {{"rows", rows.size()}, {"dtlab_failed", dtlab_failed}};
-  if (options.figures) {
-    step("figures");
-    facts["figures_status"] = draw_figures(dir);
+// `runs` whole runs of one tool on `points` (each in its forked child), and its row.
+void measure_tool(const std::string& distribution, std::vector<Point3>& points, const std::string& tool, int runs,
+                  double baseline_mb, const PredicateSpec& spec, const BuildOptions& bo, BenchmarkData& data) {
+  BenchRow row{distribution, points.size(), tool, {}};
+  for (int r = 0; r < runs; ++r) {
+    row.runs.push_back(measure_run(tool, points, spec, bo));
+    const RunMeasure& m = row.runs.back();
+    data.runs_json.push_back({{"distribution", distribution},
+                              {"n", points.size()},
+                              {"tool", tool},
+                              {"run", r},
+                              {"ok", m.ok},
+                              {"seconds", m.seconds},
+                              {"peak_mb", m.peak_mb},
+                              {"tets", m.tets},
+                              {"note", m.note}});
+    data.run_rows.push_back({distribution, std::to_string(points.size()), tool, std::to_string(r), m.ok ? "1" : "0",
+                             fmt("%.6f", m.seconds), fmt("%.1f", m.peak_mb), std::to_string(m.tets), m.note});
   }
+  const RunMeasure& last = row.runs.back();
+  const bool ok = row.median_seconds() > 0;
+  if (tool == "dtlab" && !ok) data.dtlab_failed = true;
+  const double med = row.median_seconds();
+  json j = {{"distribution", distribution},
+            {"n", points.size()},
+            {"tool", tool},
+            {"runs", runs},
+            {"ok", ok},
+            {"median_s", med},
+            {"min_s", row.min_seconds()},
+            {"max_s", row.max_seconds()},
+            {"spread", med > 0 ? (row.max_seconds() - row.min_seconds()) / med : 0.0},
+            {"mpoints_per_s", med > 0 ? double(points.size()) / med / 1e6 : 0.0},
+            {"peak_mb", row.median_peak_mb()},
+            {"baseline_mb", tool == "tetgen" ? 0.0 : baseline_mb},
+            {"own_mb", std::max(0.0, row.median_peak_mb() - (tool == "tetgen" ? 0.0 : baseline_mb))},
+            {"tets", last.tets},
+            {"bytes_per_tet", last.bytes_per_tet},
+            {"note", last.note}};
+  data.rows.push_back(j);
+  data.sum_rows.push_back({distribution, std::to_string(points.size()), tool, std::to_string(runs), ok ? "1" : "0",
+                           fmt("%.6f", med), fmt("%.6f", row.min_seconds()), fmt("%.6f", row.max_seconds()),
+                           fmt("%.4f", j["mpoints_per_s"]), fmt("%.1f", j["peak_mb"]), fmt("%.1f", j["baseline_mb"]),
+                           fmt("%.1f", j["own_mb"]), std::to_string(last.tets), fmt("%.1f", last.bytes_per_tet),
+                           last.note});
+}
 
+// Predicate calls and adaptive stages of dtlab's in-process builds with naive,
+// adaptive and (up to 10^5) exact predicates.
+void measure_builds(const std::string& distribution, const std::vector<Point3>& points, std::size_t n,
+                    const PredicateSpec& spec, const BuildOptions& bo, BenchmarkData& data) {
+  for (const std::string backend : {"naive", "adaptive", "exact"}) {
+    if (backend == "exact" && n > 100000) continue;
+    PredicateSpec s = spec;
+    s.backend = backend;
+    s.perturb = backend != "naive";
+    const auto b0 = std::chrono::steady_clock::now();
+    const BuildResult r = build_delaunay(points, s, bo);
+    const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - b0).count();
+    json stages = json::object();
+    for (const auto& [name, calls] : r.stats.stages) stages[name] = calls;
+    data.builds.push_back({{"distribution", distribution},
+                           {"n", points.size()},
+                           {"backend", backend + (s.perturb ? "+sos" : "")},
+                           {"seconds", sec},
+                           {"failure", r.failure ? failure_name(r.failure->kind) : ""},
+                           {"orient3d_calls", r.stats.orient3d_calls},
+                           {"insphere_calls", r.stats.insphere_calls},
+                           {"walk_steps", r.stats.walk_steps},
+                           {"stages", stages}});
+  }
+}
+
+// report.md's text.
+std::string benchmark_markdown(const fs::path& dir, const BenchmarkOptions& options, const BenchmarkData& data,
+                               const json& pred, const json& env) {
   std::ostringstream o;
   o << "# dtlab benchmark: dtlab vs CGAL vs TetGen\n\n";
   o << "Whole Delaunay tetrahedralizations of the same points by dtlab (adaptive predicates + symbolic "
@@ -278,9 +263,9 @@ ExperimentResult run_benchmark(const BenchmarkOptions& options) {
       << " and fewer predicate calls; the full run goes to 10^6.";
   o << "\n\n## Findings\n\nTimes are medians with [min, max] of the runs; a difference smaller than the spread "
        "of the runs is reported as no measurable difference.\n\n"
-    << findings_markdown(rows, pred);
-  o << "## Times and memory\n\n" << summary_markdown(rows);
-  o << "## Ratios (median times)\n\n" << speedup_markdown(rows);
+    << findings_markdown(data.rows, pred);
+  o << "## Times and memory\n\n" << summary_markdown(data.rows);
+  o << "## Ratios (median times)\n\n" << speedup_markdown(data.rows);
   o << figure_markdown(dir, "fig_time.png", "Time vs n (log-log): median, bars from the fastest to the slowest run");
   o << figure_markdown(dir, "fig_rate.png", "Million points per second vs n: median, bars from the slowest to the fastest run");
   o << figure_markdown(dir, "fig_memory.png", "Peak memory above the fork baseline vs n (median of the runs)");
@@ -295,16 +280,77 @@ ExperimentResult run_benchmark(const BenchmarkOptions& options) {
   o << "## Predicate calls and adaptive stages inside dtlab builds\n\n"
        "In-process builds of the same points with naive (no perturbation), adaptive+sos and exact+sos "
        "(exact only up to 10^5). A naive build that stops (`walk-cycle`) is fast because it did not finish.\n\n"
-    << stages_markdown(builds);
+    << stages_markdown(data.builds);
   o << "## Data\n\n`data/runs.csv` (every run), `data/summary.csv` (medians), `data/results.json` (all, with "
        "the predicate and stage tables); `plot_figures.py` drew the figures (`/usr/bin/python3 plot_figures.py .`).\n\n";
   o << environment_markdown(env);
-  write_text(dir / "report.md", o.str());
-  write_text(dir / "report.html", markdown_to_html(o.str(), "dtlab benchmark"));
+  return o.str();
+}
+
+}  // namespace
+
+ExperimentResult run_benchmark(const BenchmarkOptions& options) {
+  const fs::path dir = options.out;
+  fs::create_directories(dir / "data");
+  const auto t0 = std::chrono::steady_clock::now();
+  auto step = [&](const std::string& what) {
+    if (options.progress)
+      std::fprintf(stderr, "[%6.1f s] %s\n",
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), what.c_str());
+  };
+  const PredicateSpec spec;  // adaptive + SoS, the default
+  const std::vector<std::string> tools = {"dtlab", "cgal", "tetgen"};
+  BenchmarkData data;
+  for (const Plan& p : make_plan(options))
+    for (std::size_t n : p.sizes) {
+      const std::uint64_t seed = case_seed(options.seed, "benchmark/" + p.distribution, n, 0);
+      step(p.distribution + " n=" + std::to_string(n));
+      std::vector<Point3> points = experiment_points(p.distribution, n, seed);
+      BuildOptions bo;
+      bo.seed = seed;
+      // the forked child's resident memory before it does anything: the baseline (the
+      // points and the parent's heap; freed blocks are handed back to the system first)
+      malloc_trim(0);
+      const double baseline_mb = measure_run("none", points, spec, bo).peak_mb;
+      const int runs = n <= 100000 ? options.runs : 1;
+      for (const auto& tool : tools) measure_tool(p.distribution, points, tool, runs, baseline_mb, spec, bo, data);
+      // predicate calls and adaptive stages of dtlab's build at 10^5 (or the largest below)
+      if (n == std::min<std::size_t>(100000, p.sizes.back())) measure_builds(p.distribution, points, n, spec, bo, data);
+    }
+  step("predicate costs");
+  const json pred = measure_predicate_costs(
+      options.quick || (options.max_n && options.max_n < 100000) ? 200000 : 2000000, options.seed);
+
+  write_csv(dir / "data" / "runs.csv", {"distribution", "n", "tool", "run", "ok", "seconds", "peak_mb", "tets", "note"},
+            data.run_rows);
+  write_csv(dir / "data" / "summary.csv",
+            {"distribution", "n", "tool", "runs", "ok", "median_s", "min_s", "max_s", "mpoints_per_s", "peak_mb",
+             "baseline_mb", "own_mb", "tets", "bytes_per_tet", "note"},
+            data.sum_rows);
+  const json env = environment(options.command_line, options.seed);
+  write_text_file((dir / "data" / "results.json").string(), json{{"experiment", "benchmark"},
+                                                                 {"environment", env},
+                                                                 {"summary", data.rows},
+                                                                 {"runs", data.runs_json},
+                                                                 {"builds", data.builds},
+                                                                 {"predicates", pred}}
+                                                                    .dump(1) +
+                                                                "\n");
+  write_text_file((dir / "environment.json").string(), env.dump(2) + "\n");
+  write_text(dir / "commands.sh", "#!/bin/sh\n# the command that wrote this report\n" + options.command_line +
+                                      "\n# redraw the figures from data/\n/usr/bin/python3 plot_figures.py .\n");
+  json facts = {{"rows", data.rows.size()}, {"dtlab_failed", data.dtlab_failed}};
+  if (options.figures) {
+    step("figures");
+    facts["figures_status"] = draw_figures(dir);
+  }
+  const std::string report = benchmark_markdown(dir, options, data, pred, env);
+  write_text(dir / "report.md", report);
+  write_text(dir / "report.html", markdown_to_html(report, "dtlab benchmark"));
   facts["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   write_text_file((dir / "data" / "facts.json").string(), facts.dump(2) + "\n");
   step("done");
-  return {dtlab_failed ? 1 : 0, facts};
+  return {data.dtlab_failed ? 1 : 0, facts};
 }
 
 }  // namespace dtlab::experiments

@@ -89,18 +89,6 @@ std::uint64_t case_seed(std::uint64_t seed, const std::string& what, std::uint64
   return mix(mix(mix(seed) ^ h) ^ n) ^ mix(index);
 }
 
-void write_csv(const std::filesystem::path& file, const std::vector<std::string>& header,
-               const std::vector<std::vector<std::string>>& rows) {
-  std::ostringstream out;
-  for (std::size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i];
-  out << "\n";
-  for (const auto& r : rows) {
-    for (std::size_t i = 0; i < r.size(); ++i) out << (i ? "," : "") << r[i];
-    out << "\n";
-  }
-  write_text_file(file.string(), out.str());
-}
-
 nlohmann::json rates_section(const SectionContext& c) {
   const std::vector<std::string> families =
       c.quick ? std::vector<std::string>{"uniform", "near_degenerate", "ulp_jitter", "torus-rays"}

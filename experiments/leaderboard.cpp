@@ -11,7 +11,7 @@
 #include <sstream>
 #include <thread>
 
-#include "kernel/output_file.hpp"
+#include "experiments/csv_writer.hpp"
 #include "experiments/peer_campaign.hpp"
 #include "experiments/report.hpp"
 #include "experiments/shrink_stage.hpp"
@@ -19,6 +19,7 @@
 #include "experiments/wilson_interval.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/work_queue.hpp"
+#include "kernel/output_file.hpp"
 #include "oracle/child_process.hpp"
 #include "oracle/peer_json.hpp"
 #include "oracle/served_child.hpp"
@@ -76,13 +77,6 @@ std::string counts_field(const PeerRun& r) {
              std::to_string(r.report->counts[k]);
   if (r.extra_tets) s += (s.empty() ? "" : ";") + std::string("extra-tets:") + std::to_string(r.extra_tets);
   return s;
-}
-
-std::string csv_escape(std::string s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string o = "\"";
-  for (char c : s) o += c == '"' ? std::string("\"\"") : c == '\n' ? std::string(" ") : std::string(1, c);
-  return o + "\"";
 }
 
 std::string percent(double v) {

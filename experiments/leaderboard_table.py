@@ -50,7 +50,7 @@ def main(folder):
             failing[p] += 1
             verdicts[p][row["verdict"]] += 1
     speed = list(csv.DictReader(open(os.path.join(folder, "data", "speed.csv"))))
-    answered = [r for r in speed if r["verdict"] not in ("crashed", "hung", "refused", "not-installed")]
+    answered = [r for r in speed if r["verdict"] not in ("crashed", "hung", "out-of-memory", "refused", "not-installed")]
     columns = []
     for r in speed:
         key = (r["source"], int(r["n"]))
@@ -76,7 +76,7 @@ def main(folder):
                 ", ".join("%s %d" % kv for kv in sorted(verdicts[p].items())) or "-"]
         for s, n in columns:
             t = timing.get((p, s, n))
-            if not t or t["verdict"] in ("crashed", "hung", "refused", "not-installed"):
+            if not t or t["verdict"] in ("crashed", "hung", "out-of-memory", "refused", "not-installed"):
                 row.append(t["verdict"] if t else "-")
                 continue
             sec = float(t["seconds"])

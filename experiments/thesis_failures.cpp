@@ -25,9 +25,9 @@ bool is_hard(const std::string& f) { return std::count(kHardFamilies.begin(), kH
 
 std::string pct(double x) { return fmt(x >= 0.1 ? "%.0f%%" : "%.1f%%", 100 * x); }
 
-json compute_facts(const json& rates, const json& eps, const json& bigtet, const json& cost, const json& sampling,
-                   const json& overlap) {
-  json f;
+// The failure rates' facts: the naive backend's failures on the hard families at the
+// smallest and largest n, and the robust backends' failed cases.
+void rate_facts(const json& rates, json& f) {
   const std::size_t nmax = rates["sizes"].back().get<std::size_t>();
   const std::size_t nmin = rates["sizes"].front().get<std::size_t>();
   int hard_cases = 0, hard_failed = 0, hard_cases_min = 0, hard_failed_min = 0;
@@ -59,6 +59,11 @@ json compute_facts(const json& rates, const json& eps, const json& bigtet, const
   f["max_n"] = nmax;
   f["naive_cases_with"] = naive_kind;
   f["robust_failed_cases"] = robust_failed;
+}
+
+// The cost runs' facts: defects of the robust backends, timings on uniform points, the
+// share of adaptive calls past the filter, epsilon's defects.
+void cost_facts(const json& cost, json& f) {
   int robust_defects = 0;
   for (const auto& c : cost["cells"])
     if ((c["backend"] == "adaptive+sos" || c["backend"] == "exact+sos"))
@@ -91,7 +96,10 @@ json compute_facts(const json& rates, const json& eps, const json& bigtet, const
       f["epsilon_uniform_defects"] = c["defects"];  // the last one: the largest n
       f["epsilon_uniform_n"] = c["n"];
     }
-  // the best eps of each mode, failure rate pooled over the families
+}
+
+// Epsilon's facts: the best eps of each mode, failure rate pooled over the families.
+void epsilon_facts(const json& eps, json& f) {
   std::map<std::pair<std::string, double>, std::pair<int, int>> pooled;
   for (const auto& c : eps["cells"]) {
     auto& p = pooled[{c["mode"].get<std::string>(), c["eps"].get<double>()}];
@@ -110,7 +118,11 @@ json compute_facts(const json& rates, const json& eps, const json& bigtet, const
       }
     f["epsilon_best_failure_rate"][mode] = {{"rate", best}, {"eps", best_eps}, {"failed", failed}, {"cases", cases}};
   }
-  // bigtet: cases with missing tets at the smallest factor that holds every point
+}
+
+// The big tetrahedron's facts: cases with missing tets at the smallest factor that
+// holds every point, and the factor each case needed.
+void bigtet_facts(const json& bigtet, json& f) {
   int small_cases = 0, small_missing = 0;
   double smallest = bigtet["factors"][0];
   for (const auto& c : bigtet["cells"])
@@ -134,12 +146,26 @@ json compute_facts(const json& rates, const json& eps, const json& bigtet, const
       break;
     }
   f["bigtet_cases_wrong_at_every_factor"] = never;
+}
+
+// The sampling facts: points outside the mesh by method and hole frequency.
+void sampling_facts(const json& sampling, json& f) {
   for (const auto& c : sampling["cells"]) {
     f["outside_fraction"][c["method"].get<std::string>()][std::to_string(c["removed_every"].get<int>())] =
         c["outside_fraction"];
     f["outside_count"][c["method"].get<std::string>()][std::to_string(c["removed_every"].get<int>())] = {
         {"outside", c["outside"]}, {"points", c["points"]}};
   }
+}
+
+json compute_facts(const json& rates, const json& eps, const json& bigtet, const json& cost, const json& sampling,
+                   const json& overlap) {
+  json f;
+  rate_facts(rates, f);
+  cost_facts(cost, f);
+  epsilon_facts(eps, f);
+  bigtet_facts(bigtet, f);
+  sampling_facts(sampling, f);
   f["overlap_case_points"] = overlap.is_null() ? 0 : overlap["points"].size();
   f["epsilon_n"] = eps["n"];
   return f;
@@ -317,10 +343,8 @@ std::string overlap_markdown(const json& c) {
   return o.str();
 }
 
-std::string report_markdown(const fs::path& dir, const json& env, const json& facts, const json& rates,
-                            const json& eps, const json& bigtet, const json& cost, const json& sampling,
-                            const json& overlap, bool quick) {
-  std::ostringstream o;
+// The title and what the report reproduces (a quick run says so).
+void intro_markdown(std::ostream& o, const json& rates, bool quick) {
   o << "# dtlab: the thesis's robustness failures, reproduced\n\n";
   o << "Chapter 5 of the thesis reports, for its incremental flip-based Delaunay tetrahedralization with "
        "plain floating point: overlapping tetrahedra, points missing from the result, crashes that got worse "
@@ -331,9 +355,10 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
   if (quick)
     o << " **Quick run** (`--quick`): " << rates["cases"] << " cases per cell and fewer sizes, so the intervals "
       << "are wide; the full run uses 64 cases per cell. Cite the full run, not this one.";
-  o << "\n\n## Findings\n\n";
-  o << "Every rate below is failures / cases with its 95% Wilson interval in brackets; every time comes from "
-       "repeated runs (median, [min, max]).\n\n";
+}
+
+// Finding: naive floating point fails, more often as n grows.
+void naive_finding(std::ostream& o, const json& facts) {
   const auto& nk = facts["naive_cases_with"];
   const auto& hard_max = facts["naive_hard_at_max_n"];
   const auto& hard_min = facts["naive_hard_at_min_n"];
@@ -346,6 +371,10 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
     << " had overlapping or inverted tets, " << nk.value("missing_point", 0) << " left points out of the result, "
     << nk.value("non_delaunay", 0) << " had non-Delaunay facets (a case may count in several; a build that stops "
        "is not checked further, so these are lower bounds).\n";
+}
+
+// Finding: the tolerance does not fix it.
+void epsilon_finding(std::ostream& o, const json& facts) {
   const auto& be = facts["epsilon_best_failure_rate"];
   o << "- **The tolerance does not fix it.** Pooled over its families at n = " << facts.value("epsilon_n", 0)
     << ", the best absolute eps (" << fmt("%.0e", be["absolute"]["eps"]) << ") fails "
@@ -356,6 +385,10 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
     o << " The absolute band 1e-12 also breaks an input that naive builds correctly: uniform points, n = "
       << facts["epsilon_uniform_n"] << ", " << facts["epsilon_uniform_defects"] << " defects (section 4).";
   o << "\n";
+}
+
+// Finding: the big tetrahedron drops hull tets unless it is huge.
+void bigtet_finding(std::ostream& o, const json& facts) {
   o << "- **A big enclosing tetrahedron drops hull tets unless it is huge.** At factor "
     << facts["bigtet_smallest_factor"] << ", the result differs from the true DT on "
     << rate_cell(facts["bigtet_cases_wrong_at_smallest_factor"], facts["bigtet_cases"])
@@ -365,6 +398,10 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
   if (facts["bigtet_cases_wrong_at_every_factor"].get<int>() > 0)
     o << ", and " << facts["bigtet_cases_wrong_at_every_factor"] << " inputs were wrong even at 1e12";
   o << " (section 3 lists the factor each family needed).\n";
+}
+
+// Finding: adaptive and exact predicates have no defects, and what they cost.
+void robust_finding(std::ostream& o, const json& facts) {
   int robust = facts["robust_defects_in_cost_runs"].get<int>();
   std::size_t robust_total = 0;
   for (const auto& [k, v] : facts["robust_failed_cases"].items()) robust += v.get<int>();
@@ -393,6 +430,10 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
     o << ".";
   }
   o << "\n";
+}
+
+// Finding: ray sampling puts points outside a mesh with holes.
+void sampling_finding(std::ostream& o, const json& facts) {
   const auto& oc = facts["outside_count"];
   const auto outside = [&](const char* m, const char* k) {
     return rate_cell(oc[m][k]["outside"].get<std::size_t>(), oc[m][k]["points"].get<std::size_t>());
@@ -401,7 +442,22 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
     << "the share of samples outside the solid is " << outside("rays", "20") << " for rays, " << outside("sdf", "20")
     << " for SDF and " << outside("winding", "20") << " for the winding number; on the closed torus: "
     << outside("rays", "0") << ", " << outside("sdf", "0") << ", " << outside("winding", "0") << ".\n\n";
+}
 
+// The findings, one bullet each, from facts.json.
+void findings_markdown(std::ostream& o, const json& facts) {
+  o << "\n\n## Findings\n\n";
+  o << "Every rate below is failures / cases with its 95% Wilson interval in brackets; every time comes from "
+       "repeated runs (median, [min, max]).\n\n";
+  naive_finding(o, facts);
+  epsilon_finding(o, facts);
+  bigtet_finding(o, facts);
+  robust_finding(o, facts);
+  sampling_finding(o, facts);
+}
+
+// Section 1: the failure rates.
+void rates_section_markdown(std::ostream& o, const fs::path& dir, const json& rates) {
   o << "## 1. Naive floating point: failure rate per backend x family x n\n\n";
   o << "Every case is built with `naive` (no perturbation: the thesis's code), `epsilon` (absolute 1e-12), "
        "`adaptive+sos` and `exact+sos`, and checked exactly. A case fails when the build stops (`walk-cycle`, "
@@ -421,7 +477,10 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
        "(flip-stuck) or leave non-Delaunay facets; a point located in an inconsistent place is skipped (missing). "
        "Near-degenerate inputs put many determinants within the rounding error, and more points give more "
        "chances.\n\n";
+}
 
+// Section 2: the epsilon "fix".
+void epsilon_section_markdown(std::ostream& o, const fs::path& dir, const json& eps) {
   o << "## 2. The epsilon \"fix\"\n\n";
   o << "Families " ;
   for (const auto& f : eps["families"]) o << "`" << f.get<std::string>() << "` ";
@@ -430,7 +489,10 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
        "(M the largest coordinate difference, k the degree).\n\n";
   o << eps_markdown(eps);
   o << figure_markdown(dir, "fig_epsilon.png", "Failure rate vs eps (absolute and relative), per family, with 95% Wilson intervals; dotted: naive");
+}
 
+// Section 3: the big enclosing tetrahedron.
+void bigtet_section_markdown(std::ostream& o, const fs::path& dir, const json& bigtet) {
   o << "## 3. The big enclosing tetrahedron\n\n";
   o << "The thesis inserts all points into one big tetrahedron and deletes the tets touching its corners at the end. "
        "Its corners are real points, so any hull tet whose circumsphere holds a corner is never created: the "
@@ -444,7 +506,10 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
        "points near a facet of the box, points on parallel planes in `coplanar_slabs`) have circumspheres far "
        "larger than the input, and a corner inside one of them removes the tet. The factor any given input "
        "needs can only be found by building both, which is why dtlab uses the infinite vertex.\n\n";
+}
 
+// Section 4: the robust backends' cost.
+void cost_section_markdown(std::ostream& o, const fs::path& dir, const json& cost) {
   o << "## 4. Adaptive and exact: zero defects, and their cost\n\n";
   o << "Wall time of in-process builds (median, min and max of " << cost["runs"] << " runs that interleave the "
        "backends; exact at n = 10^5: one run), the exact check of the result, and the "
@@ -452,7 +517,10 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
        "on these inputs, in which case its time is that of a wrong result).\n\n";
   o << cost_markdown(cost);
   o << figure_markdown(dir, "fig_cost.png", "Build time per backend: median, bars from the fastest to the slowest run");
+}
 
+// Section 5: the samplers.
+void sampling_section_markdown(std::ostream& o, const fs::path& dir, const json& sampling) {
   o << "## 5. Ray-intersection sampling vs the winding number\n\n";
   o << "The bumpy torus (concave, with a hole; " << sampling["triangles"] << " triangles), " << sampling["count"]
     << " points per method, with every k-th triangle removed (holes, as in scanned meshes). A point is outside "
@@ -462,11 +530,27 @@ std::string report_markdown(const fs::path& dir, const json& env, const json& fa
   o << sampling_markdown(sampling);
   o << figure_markdown(dir, "fig_sampling.png", "Share of samples outside the solid vs share of faces removed, with 95% Wilson intervals");
   o << figure_markdown(dir, "fig_sampling_slice.png", "Slab |y| < 0.05 of the torus with 5% of faces removed: outside points in red");
+}
 
+// Section 6: one overlapping configuration.
+void overlap_section_markdown(std::ostream& o, const fs::path& dir, const json& overlap) {
   o << "## 6. One overlapping configuration\n\n";
   o << overlap_markdown(overlap);
   o << figure_markdown(dir, "fig_overlap.png", "A shrunk naive failure: the tets the checker names in red/orange, the rest grey");
+}
 
+std::string report_markdown(const fs::path& dir, const json& env, const json& facts, const json& rates, const json& eps,
+                            const json& bigtet, const json& cost, const json& sampling, const json& overlap,
+                            bool quick) {
+  std::ostringstream o;
+  intro_markdown(o, rates, quick);
+  findings_markdown(o, facts);
+  rates_section_markdown(o, dir, rates);
+  epsilon_section_markdown(o, dir, eps);
+  bigtet_section_markdown(o, dir, bigtet);
+  cost_section_markdown(o, dir, cost);
+  sampling_section_markdown(o, dir, sampling);
+  overlap_section_markdown(o, dir, overlap);
   o << "## Data\n\n`data/` holds every measurement: `rates.csv`, `epsilon.csv`, `bigtet.csv`, "
        "`bigtet_required.csv`, `cost.csv`, `sampling.csv`, `slice_*.json`, `overlap_case.json` / `.xyz`, and "
        "`results.json` (all of it); `facts.json` the headline numbers. `plot_figures.py` drew the figures from "

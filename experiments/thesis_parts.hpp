@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "experiments/csv_writer.hpp"
 #include "kernel/build.hpp"
 
 namespace dtlab::experiments {
@@ -34,8 +35,5 @@ nlohmann::json cost_section(const SectionContext& c);
 nlohmann::json sampling_section(const SectionContext& c);
 // One small naive failure with overlapping / inverted tets, shrunk (data/overlap_case.json).
 nlohmann::json overlap_case_section(const SectionContext& c);
-
-void write_csv(const std::filesystem::path& file, const std::vector<std::string>& header,
-               const std::vector<std::vector<std::string>>& rows);
 
 }  // namespace dtlab::experiments

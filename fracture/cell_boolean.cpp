@@ -100,8 +100,8 @@ Mesh cell_mesh(const VoronoiCell& c) {
     std::sort(corners.begin(), corners.end(),
               [](const Point3& p, const Point3& q) { return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z); });
     Point3 ctr{0, 0, 0};
-    for (const Point3& p : corners) ctr = vor::vadd(ctr, p);
-    ctr = vor::vscale(1.0 / (e - b), ctr);
+    for (const Point3& p : corners) ctr = ctr + p;
+    ctr = 1.0 / (e - b) * ctr;
     const auto cv = m.add_vertex(P3(ctr.x, ctr.y, ctr.z));
     for (auto k = b; k < e; ++k) {
       const auto n = k + 1 < e ? k + 1 : b;
@@ -319,8 +319,8 @@ PieceMesh MeshClipper::Impl::intersect_with(const Mesh& m, const VoronoiCell& c)
     tally_sum += v;
   }
   // Cut faces: triangles whose three corners lie on one of the cell's face planes.
-  const double tol = 1e-9 * vor::vnorm(vor::vsub(Point3{box.xmax(), box.ymax(), box.zmax()},
-                                               Point3{box.xmin(), box.ymin(), box.zmin()}));
+  const double tol =
+      1e-9 * norm(Point3{box.xmax(), box.ymax(), box.zmax()} - Point3{box.xmin(), box.ymin(), box.zmin()});
   struct Plane {
     Point3 n;
     double c;
@@ -332,16 +332,16 @@ PieceMesh MeshClipper::Impl::intersect_with(const Mesh& m, const VoronoiCell& c)
     const Point3 o = c.vertices[c.face_vertices[b]];
     Point3 n{0, 0, 0};
     for (auto k = b + 1; k + 1 < e; ++k)
-      n = vor::vadd(n, vor::vcross(vor::vsub(c.vertices[c.face_vertices[k]], o), vor::vsub(c.vertices[c.face_vertices[k + 1]], o)));
-    n = vor::vscale(1.0 / vor::vnorm(n), n);
-    planes.push_back({n, vor::vdot(n, o), c.face_neighbor[f]});
+      n = n + cross(c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
+    n = 1.0 / norm(n) * n;
+    planes.push_back({n, dot(n, o), c.face_neighbor[f]});
   }
   piece.cut.assign(piece.mesh.triangles.size(), 0);
   piece.cut_tag.assign(piece.mesh.triangles.size(), 0);
   for (std::size_t t = 0; t < piece.mesh.triangles.size(); ++t) {
     for (const auto& pl : planes) {
       bool on = true;
-      for (int k = 0; k < 3 && on; ++k) on = std::abs(vor::vdot(pl.n, piece.mesh.corner(t, k)) - pl.c) <= tol;
+      for (int k = 0; k < 3 && on; ++k) on = std::abs(dot(pl.n, piece.mesh.corner(t, k)) - pl.c) <= tol;
       if (on) {
         piece.cut[t] = 1;
         piece.cut_tag[t] = pl.tag;

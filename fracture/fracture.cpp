@@ -154,33 +154,54 @@ void measure_piece(Piece& p) {
   p.neighbors = std::move(nb);
 }
 
-FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o) {
-  if (o.pieces == 0) throw std::invalid_argument("--pieces must be at least 1");
-  FractureResult r;
-  TriangleMesh repaired;
+// Marks the triangles of sub-piece `sp` that lie on a cut face of its parent (in the
+// plane of one of the parent's cut triangles) as cut, tagged with the parent's tag
+// (a top-level neighbour id t becomes -1000 - t, to be mapped once all ids are known).
+void mark_parent_cut_faces(const Piece& parent, Piece& sp) {
+  const TriangleMesh& m = sp.geometry.mesh;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    if (sp.geometry.cut[t]) continue;
+    // A sub-piece triangle on the parent's cut face lies in the plane of one of
+    // the parent's cut triangles.
+    const TriangleMesh& pm = parent.geometry.mesh;
+    for (std::size_t u = 0; u < pm.triangles.size(); ++u) {
+      if (!parent.geometry.cut[u]) continue;
+      Point3 n = pm.area_normal(u);
+      const double len = norm(n);
+      if (len == 0) continue;
+      n = (1.0 / len) * n;
+      bool on = true;
+      for (int k = 0; k < 3 && on; ++k)
+        on = std::abs(dot(n, m.corner(t, k) - pm.corner(u, 0))) <= 1e-9 * std::sqrt(len);
+      if (on) {
+        sp.geometry.cut[t] = 1;
+        sp.geometry.cut_tag[t] =
+            parent.geometry.cut_tag[u] >= 0 ? -1000 - parent.geometry.cut_tag[u] : parent.geometry.cut_tag[u];
+        break;
+      }
+    }
+  }
+}
+
+// The input as a solid (repaired first with o.repair), its report and repair steps in r.
+TriangleMesh solid_input(const TriangleMesh& mesh, const FractureOptions& o, FractureResult& r) {
   if (o.repair) {
     RepairResult rr = repair_mesh(mesh);
     r.report = rr.before;
     r.repairs = rr.steps;
     if (!rr.solid()) throw std::invalid_argument("cannot be repaired into a solid: " + rr.after.why_not_solid());
-    repaired = std::move(rr.mesh);
-  } else if (r.report = analyze_mesh(mesh); !r.report.solid()) {
-    throw std::invalid_argument("not a solid: " + r.report.why_not_solid() + " (--repair tries to fix it)");
+    return std::move(rr.mesh);
   }
-  MeshClipper clipper(o.repair ? repaired : mesh, MeshClipper::MeshCheck::solid);  // analyzed above
-  clipper.set_time_budget(o.boolean_seconds);
-  r.exact_tiling_checked = r.exact_tiling = o.exact_tiling && o.margin == 0;
-  clipper.set_exact_tally(r.exact_tiling_checked);
-  clipper.set_progress(o.progress);
-  r.input = clipper.mesh();
-  r.mesh_volume = clipper.volume();
-  Level top = fracture_once(clipper, o, o.sites, o.seed, o.pieces, r);
-  r.booleans += top.booleans;
-  r.skipped += top.skipped;
+  if (r.report = analyze_mesh(mesh); !r.report.solid())
+    throw std::invalid_argument("not a solid: " + r.report.why_not_solid() + " (--repair tries to fix it)");
+  return mesh;
+}
 
-  // Recursion: each chosen piece (a closed mesh itself) is fractured again. Sub-pieces
-  // keep their parent's cut faces; their neighbours are their siblings plus the
-  // parent's neighbours they share a cut face with (tags of the parent's cut faces).
+// Recursion: each chosen piece (a closed mesh itself) is fractured again, its
+// sub-pieces appended to r.pieces in place of it. Sub-pieces keep their parent's cut
+// faces; their neighbours are their siblings plus the parent's neighbours they share a
+// cut face with (tags of the parent's cut faces). ids: top piece -> its final ids.
+std::vector<std::vector<std::uint32_t>> fracture_chosen(Level& top, const FractureOptions& o, FractureResult& r) {
   std::vector<char> chosen(top.pieces.size(), 0);
   for (auto i : o.recurse) {
     if (i >= top.pieces.size())
@@ -188,7 +209,7 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
                                   std::to_string(top.pieces.size()) + ")");
     chosen[i] = 1;
   }
-  std::vector<std::vector<std::uint32_t>> ids(top.pieces.size());  // top piece -> final ids
+  std::vector<std::vector<std::uint32_t>> ids(top.pieces.size());
   for (std::size_t i = 0; i < top.pieces.size(); ++i) {
     if (!chosen[i]) {
       ids[i].push_back(static_cast<std::uint32_t>(r.pieces.size()));
@@ -207,40 +228,23 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
     Level sub = fracture_once(sub_clipper, o, SiteOptions{}, o.seed * 1000003 + i, o.recurse_pieces, r);
     r.booleans += sub.booleans;
     r.skipped += sub.skipped;
-    // Parent cut planes, to recognise the parent's cut faces on the sub-pieces.
     const std::uint32_t first = static_cast<std::uint32_t>(r.pieces.size());
     for (auto& sp : sub.pieces) {
       for (auto& tag : sp.geometry.cut_tag)
         if (tag >= 0) tag += static_cast<std::int32_t>(first);
-      const TriangleMesh& m = sp.geometry.mesh;
-      for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-        if (sp.geometry.cut[t]) continue;
-        // A sub-piece triangle on the parent's cut face lies in the plane of one of
-        // the parent's cut triangles.
-        const TriangleMesh& pm = parent.geometry.mesh;
-        for (std::size_t u = 0; u < pm.triangles.size(); ++u) {
-          if (!parent.geometry.cut[u]) continue;
-          Point3 n = pm.area_normal(u);
-          const double len = norm(n);
-          if (len == 0) continue;
-          n = (1.0 / len) * n;
-          bool on = true;
-          for (int k = 0; k < 3 && on; ++k)
-            on = std::abs(dot(n, m.corner(t, k) - pm.corner(u, 0))) <= 1e-9 * std::sqrt(len);
-          if (on) {
-            sp.geometry.cut[t] = 1;
-            sp.geometry.cut_tag[t] = parent.geometry.cut_tag[u] >= 0 ? -1000 - parent.geometry.cut_tag[u] : parent.geometry.cut_tag[u];
-            break;
-          }
-        }
-      }
+      mark_parent_cut_faces(parent, sp);
       sp.parent = static_cast<int>(i);
       ids[i].push_back(static_cast<std::uint32_t>(r.pieces.size()));
       r.pieces.push_back(std::move(sp));
     }
   }
-  // Resolve tags: >= 0 final ids (siblings / unchanged top level), <= -1000 a top-level
-  // piece id to be mapped through ids (all its final pieces that touch, conservatively).
+  return ids;
+}
+
+// Every piece measured and its neighbours resolved: tags >= 0 are final ids (siblings,
+// unchanged top level), tags <= -1000 a top-level piece mapped through ids (all its
+// final pieces, conservatively); links made symmetric, self links dropped.
+void resolve_neighbours(const std::vector<std::vector<std::uint32_t>>& ids, FractureResult& r) {
   for (auto& p : r.pieces) {
     if (p.parent < 0) {
       for (auto& tag : p.geometry.cut_tag)
@@ -261,7 +265,6 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
     nb.insert(nb.end(), p.neighbors.begin(), p.neighbors.end());
     p.neighbors = std::move(nb);
   }
-  // Symmetrise conservatively-found links and drop self links.
   std::vector<std::vector<std::uint32_t>> sym(r.pieces.size());
   for (std::uint32_t i = 0; i < r.pieces.size(); ++i)
     for (auto j : r.pieces[i].neighbors)
@@ -271,6 +274,22 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
     sym[i].erase(std::unique(sym[i].begin(), sym[i].end()), sym[i].end());
     r.pieces[i].neighbors = std::move(sym[i]);
   }
+}
+
+FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o) {
+  if (o.pieces == 0) throw std::invalid_argument("--pieces must be at least 1");
+  FractureResult r;
+  MeshClipper clipper(solid_input(mesh, o, r), MeshClipper::MeshCheck::solid);  // analyzed by solid_input
+  clipper.set_time_budget(o.boolean_seconds);
+  r.exact_tiling_checked = r.exact_tiling = o.exact_tiling && o.margin == 0;
+  clipper.set_exact_tally(r.exact_tiling_checked);
+  clipper.set_progress(o.progress);
+  r.input = clipper.mesh();
+  r.mesh_volume = clipper.volume();
+  Level top = fracture_once(clipper, o, o.sites, o.seed, o.pieces, r);
+  r.booleans += top.booleans;
+  r.skipped += top.skipped;
+  resolve_neighbours(fracture_chosen(top, o, r), r);
   return r;
 }
 

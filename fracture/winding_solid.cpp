@@ -63,28 +63,10 @@ int classify(const TriangleMesh& m, std::size_t t, const FastWindingNumber& w, d
   if (in_front == in_behind) return 0;
   return in_behind ? 1 : -1;
 }
-}  // namespace
 
-WindingSolid winding_number_solid(const TriangleMesh& mesh, double seconds) {
-  WindingSolid out;
-  ExactMesh em;
-  surface_mesh_convert::to_mesh(mesh, em);
-  if (em.number_of_faces() != mesh.triangles.size()) {
-    out.why = "not an oriented surface";
-    return out;
-  }
-  try {
-    PMP::experimental::autorefine(em, CGAL::parameters::visitor(DeadlineVisitor<ExactMesh>(seconds)));
-  } catch (const BooleanTimeout&) {
-    out.why = "autorefinement exceeded its time budget of " + std::to_string(static_cast<int>(seconds)) + " s";
-    return out;
-  } catch (const std::exception& e) {
-    out.why = std::string("autorefinement failed: ") + e.what();
-    return out;
-  }
-
-  // The refined faces over vertices merged by exact equality (the two sheets of a
-  // self-intersection curve get the same vertices).
+// The refined faces over vertices merged by exact equality (the two sheets of a
+// self-intersection curve get the same vertices).
+TriangleMesh merged_faces(const ExactMesh& em) {
   std::map<EK::Point_3, std::uint32_t, ExactLess> index;
   TriangleMesh refined;
   for (auto f : em.faces()) {
@@ -101,9 +83,12 @@ WindingSolid winding_number_solid(const TriangleMesh& mesh, double seconds) {
     }
     if (k == 3 && t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) refined.triangles.push_back(t);
   }
-  const std::size_t nt = refined.triangles.size();
+  return refined;
+}
 
-  // Patches: faces joined across edges that have exactly two faces.
+// Patches: faces joined across edges that have exactly two faces, by root face.
+std::map<std::uint32_t, std::vector<std::uint32_t>> patches_of(const TriangleMesh& refined) {
+  const std::size_t nt = refined.triangles.size();
   std::vector<std::pair<std::uint64_t, std::uint32_t>> edges;
   edges.reserve(3 * nt);
   for (std::uint32_t t = 0; t < nt; ++t)
@@ -121,15 +106,21 @@ WindingSolid winding_number_solid(const TriangleMesh& mesh, double seconds) {
   }
   std::map<std::uint32_t, std::vector<std::uint32_t>> patches;
   for (std::uint32_t t = 0; t < nt; ++t) patches[sets.find(t)].push_back(t);
-  out.patches = patches.size();
+  return patches;
+}
 
-  // Each patch classified by its largest faces (majority of up to three decided ones).
+// Each patch classified by its largest faces (majority of up to three decided ones):
+// side[t] = 1 kept, -1 kept reversed, 0 dropped. False (out.why set) when a patch
+// could not be classified.
+bool classify_patches(const TriangleMesh& mesh, const TriangleMesh& refined,
+                      std::map<std::uint32_t, std::vector<std::uint32_t>>& patches, std::vector<int>& side,
+                      WindingSolid& out) {
   const Bvh bvh(mesh);
   const FastWindingNumber w(bvh);
   const Box3 box = bounding_box(mesh);
   const double min_offset = 1e-13 * norm(box.hi - box.lo);
   const double sign = signed_volume(mesh) < 0 ? -1 : 1;
-  std::vector<int> side(nt, 0);
+  side.assign(refined.triangles.size(), 0);
   for (auto& [root, faces] : patches) {
     std::sort(faces.begin(), faces.end(),
               [&](std::uint32_t a, std::uint32_t b) { return refined.triangle_area(a) > refined.triangle_area(b); });
@@ -142,17 +133,21 @@ WindingSolid winding_number_solid(const TriangleMesh& mesh, double seconds) {
     }
     if (decided == 0) {
       out.why = "a patch of " + std::to_string(faces.size()) + " triangles could not be classified";
-      return out;
+      return false;
     }
     const int s = votes[2] >= votes[0] && votes[2] >= votes[1] ? 1 : votes[0] >= votes[1] ? -1 : 0;
     out.kept += s == 1, out.reversed += s == -1;
     for (auto t : faces) side[t] = s;
   }
+  return true;
+}
 
-  // Kept faces, reversed where needed; a face kept twice at the same place (coincident
-  // sheets) stays once if both face the same way, and goes if they face each other.
+// Kept faces into out.mesh, reversed where needed; a face kept twice at the same place
+// (coincident sheets) stays once if both face the same way, and goes if they face each
+// other.
+void keep_faces(const TriangleMesh& refined, const std::vector<int>& side, WindingSolid& out) {
   std::map<std::array<std::uint32_t, 3>, std::vector<std::array<std::uint32_t, 3>>> by_corners;
-  for (std::uint32_t t = 0; t < nt; ++t) {
+  for (std::uint32_t t = 0; t < refined.triangles.size(); ++t) {
     if (side[t] == 0) continue;
     auto tri = refined.triangles[t];
     if (side[t] < 0) std::swap(tri[1], tri[2]);
@@ -179,6 +174,33 @@ WindingSolid winding_number_solid(const TriangleMesh& mesh, double seconds) {
     }
     out.mesh.triangles.push_back(t);
   }
+}
+
+}  // namespace
+
+WindingSolid winding_number_solid(const TriangleMesh& mesh, double seconds) {
+  WindingSolid out;
+  ExactMesh em;
+  surface_mesh_convert::to_mesh(mesh, em);
+  if (em.number_of_faces() != mesh.triangles.size()) {
+    out.why = "not an oriented surface";
+    return out;
+  }
+  try {
+    PMP::experimental::autorefine(em, CGAL::parameters::visitor(DeadlineVisitor<ExactMesh>(seconds)));
+  } catch (const BooleanTimeout&) {
+    out.why = "autorefinement exceeded its time budget of " + std::to_string(static_cast<int>(seconds)) + " s";
+    return out;
+  } catch (const std::exception& e) {
+    out.why = std::string("autorefinement failed: ") + e.what();
+    return out;
+  }
+  const TriangleMesh refined = merged_faces(em);
+  auto patches = patches_of(refined);
+  out.patches = patches.size();
+  std::vector<int> side;
+  if (!classify_patches(mesh, refined, patches, side, out)) return out;
+  keep_faces(refined, side, out);
   out.ok = !out.mesh.triangles.empty();
   if (!out.ok) out.why = "no patch bounds the region of winding number >= 1/2";
   return out;

@@ -3,20 +3,22 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <cctype>
 #include <cerrno>
-#include <cstdio>
-#include <cstdlib>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
-#include <atomic>
 #include <thread>
 
 #include "kernel/exit_guard.hpp"
@@ -133,28 +135,49 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   return pid;
 }
 
-ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& limits) {
-  if (!std::isfinite(limits.timeout_s) || limits.timeout_s <= 0)
-    throw std::invalid_argument("run_child: the timeout must be a positive number of seconds");
-  ChildResult r;
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = spawn_child(args, limits, -1, -1, r.message);
-  if (pid < 0) return r;  // not_started
+namespace {
 
-  int status = 0;
+using Clock = std::chrono::steady_clock;
+
+std::uint64_t file_size_of(const std::string& path) {
+  struct stat st {};
+  return !path.empty() && stat(path.c_str(), &st) == 0 ? static_cast<std::uint64_t>(st.st_size) : 0;
+}
+
+// The last `bytes` of a file ("" when missing).
+std::string tail_of(const std::string& path, std::streamoff bytes) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return "";
+  const std::streamoff size = in.tellg();
+  const std::streamoff from = size > bytes ? size - bytes : 0;
+  in.seekg(from);
+  std::string text(static_cast<std::size_t>(size - from), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  return text;
+}
+
+bool tells_allocation_failure(const std::string& log_path) {
+  return !log_path.empty() && mentions_allocation_failure(tail_of(log_path, 4096));
+}
+
+enum class WaitEnd { ended, timed_out, output_limit, wait_failed };
+
+// Waits for `pid` (the leader of its own group) under `limits`: samples its peak memory
+// and, through `output_bytes`, the size of what it wrote; kills the group at the time
+// limit, at the output cap or on an interrupt request (then throws ChildInterrupted).
+WaitEnd wait_limited(pid_t pid, const ChildLimits& limits, Clock::time_point start, ChildResult& r, int& status,
+                     const std::function<std::uint64_t()>& output_bytes) {
   rusage usage{};
-  bool timed_out = false;
+  WaitEnd end = WaitEnd::ended;
   for (;;) {
     // Sampled before each wait: the last sample is at most one poll interval old.
     r.peak_rss_bytes = std::max(r.peak_rss_bytes, vm_hwm_bytes(pid));
     const pid_t w = wait4(pid, &status, WNOHANG, &usage);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (w == pid) break;
     if (w < 0 && errno != EINTR) {
       kill(-pid, SIGKILL);
-      release_group(pid);
-      r.message = "wait failed";
-      return r;
+      return WaitEnd::wait_failed;
     }
     if (interrupt_requested()) {
       kill(-pid, SIGKILL);
@@ -162,38 +185,152 @@ ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& l
       release_group(pid);
       throw ChildInterrupted();
     }
-    if (r.seconds > limits.timeout_s) {
+    if (r.seconds > limits.timeout_s)
+      end = WaitEnd::timed_out;
+    else if (limits.log_cap_bytes && output_bytes() > limits.log_cap_bytes)
+      end = WaitEnd::output_limit;
+    if (end != WaitEnd::ended) {
       kill(-pid, SIGKILL);
       wait4(pid, &status, 0, &usage);
-      timed_out = true;
       break;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(r.seconds < 0.2 ? 1 : r.seconds < 2 ? 5 : 20));
   }
+  r.maxrss_bytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
+  return end;
+}
+
+// The end of a child waited for by wait_limited: its group released, its status set.
+ChildResult& finish_child(pid_t pid, WaitEnd end, int status, const ChildLimits& limits, ChildResult& r) {
   // The group may hold grandchildren that outlived their parent.
   kill(-pid, SIGKILL);
   release_group(pid);
+  if (end == WaitEnd::wait_failed) {
+    r.status = ChildStatus::not_started;
+    r.message = "wait failed";
+    return r;
+  }
   hold_if_interrupted();
-  if (timed_out) {
+  if (end == WaitEnd::timed_out)
     r.status = ChildStatus::timed_out;
-  } else if (WIFSIGNALED(status)) {
+  else if (end == WaitEnd::output_limit) {
+    r.status = ChildStatus::output_limit;
+    r.message = "killed: wrote more than " + std::to_string(limits.log_cap_bytes >> 20) + " MiB of output";
+  } else
+    classify_child_end(status, limits.log_path, r);
+  return r;
+}
+
+}  // namespace
+
+bool mentions_allocation_failure(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* marker : {"bad_alloc", "memoryerror", "out of memory", "cannot allocate", "memory exhausted"})
+    if (text.find(marker) != std::string::npos) return true;
+  return false;
+}
+
+void classify_child_end(int status, const std::string& log_path, ChildResult& r) {
+  if (WIFSIGNALED(status)) {
     r.status = ChildStatus::signaled;
     r.signal = WTERMSIG(status);
   } else {
     r.status = ChildStatus::exited;
-    r.exit_code = WEXITSTATUS(status);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
-  return r;
+  if (r.status == ChildStatus::signaled && r.signal == SIGKILL) {
+    // Our own kills (time limit, output cap, interrupt) never come here.
+    r.out_of_memory = true;
+    r.message = "killed by SIGKILL, not at the time limit (the out-of-memory killer or a memory limit)";
+  } else if ((r.status == ChildStatus::signaled || r.exit_code != 0) && tells_allocation_failure(log_path)) {
+    r.out_of_memory = true;
+    r.message = "an allocation failed";
+  }
+}
+
+ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& limits) {
+  if (!std::isfinite(limits.timeout_s) || limits.timeout_s <= 0)
+    throw std::invalid_argument("run_child: the timeout must be a positive number of seconds");
+  ChildResult r;
+  const auto start = Clock::now();
+  const pid_t pid = spawn_child(args, limits, -1, -1, r.message);
+  if (pid < 0) return r;  // not_started
+  int status = 0;
+  const WaitEnd end = wait_limited(pid, limits, start, r, status, [&] { return file_size_of(limits.log_path); });
+  return finish_child(pid, end, status, limits, r);
+}
+
+ChildResult run_forked(const std::function<void(int reply_fd)>& body, const ChildLimits& limits, std::string& reply) {
+  if (!std::isfinite(limits.timeout_s) || limits.timeout_s <= 0)
+    throw std::invalid_argument("run_forked: the timeout must be a positive number of seconds");
+  ChildResult r;
+  reply.clear();
+  int fd[2];
+  if (pipe2(fd, O_CLOEXEC) != 0) {
+    r.message = "pipe failed";
+    return r;
+  }
+  prepare_exit_guard();  // its fork handler gives the child its own guard and the parent-death signal
+  std::fflush(nullptr);
+  const auto start = Clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(fd[0]);
+    close(fd[1]);
+    r.message = std::string("fork failed: ") + std::strerror(errno);
+    return r;
+  }
+  if (pid == 0) {
+    close(fd[0]);
+    setpgid(0, 0);
+    if (!limits.log_path.empty()) {
+      const int log = open(limits.log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+      if (log >= 0) dup2(log, 1), dup2(log, 2);
+    }
+    if (limits.memory_bytes) {
+      rlimit m{static_cast<rlim_t>(limits.memory_bytes), static_cast<rlim_t>(limits.memory_bytes)};
+      setrlimit(RLIMIT_AS, &m);
+    }
+    int code = 0;
+    try {
+      body(fd[1]);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      code = 70;
+    }
+    std::fflush(nullptr);
+    _exit(code);
+  }
+  setpgid(pid, pid);  // both sides, so a kill right after the fork reaches the group
+  close(fd[1]);
+  fcntl(fd[0], F_SETFL, O_NONBLOCK);
+  std::uint64_t replied = 0;  // bytes read from the reply pipe, kept or not
+  const auto drain = [&] {
+    char chunk[4096];
+    ssize_t n;
+    while ((n = read(fd[0], chunk, sizeof chunk)) > 0) {
+      replied += static_cast<std::uint64_t>(n);
+      const std::uint64_t kept = reply.size(), cap = limits.log_cap_bytes ? limits.log_cap_bytes : UINT64_MAX;
+      reply.append(chunk, static_cast<std::size_t>(std::min<std::uint64_t>(n, cap - std::min(kept, cap))));
+    }
+    return std::max<std::uint64_t>(replied, file_size_of(limits.log_path));
+  };
+
+  int status = 0;
+  WaitEnd end = WaitEnd::wait_failed;
+  try {
+    end = wait_limited(pid, limits, start, r, status, drain);
+  } catch (...) {
+    close(fd[0]);
+    throw;
+  }
+  drain();
+  close(fd[0]);
+  return finish_child(pid, end, status, limits, r);
 }
 
 std::string last_line_of(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return "";
-  const std::streamoff size = in.tellg();
-  const std::streamoff from = size > 4096 ? size - 4096 : 0;
-  in.seekg(from);
-  std::string text(static_cast<std::size_t>(size - from), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  const std::string text = tail_of(path, 4096);
   std::size_t end = text.find_last_not_of(" \t\r\n");
   if (end == std::string::npos) return "";
   const std::size_t begin = text.rfind('\n', end);

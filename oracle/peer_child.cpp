@@ -12,6 +12,20 @@ std::uint64_t default_peer_memory() {
   return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 2;
 }
 
+namespace {
+
+std::string signal_text(int signal) {
+  const char* s = strsignal(signal);
+  return std::string("signal ") + std::to_string(signal) + " (" + (s ? s : "?") + ")";
+}
+
+// "HEAD: LAST" or whichever of the two is there.
+std::string joined(const std::string& head, const std::string& last) {
+  return head.empty() ? last : last.empty() ? head : head + ": " + last;
+}
+
+}  // namespace
+
 std::optional<Verdict> child_failure(const ChildResult& c, const std::string& log, PeerRun& run,
                                      bool exit4_not_installed) {
   run.wall_seconds = c.seconds;
@@ -24,17 +38,21 @@ std::optional<Verdict> child_failure(const ChildResult& c, const std::string& lo
     case ChildStatus::timed_out:
       run.message = "killed after " + std::to_string(c.seconds).substr(0, 6) + " s";
       return Verdict::hung;
-    case ChildStatus::signaled: {
-      const char* s = strsignal(c.signal);
-      run.message = std::string("signal ") + std::to_string(c.signal) + " (" + (s ? s : "?") + ")";
-      const std::string last = last_line_of(log);
-      if (!last.empty()) run.message += ": " + last;
-      return Verdict::crashed;
-    }
+    case ChildStatus::output_limit: run.message = c.message; return Verdict::refused;
+    case ChildStatus::signaled:
     case ChildStatus::exited:
       break;
   }
   const std::string last = last_line_of(log);
+  if (c.out_of_memory) {
+    run.message =
+        joined(c.status == ChildStatus::signaled ? signal_text(c.signal) : "", last.empty() ? c.message : last);
+    return Verdict::out_of_memory;
+  }
+  if (c.status == ChildStatus::signaled) {
+    run.message = joined(signal_text(c.signal), last);
+    return Verdict::crashed;
+  }
   if (c.exit_code == 0) {
     run.message = last;
     return std::nullopt;

@@ -74,23 +74,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: dtlab_peer PEER IN OUT [THREADS] | dtlab_peer --version PEER\n");
     return 2;
   }
-  try {
+  return run_peer_main([&] {
     const unsigned threads = argc == 5 ? peer_thread_count(argv[4]) : 1;
     const std::vector<Point3> points = read_peer_points(argv[2]);
-    const PeerAnswer a = run(argv[1], points, threads);
-    write_peer_answer(argv[3], a);
-    return 0;
-  } catch (const PeerNotInstalled& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 4;
-  } catch (const PeerRefusal& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 3;
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 3;
-  }
+    write_peer_answer(argv[3], run(argv[1], points, threads));
+  });
 }

@@ -6,6 +6,8 @@
 // PeerNotInstalled. A crash or a hang is not caught: the parent sees it.
 #include <cstdio>
 #include <exception>
+#include <functional>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,6 +22,39 @@ struct PeerRefusal : std::runtime_error {
 struct PeerNotInstalled : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// A helper's exit codes (the parent grades them: oracle/peer_child.hpp).
+enum class PeerExit : int { answered = 0, bad_usage = 2, refused = 3, not_installed = 4 };
+
+// One run of a helper's work (dtlab_peer, dtlab_peer_gmsh, dtlab_voronoi_peer, each
+// request of --serve): its exit code, and `message` (the exception's text, for the last
+// line of stderr or the reply). PeerNotInstalled: not_installed; std::invalid_argument:
+// bad_usage; std::bad_alloc: refused with "out of memory: std::bad_alloc", which the
+// parent grades out-of-memory; any other exception: refused.
+inline int run_peer_work(const std::function<void()>& work, std::string& message) {
+  PeerExit code = PeerExit::answered;
+  message.clear();
+  try {
+    work();
+  } catch (const PeerNotInstalled& e) {
+    message = e.what(), code = PeerExit::not_installed;
+  } catch (const std::invalid_argument& e) {
+    message = e.what(), code = PeerExit::bad_usage;
+  } catch (const std::bad_alloc& e) {
+    message = std::string("out of memory: ") + e.what(), code = PeerExit::refused;
+  } catch (const std::exception& e) {
+    message = e.what(), code = PeerExit::refused;
+  }
+  return static_cast<int>(code);
+}
+
+// run_peer_work with its message on stderr: a one-shot helper's exit code.
+inline int run_peer_main(const std::function<void()>& work) {
+  std::string message;
+  const int code = run_peer_work(work, message);
+  if (!message.empty()) std::fprintf(stderr, "%s\n", message.c_str());
+  return code;
+}
 
 // A helper program's `--version`: the version on stdout and exit 0; exit 4 when the peer
 // is not installed, `error_exit` on any other error (the message on stderr).

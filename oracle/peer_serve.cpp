@@ -12,17 +12,7 @@
 namespace dtlab {
 
 int run_peer_request(const PeerRequest& run, const std::string& in, const std::string& out, std::string& message) {
-  try {
-    run(in, out);
-    message.clear();
-    return 0;
-  } catch (const PeerNotInstalled& e) {
-    message = e.what();
-    return 4;
-  } catch (const std::exception& e) {
-    message = e.what();
-    return 3;
-  }
+  return run_peer_work([&] { run(in, out); }, message);
 }
 
 int serve_peer_requests(const PeerRequest& run) {

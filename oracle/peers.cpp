@@ -21,6 +21,7 @@
 #include "oracle/peer_function.hpp"
 #include "oracle/served_child.hpp"
 #include "oracle/temp_dir.hpp"
+#include "oracle/tetgen_oracle.hpp"
 
 #ifndef DTLAB_PEER_BINARY
 #define DTLAB_PEER_BINARY "dtlab_peer"
@@ -192,32 +193,26 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
   const std::vector<Point3> pts(points.begin(), points.end());
 
   if (spec->runner == Runner::tetgen) {
-    const std::string node = dir.file("in.node");
-    write_node(node, pts);
-    const std::string flags = name == "tetgen-flip" ? "-QzJNFl" : "-QzJNF";
-    const ChildResult c = run_child({options.tetgen, flags, node}, limits);
-    if (auto v = child_failure(c, log, run)) {
+    TetgenOutput t = run_tetgen(pts, options.tetgen, name == "tetgen-flip" ? "-QzJNFl" : "-QzJNF", dir, limits);
+    if (auto v = child_failure(t.child, log, run)) {
       run.verdict = *v;
       return run;
     }
     run.message.clear();  // TetGen prints "Opening in.node." even with -Q
-    PeerAnswer a;
-    a.seconds = c.seconds;
-    const std::string ele = dir.file("in.1.ele");
-    if (std::filesystem::exists(ele)) {
-      try {
-        a.tets = read_ele(ele, 0, pts.size());
-      } catch (const InputError& e) {
-        run.verdict = Verdict::refused;
-        run.message = std::string("unreadable .ele: ") + e.what();
-        return run;
-      }
-    } else {
+    if (!t.read_error.empty()) {
+      run.verdict = Verdict::refused;
+      run.message = "unreadable .ele: " + t.read_error;
+      return run;
+    }
+    if (!t.wrote_ele) {
       // Our input spans a volume (dtlab refuses flat inputs first): no .ele is no answer.
       run.verdict = Verdict::refused;
       run.message = "wrote no .ele (exit 0 without an answer)";
       return run;
     }
+    PeerAnswer a;
+    a.seconds = t.child.seconds;
+    a.tets = std::move(t.tets);
     normalise_answer(points, a, spec->orientation, run);
     if (options.check) judge_answer(run, options.threads);
     return run;

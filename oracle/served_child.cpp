@@ -73,17 +73,19 @@ bool ServedChild::start(ChildResult& r) {
   return true;
 }
 
-void ServedChild::stop(int* status) {
-  if (pid_ < 0) return;
+bool ServedChild::stop(int* status) {
+  if (pid_ < 0) return false;
   if (to_ >= 0) close(to_);  // EOF: a server that is still well ends by itself
   if (from_ >= 0) close(from_);
   to_ = from_ = -1;
   int s = 0;
+  bool killed = false;
   const auto t0 = Clock::now();
   while (waitpid(pid_, &s, WNOHANG) == 0) {
     if (since(t0) > 0.5) {
       kill(-pid_, SIGKILL);
       waitpid(pid_, &s, 0);
+      killed = true;
       break;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
@@ -92,6 +94,7 @@ void ServedChild::stop(int* status) {
   release_group(pid_);
   pid_ = -1;
   if (status) *status = s;
+  return killed;
 }
 
 ChildResult ServedChild::ask(const std::string& request, double timeout_s, std::string& reply) {
@@ -129,16 +132,11 @@ ChildResult ServedChild::ask(const std::string& request, double timeout_s, std::
   r.seconds = since(t0);
   if (!alive) {
     int status = 0;
-    stop(&status);
+    const bool killed = stop(&status);
     if (interrupt_received()) wait_for_interrupt_exit();
-    if (WIFSIGNALED(status)) {
-      r.status = ChildStatus::signaled;
-      r.signal = WTERMSIG(status);
-    } else {
-      r.status = ChildStatus::exited;
-      r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-      if (r.exit_code == 0) r.exit_code = 3;  // ended without answering: no answer
-    }
+    classify_child_end(status, limits_.log_path, r);
+    if (killed) r.out_of_memory = false;  // our SIGKILL: it lingered after closing its reply channel
+    if (r.status == ChildStatus::exited && r.exit_code == 0) r.exit_code = 3;  // ended without answering: no answer
     return r;
   }
   r.peak_rss_bytes = vm_hwm_bytes(pid_);
@@ -154,6 +152,7 @@ ChildResult ServedChild::ask(const std::string& request, double timeout_s, std::
     return r;
   }
   reply = *rest == ' ' ? std::string(rest + 1) : std::string(rest);
+  r.out_of_memory = r.exit_code != 0 && mentions_allocation_failure(reply);
   return r;
 }
 

@@ -36,8 +36,8 @@ class ServedChild {
  private:
   bool start(ChildResult& r);
   // Ends the child (EOF on its stdin, then SIGKILL to its group) and reaps it;
-  // `status` gets its wait status when `reap_status` is set.
-  void stop(int* status = nullptr);
+  // `status` gets its wait status when set; true when it had to be killed.
+  bool stop(int* status = nullptr);
 
   std::vector<std::string> argv_;
   ChildLimits limits_;

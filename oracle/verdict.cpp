@@ -13,6 +13,7 @@ const char* verdict_name(Verdict v) {
     case Verdict::extra_points: return "extra-points";
     case Verdict::crashed: return "crashed";
     case Verdict::hung: return "hung";
+    case Verdict::out_of_memory: return "out-of-memory";
     case Verdict::refused: return "refused";
     case Verdict::not_installed: return "not-installed";
   }
@@ -20,7 +21,8 @@ const char* verdict_name(Verdict v) {
 }
 
 bool no_answer(Verdict v) {
-  return v == Verdict::crashed || v == Verdict::hung || v == Verdict::refused || v == Verdict::not_installed;
+  return v == Verdict::crashed || v == Verdict::hung || v == Verdict::out_of_memory || v == Verdict::refused ||
+         v == Verdict::not_installed;
 }
 
 Verdict verdict_of(const CheckReport& report) {

@@ -18,6 +18,8 @@ enum class Verdict {
   extra_points,    // tets on vertices that are not input points (box corners, ...)
   crashed,         // killed by a signal
   hung,            // killed at the time limit
+  out_of_memory,   // ended for lack of memory: an allocation failed under the memory
+                   // limit (std::bad_alloc, MemoryError, ...) or a SIGKILL not ours
   refused,         // ended with an error and no answer
   not_installed,   // the peer is not on this machine
 };

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "sampling/vec3.hpp"
+#include "sampling/box3.hpp"
 
 namespace dtlab {
 

@@ -117,19 +117,20 @@ std::string MeshReport::summary() const {
   return buf;
 }
 
-MeshReport analyze_mesh(const TriangleMesh& input, std::size_t locations, std::uint64_t self_intersection_limit) {
-  MeshReport r;
-  r.vertices = input.vertices.size();
-  r.triangles = input.triangles.size();
-  MergedMesh merged = merge_duplicate_vertices(input, locations);
-  r.duplicate_vertices = merged.duplicates;
-  r.duplicate_at = std::move(merged.duplicate_at);
-  const TriangleMesh& mesh = merged.mesh;
-  const AdaptivePredicates pred;
+namespace {
+
+// Keeps the first `locations` places of a kind of defect.
+void note_at(std::vector<Point3>& at, const Point3& p, std::size_t locations) {
+  if (at.size() < locations) at.push_back(p);
+}
+
+// Degenerate triangles, boundary, non-manifold and misoriented edges, boundary loops;
+// the corners (3t + k) around one vertex joined across edges shared by exactly two
+// triangles (one fan per vertex on a manifold).
+UnionFind edge_topology(const TriangleMesh& mesh, const AdaptivePredicates& pred, std::size_t locations,
+                        MeshReport& r) {
+  auto note = [&](std::vector<Point3>& at, const Point3& p) { note_at(at, p, locations); };
   auto mid = [&](std::uint32_t a, std::uint32_t b) { return 0.5 * (mesh.vertices[a] + mesh.vertices[b]); };
-  auto note = [&](std::vector<Point3>& at, const Point3& p) {
-    if (at.size() < locations) at.push_back(p);
-  };
   // Every directed edge as (min, max, forward?, triangle) sorted: the uses of one
   // undirected edge become a contiguous run.
   struct HalfEdge {
@@ -190,6 +191,12 @@ MeshReport analyze_mesh(const TriangleMesh& input, std::size_t locations, std::u
   }
   for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v)
     if (on_boundary[v] && boundary.find(v) == v) ++r.boundary_loops;
+  return corners;
+}
+
+// Pinched vertices: more than one fan of corners around them.
+void count_pinched_vertices(const TriangleMesh& mesh, UnionFind& corners, std::size_t locations, MeshReport& r) {
+  auto note = [&](std::vector<Point3>& at, const Point3& p) { note_at(at, p, locations); };
   // Fans: distinct corner roots per vertex.
   std::vector<std::uint32_t> fan_root(mesh.vertices.size(), kNone);
   std::vector<char> pinched(mesh.vertices.size(), 0);
@@ -206,6 +213,13 @@ MeshReport analyze_mesh(const TriangleMesh& input, std::size_t locations, std::u
       }
     }
   }
+}
+
+// Closed, manifold and oriented from the counts; area, volume, box, overflow; the
+// self-intersecting pairs (up to `limit`) and, for a clean closed mesh, nested shells.
+void measure_geometry(const TriangleMesh& mesh, const AdaptivePredicates& pred, std::size_t locations,
+                      std::uint64_t self_intersection_limit, MeshReport& r) {
+  auto note = [&](std::vector<Point3>& at, const Point3& p) { note_at(at, p, locations); };
   r.manifold = r.nonmanifold_edges == 0 && r.nonmanifold_vertices == 0;
   r.closed = r.boundary_edges == 0 && r.nonmanifold_edges == 0 && !mesh.triangles.empty();
   r.oriented = r.misoriented_edges == 0 && r.nonmanifold_edges == 0;
@@ -223,6 +237,22 @@ MeshReport analyze_mesh(const TriangleMesh& input, std::size_t locations, std::u
     note(r.self_intersection_at, (1.0 / 3) * (mesh.corner(s, 0) + mesh.corner(s, 1) + mesh.corner(s, 2)));
   });
   if (r.closed && r.oriented && r.self_intersections == 0 && !r.overflow) r.nested_shells = count_nested_shells(mesh);
+}
+
+}  // namespace
+
+MeshReport analyze_mesh(const TriangleMesh& input, std::size_t locations, std::uint64_t self_intersection_limit) {
+  MeshReport r;
+  r.vertices = input.vertices.size();
+  r.triangles = input.triangles.size();
+  MergedMesh merged = merge_duplicate_vertices(input, locations);
+  r.duplicate_vertices = merged.duplicates;
+  r.duplicate_at = std::move(merged.duplicate_at);
+  const TriangleMesh& mesh = merged.mesh;
+  const AdaptivePredicates pred;
+  UnionFind corners = edge_topology(mesh, pred, locations, r);
+  count_pinched_vertices(mesh, corners, locations, r);
+  measure_geometry(mesh, pred, locations, self_intersection_limit, r);
   return r;
 }
 

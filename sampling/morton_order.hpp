@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "sampling/box3.hpp"
 #include "sampling/parallel.hpp"
-#include "sampling/vec3.hpp"
 
 namespace dtlab {
 

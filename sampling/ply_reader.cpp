@@ -129,15 +129,18 @@ void reject_trailing_data(detail::ByteSource& src, bool binary) {
                      std::to_string(rest.size()) + " bytes after the last element (the header's counts are read)");
 }
 
-}  // namespace
+// The header: the format and the elements with their properties, up to end_header.
+struct PlyHeader {
+  bool binary = false, big = false;
+  std::vector<Element> elements;
+};
 
-TriangleMesh read_ply(const std::string& path) {
-  detail::ByteSource src(path);
+PlyHeader read_ply_header(detail::ByteSource& src, const std::string& path) {
   std::string_view line;
   auto fail = [&](const std::string& why) -> InputError { return InputError(path, src.line(), why); };
   if (!src.next_line(line) || line != "ply") throw fail("not a PLY file: first line must be 'ply'");
-  bool binary = false, big = false, have_format = false;
-  std::vector<Element> elements;
+  PlyHeader h;
+  bool have_format = false;
   for (;;) {
     if (!src.next_line(line)) throw fail("header has no 'end_header'");
     auto tok = split(line);
@@ -145,9 +148,12 @@ TriangleMesh read_ply(const std::string& path) {
     if (tok[0] == "end_header") break;
     if (tok[0] == "format") {
       if (tok.size() != 3) throw fail("expected 'format <kind> 1.0'");
-      if (tok[1] == "ascii") binary = false;
-      else if (tok[1] == "binary_little_endian") binary = true, big = false;
-      else if (tok[1] == "binary_big_endian") binary = true, big = true;
+      if (tok[1] == "ascii")
+        h.binary = false;
+      else if (tok[1] == "binary_little_endian")
+        h.binary = true, h.big = false;
+      else if (tok[1] == "binary_big_endian")
+        h.binary = true, h.big = true;
       else throw fail("unknown PLY format '" + std::string(tok[1]) + "'");
       have_format = true;
     } else if (tok[0] == "element") {
@@ -159,9 +165,9 @@ TriangleMesh read_ply(const std::string& path) {
       // Each element takes at least one byte of the file (ASCII: a digit and a separator).
       if (count > static_cast<double>(src.size())) throw fail("element count too large: " + quote_token(tok[2]));
       e.count = static_cast<long>(count);
-      elements.push_back(std::move(e));
+      h.elements.push_back(std::move(e));
     } else if (tok[0] == "property") {
-      if (elements.empty()) throw fail("property before any element");
+      if (h.elements.empty()) throw fail("property before any element");
       Property p;
       if (tok.size() == 5 && tok[1] == "list") {
         p.is_list = true;
@@ -174,13 +180,23 @@ TriangleMesh read_ply(const std::string& path) {
       } else {
         throw fail("expected 'property <type> <name>' or 'property list <type> <type> <name>'");
       }
-      elements.back().props.push_back(std::move(p));
+      h.elements.back().props.push_back(std::move(p));
     } else {
       throw fail("unknown header keyword '" + std::string(tok[0]) + "'");
     }
   }
   if (!have_format) throw fail("header has no 'format' line");
 
+  return h;
+}
+
+}  // namespace
+
+TriangleMesh read_ply(const std::string& path) {
+  detail::ByteSource src(path);
+  const PlyHeader header = read_ply_header(src, path);
+  const bool binary = header.binary, big = header.big;
+  const std::vector<Element>& elements = header.elements;
   TriangleMesh mesh;
   PlyData in(src, binary, big);
   std::vector<long> poly;

@@ -1,6 +1,6 @@
 #pragma once
 // Point-triangle and ray-triangle geometry in floating point, for the samplers.
-#include "sampling/vec3.hpp"
+#include "sampling/box3.hpp"
 
 namespace dtlab {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "predicates/point.hpp"
-#include "sampling/vec3.hpp"
+#include "sampling/box3.hpp"
 
 namespace dtlab {
 

@@ -48,17 +48,17 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
     Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
     for (auto k = b + 1; k + 1 < e; ++k)
-      n = vadd(n, vcross(vsub(c.vertices[c.face_vertices[k]], o), vsub(c.vertices[c.face_vertices[k + 1]], o)));
-    const double area2 = vnorm(n);
+      n = n + cross(c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
+    const double area2 = norm(n);
     if (area2 <= tol * tol) {
       if (skip_tiny) continue;
       return "zero-area face";
     }
-    n = vscale(1.0 / area2, n);
+    n = 1.0 / area2 * n;
     for (auto k = b; k < e; ++k)
-      if (std::abs(vdot(n, vsub(c.vertices[c.face_vertices[k]], o))) > tol) return "non-planar face";
+      if (std::abs(dot(n, c.vertices[c.face_vertices[k]] - o)) > tol) return "non-planar face";
     for (const auto& p : c.vertices)
-      if (vdot(n, vsub(p, o)) > tol) return "not convex";
+      if (dot(n, p - o) > tol) return "not convex";
   }
   return {};
 }
@@ -70,7 +70,7 @@ inline std::string check_cell(const VoronoiCell& c, double tol) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
     for (auto k = b; k < e; ++k) {
       const auto u = c.face_vertices[k], v = c.face_vertices[k + 1 < e ? k + 1 : b];
-      if (vor::vnorm(vor::vsub(c.vertices[u], c.vertices[v])) <= tol) return "zero-length edge";
+      if (norm(c.vertices[u] - c.vertices[v]) <= tol) return "zero-length edge";
     }
   }
   return check_cell_convex(c, tol);

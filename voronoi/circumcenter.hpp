@@ -1,6 +1,6 @@
 #pragma once
 // Circumcentres of tetrahedra: the Voronoi vertices of a Delaunay tetrahedralization.
-#include "voronoi/vec.hpp"
+#include "voronoi/box.hpp"
 
 namespace dtlab::vor {
 
@@ -12,12 +12,12 @@ namespace dtlab::vor {
 // `condition` returns |u||v||w| / |u.(v x w)|, the relative error amplification.
 inline Point3 circumcenter(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                            double* condition = nullptr) {
-  const Point3 u = vsub(b, a), v = vsub(c, a), w = vsub(d, a);
-  const Point3 vw = vcross(v, w), wu = vcross(w, u), uv = vcross(u, v);
-  const double den = 2 * vdot(u, vw);
-  if (condition) *condition = 2 * vnorm(u) * vnorm(v) * vnorm(w) / std::abs(den);
-  const Point3 num = vadd(vadd(vscale(vdot(u, u), vw), vscale(vdot(v, v), wu)), vscale(vdot(w, w), uv));
-  return vadd(a, vscale(1.0 / den, num));
+  const Point3 u = b - a, v = c - a, w = d - a;
+  const Point3 vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
+  const double den = 2 * dot(u, vw);
+  if (condition) *condition = 2 * norm(u) * norm(v) * norm(w) / std::abs(den);
+  const Point3 num = dot(u, u) * vw + dot(v, v) * wu + dot(w, w) * uv;
+  return a + 1.0 / den * num;
 }
 
 }  // namespace dtlab::vor

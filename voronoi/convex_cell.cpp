@@ -28,7 +28,7 @@ void ConvexCell::assign(std::span<const Point3> vertices, std::span<const std::u
                         std::span<const std::uint32_t> face_vertices, std::span<const std::int32_t> tags,
                         const Point3& origin) {
   v_.clear();
-  for (const auto& p : vertices) v_.push_back(vsub(p, origin));
+  for (const auto& p : vertices) v_.push_back(p - origin);
   fo_.assign(face_offsets.begin(), face_offsets.end());
   fv_.assign(face_vertices.begin(), face_vertices.end());
   face_tag_.assign(tags.begin(), tags.end());
@@ -54,10 +54,10 @@ bool ConvexCell::clip(const Point3& n, double c, std::int32_t tag, double tol) {
   const std::size_t nv = v_.size();
   d_.resize(nv);
   side_.resize(nv);
-  const double band = tol * vnorm(n);
+  const double band = tol * norm(n);
   bool any_out = false, any_in = false;
   for (std::size_t i = 0; i < nv; ++i) {
-    const double d = vdot(n, v_[i]) - c;
+    const double d = dot(n, v_[i]) - c;
     d_[i] = d;
     const signed char s = d > band ? 1 : (d < -band ? -1 : 0);
     side_[i] = s;
@@ -178,18 +178,17 @@ void ConvexCell::build_cap(std::int32_t tag) {
     poly_.erase(std::unique(poly_.begin(), poly_.end()), poly_.end());
     if (poly_.size() < 3) return;
     Point3 c{0, 0, 0};
-    for (auto i : poly_) c = vadd(c, nv_[i]);
-    c = vscale(1.0 / poly_.size(), c);
+    for (auto i : poly_) c = c + nv_[i];
+    c = 1.0 / poly_.size() * c;
     // The face normal from the loop edges (all of them orient the cap the same way).
     Point3 nrm{0, 0, 0};
-    for (std::size_t i = 0; i < k; ++i)
-      nrm = vadd(nrm, vcross(vsub(nv_[cap_from_[i]], c), vsub(nv_[cap_to_[i]], c)));
-    Point3 u = vsub(nv_[poly_[0]], c);
-    Point3 w = vcross(nrm, u);
+    for (std::size_t i = 0; i < k; ++i) nrm = nrm + cross(nv_[cap_from_[i]] - c, nv_[cap_to_[i]] - c);
+    Point3 u = nv_[poly_[0]] - c;
+    Point3 w = cross(nrm, u);
     std::vector<std::pair<double, std::uint32_t>> ang;
     for (auto i : poly_) {
-      const Point3 r = vsub(nv_[i], c);
-      ang.push_back({std::atan2(vdot(r, w), vdot(r, u) * vnorm(nrm)), i});
+      const Point3 r = nv_[i] - c;
+      ang.push_back({std::atan2(dot(r, w), dot(r, u) * norm(nrm)), i});
     }
     std::sort(ang.begin(), ang.end());
     for (std::size_t i = 0; i < ang.size(); ++i) poly_[i] = ang[i].second;
@@ -206,9 +205,8 @@ double ConvexCell::volume() const {
   double vol = 0;
   for (std::size_t f = 0; f < face_count(); ++f) {
     auto fv = face(f);
-    const Point3 a = vsub(v_[fv[0]], o);
-    for (std::size_t k = 1; k + 1 < fv.size(); ++k)
-      vol += det3(a, vsub(v_[fv[k]], o), vsub(v_[fv[k + 1]], o));
+    const Point3 a = v_[fv[0]] - o;
+    for (std::size_t k = 1; k + 1 < fv.size(); ++k) vol += det3(a, v_[fv[k]] - o, v_[fv[k + 1]] - o);
   }
   return vol / 6;
 }
@@ -220,19 +218,19 @@ Point3 ConvexCell::centroid() const {
   Point3 m{0, 0, 0};
   for (std::size_t f = 0; f < face_count(); ++f) {
     auto fv = face(f);
-    const Point3 a = vsub(v_[fv[0]], o);
+    const Point3 a = v_[fv[0]] - o;
     for (std::size_t k = 1; k + 1 < fv.size(); ++k) {
-      const Point3 b = vsub(v_[fv[k]], o), c = vsub(v_[fv[k + 1]], o);
+      const Point3 b = v_[fv[k]] - o, c = v_[fv[k + 1]] - o;
       const double w = det3(a, b, c);
       vol += w;
-      m = vadd(m, vscale(w, vadd(vadd(a, b), c)));
+      m = m + w * (a + b + c);
     }
   }
-  return vadd(o, vscale(1.0 / (4 * vol), m));
+  return o + 1.0 / (4 * vol) * m;
 }
 
 void ConvexCell::translate(const Point3& t) {
-  for (auto& p : v_) p = vadd(p, t);
+  for (auto& p : v_) p = p + t;
 }
 
 }  // namespace dtlab::vor

@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-#include "voronoi/vec.hpp"
+#include "voronoi/box.hpp"
 
 namespace dtlab::vor {
 

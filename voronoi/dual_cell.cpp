@@ -14,8 +14,8 @@ namespace {
 constexpr int kLink[4][3] = {{2, 1, 3}, {0, 2, 3}, {1, 0, 3}, {0, 1, 2}};
 
 double dist2(const Point3& a, const Point3& b) {
-  const Point3 d = vsub(a, b);
-  return vdot(d, d);
+  const Point3 d = a - b;
+  return dot(d, d);
 }
 }  // namespace
 
@@ -48,18 +48,7 @@ std::uint32_t DualCellBuilder::find(std::uint32_t t) {
   return t;
 }
 
-bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star,
-                            std::span<const Tet> tets, std::span<const Point3> cc,
-                            std::span<const char> bad, double band, double min_edge,
-                            CellBuffer& out) {
-  prefetch_ = cc.data();
-  const bool ok = gather(v, star, tets, bad);
-  prefetch_ = nullptr;
-  if (!ok) return false;
-  const std::size_t nl = global_.size(), nt = star.size();
-  // Link Euler characteristic: a closed sphere has V - E + F = 2 with E = 3F/2.
-  if (nt < 4 || 2 * nl != nt + 4) return false;
-
+bool DualCellBuilder::link_rings(std::size_t nl, std::size_t nt) {
   coff_.assign(nl + 1, 0);
   for (auto a : tri_) ++coff_[a + 1];
   for (std::size_t a = 0; a < nl; ++a) coff_[a + 1] += coff_[a];
@@ -101,22 +90,17 @@ bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star
     }
     roff_.push_back(static_cast<std::uint32_t>(ring_.size()));
   }
+  return true;
+}
 
-  // Without coincident centres the cell's vertices are the link triangles' centres,
-  // one each, in link triangle order: write them straight into the output.
-  out.vertices.resize(nt);
-  for (std::uint32_t t = 0; t < nt; ++t) out.vertices[t] = cc[star[t]];
-  const Point3* c = out.vertices.data();
-
-  // Merge coincident circumcentres of neighbouring link triangles. Consecutive ring
-  // entries are the cell's edges (each seen from both of its faces), so the same pass
-  // finds the shortest edge.
+DualCellBuilder::Merge DualCellBuilder::merge_close_centres(std::size_t nl, std::size_t nt, const Point3* c,
+                                                            double band, double min_edge) {
   const double band2 = band * band, min2 = min_edge * min_edge;
   bool merged = false;
   double shortest = INFINITY;
   for (std::uint32_t a = 0; a < nl; ++a) {
     const std::uint32_t b = roff_[a], e = roff_[a + 1];
-    if (e - b < 3) return false;
+    if (e - b < 3) return Merge::failed;
     for (auto k = b; k < e; ++k) {
       const std::uint32_t s = ring_[k], t = ring_[k + 1 < e ? k + 1 : b];
       const double d = dist2(c[s], c[t]);
@@ -132,21 +116,25 @@ bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star
       }
     }
   }
-  if (!merged) {
-    if (shortest <= min2) return false;
-    // The ring runs clockwise seen from outside the cell: emit it backwards.
-    out.face_offsets.assign(roff_.begin(), roff_.end());
-    out.face_vertices.resize(ring_.size());
-    out.face_neighbor.resize(nl);
-    for (std::uint32_t a = 0; a < nl; ++a) {
-      const std::uint32_t b = roff_[a], e = roff_[a + 1];
-      for (auto k = b; k < e; ++k) out.face_vertices[b + (e - 1 - k)] = ring_[k];
-      out.face_neighbor[a] = static_cast<std::int32_t>(global_[a]);
-    }
-    return true;
-  }
-  lcc_.assign(out.vertices.begin(), out.vertices.end());
+  if (merged) return Merge::merged;
+  return shortest <= min2 ? Merge::failed : Merge::none;
+}
 
+void DualCellBuilder::emit_rings(std::size_t nl, CellBuffer& out) const {
+  // The ring runs clockwise seen from outside the cell: emit it backwards.
+  out.face_offsets.assign(roff_.begin(), roff_.end());
+  out.face_vertices.resize(ring_.size());
+  out.face_neighbor.resize(nl);
+  for (std::uint32_t a = 0; a < nl; ++a) {
+    const std::uint32_t b = roff_[a], e = roff_[a + 1];
+    for (auto k = b; k < e; ++k) out.face_vertices[b + (e - 1 - k)] = ring_[k];
+    out.face_neighbor[a] = static_cast<std::int32_t>(global_[a]);
+  }
+}
+
+bool DualCellBuilder::emit_merged_rings(std::size_t nl, std::size_t nt, double min_edge, CellBuffer& out) {
+  const double min2 = min_edge * min_edge;
+  lcc_.assign(out.vertices.begin(), out.vertices.end());
   out.vertices.clear();
   out.vertices.reserve(nt);
   out.face_offsets.reserve(nl + 1);
@@ -190,24 +178,49 @@ bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star
     out.face_offsets.push_back(static_cast<std::uint32_t>(out.face_vertices.size()));
     out.face_neighbor.push_back(static_cast<std::int32_t>(global_[a]));
   }
-  {
-    const long f = static_cast<long>(out.face_neighbor.size());
-    if (f < 4 || long(out.vertices.size()) - long(out.face_vertices.size() / 2) + f != 2) return false;
-    // Closed and oriented: every directed edge once, its reverse once.
-    edges_.clear();
-    for (std::size_t g = 0; g + 1 < out.face_offsets.size(); ++g) {
-      const auto b = out.face_offsets[g], e = out.face_offsets[g + 1];
-      for (auto k = b; k < e; ++k)
-        edges_.push_back((std::uint64_t(out.face_vertices[k]) << 32) | out.face_vertices[k + 1 < e ? k + 1 : b]);
-    }
-    std::sort(edges_.begin(), edges_.end());
-    for (std::size_t k = 0; k < edges_.size(); ++k) {
-      if (k && edges_[k] == edges_[k - 1]) return false;
-      const std::uint64_t rev = (edges_[k] << 32) | (edges_[k] >> 32);
-      if (!std::binary_search(edges_.begin(), edges_.end(), rev)) return false;
-    }
+  return true;
+}
+
+bool DualCellBuilder::closed_and_oriented(const CellBuffer& out) {
+  const long f = static_cast<long>(out.face_neighbor.size());
+  if (f < 4 || long(out.vertices.size()) - long(out.face_vertices.size() / 2) + f != 2) return false;
+  // Every directed edge once, its reverse once.
+  edges_.clear();
+  for (std::size_t g = 0; g + 1 < out.face_offsets.size(); ++g) {
+    const auto b = out.face_offsets[g], e = out.face_offsets[g + 1];
+    for (auto k = b; k < e; ++k)
+      edges_.push_back((std::uint64_t(out.face_vertices[k]) << 32) | out.face_vertices[k + 1 < e ? k + 1 : b]);
+  }
+  std::sort(edges_.begin(), edges_.end());
+  for (std::size_t k = 0; k < edges_.size(); ++k) {
+    if (k && edges_[k] == edges_[k - 1]) return false;
+    const std::uint64_t rev = (edges_[k] << 32) | (edges_[k] >> 32);
+    if (!std::binary_search(edges_.begin(), edges_.end(), rev)) return false;
   }
   return true;
+}
+
+bool DualCellBuilder::build(std::uint32_t v, std::span<const std::uint32_t> star, std::span<const Tet> tets,
+                            std::span<const Point3> cc, std::span<const char> bad, double band, double min_edge,
+                            CellBuffer& out) {
+  prefetch_ = cc.data();
+  const bool ok = gather(v, star, tets, bad);
+  prefetch_ = nullptr;
+  if (!ok) return false;
+  const std::size_t nl = global_.size(), nt = star.size();
+  // Link Euler characteristic: a closed sphere has V - E + F = 2 with E = 3F/2.
+  if (nt < 4 || 2 * nl != nt + 4) return false;
+  if (!link_rings(nl, nt)) return false;
+  // Without coincident centres the cell's vertices are the link triangles' centres,
+  // one each, in link triangle order: write them straight into the output.
+  out.vertices.resize(nt);
+  for (std::uint32_t t = 0; t < nt; ++t) out.vertices[t] = cc[star[t]];
+  switch (merge_close_centres(nl, nt, out.vertices.data(), band, min_edge)) {
+    case Merge::failed: return false;
+    case Merge::none: emit_rings(nl, out); return true;
+    case Merge::merged: break;
+  }
+  return emit_merged_rings(nl, nt, min_edge, out) && closed_and_oriented(out);
 }
 
 }  // namespace dtlab::vor

@@ -44,6 +44,20 @@ class DualCellBuilder {
 
  private:
   std::uint32_t find(std::uint32_t t);
+  // The stages of build, after gather. Walks each link vertex's ring of link triangles
+  // (ring_, roff_); false when the link is no closed sphere (a hull site).
+  bool link_rings(std::size_t nl, std::size_t nt);
+  // Unites the link triangles whose centres `c` lie within `band` along a ring edge
+  // (parent_); failed: a ring of fewer than 3 or, unmerged, an edge within min_edge.
+  enum class Merge { none, merged, failed };
+  Merge merge_close_centres(std::size_t nl, std::size_t nt, const Point3* c, double band, double min_edge);
+  // The faces of an unmerged cell: each ring backwards (counter-clockwise from outside).
+  void emit_rings(std::size_t nl, CellBuffer& out) const;
+  // The faces of a merged cell over one vertex per merged group; false when a face
+  // degenerates (fewer than 3 corners, a corner twice, an edge within min_edge).
+  bool emit_merged_rings(std::size_t nl, std::size_t nt, double min_edge, CellBuffer& out);
+  // Euler characteristic 2 and every directed edge once with its reverse.
+  bool closed_and_oriented(const CellBuffer& out);
 
   std::vector<std::uint32_t> local_;   // global vertex id -> local id, kNone when unused
   std::vector<std::uint32_t> global_;  // local -> global

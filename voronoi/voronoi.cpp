@@ -52,8 +52,8 @@ Adjacency delaunay_neighbors(const Tetrahedralization& dt) {
     e = std::unique(b, e);
     row.clear();
     for (auto it = b; it != e; ++it) {
-      const Point3 d = vsub(dt.points[*it], dt.points[v]);
-      row.push_back({vdot(d, d), *it});
+      const Point3 d = dt.points[*it] - dt.points[v];
+      row.push_back({dot(d, d), *it});
     }
     std::sort(row.begin(), row.end());
     for (auto& r : row) a.adj.push_back(r.second);
@@ -82,7 +82,7 @@ Box default_box(std::span<const Point3> sites, double margin) {
     b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
   }
   // A flat input (all sites on a plane or line) still gets a box with volume.
-  const Point3 e = vsub(b.hi, b.lo);
+  const Point3 e = b.hi - b.lo;
   const double big = std::max({e.x, e.y, e.z, 1.0});
   auto grow = [&](double& lo, double& hi, double ext) {
     const double g = ext > 0 ? margin * ext : margin * big;
@@ -99,12 +99,12 @@ void compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t
                   std::span<const std::uint32_t> neighbors, const Box& box, double tol,
                   double shrink) {
   const Point3 s = sites[i];
-  cell.reset({vsub(box.lo, s), vsub(box.hi, s)});
+  cell.reset({box.lo - s, box.hi - s});
   const double band = tol * box.diagonal();
   for (auto j : neighbors) {
     // Bisector of s and sites[j], relative to s: n.x <= |n|^2 / 2 with n = p_j - s.
-    const Point3 n = vsub(sites[j], s);
-    cell.clip(n, 0.5 * vdot(n, n) - shrink * vnorm(n), static_cast<std::int32_t>(j), band);
+    const Point3 n = sites[j] - s;
+    cell.clip(n, 0.5 * dot(n, n) - shrink * norm(n), static_cast<std::int32_t>(j), band);
     if (cell.empty()) break;
   }
   cell.translate(s);
@@ -126,8 +126,8 @@ std::vector<std::int64_t> find_duplicates(std::span<const Point3> p) {
 
 void sort_by_distance(std::span<const Point3> p, std::uint32_t v, std::vector<std::uint32_t>& row) {
   std::sort(row.begin(), row.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const Point3 da = vsub(p[a], p[v]), db = vsub(p[b], p[v]);
-    const double la = vdot(da, da), lb = vdot(db, db);
+    const Point3 da = p[a] - p[v], db = p[b] - p[v];
+    const double la = dot(da, da), lb = dot(db, db);
     return la < lb || (la == lb && a < b);
   });
 }
@@ -158,16 +158,16 @@ void measure(const CellBuffer& c, const Point3& o, VoronoiCell& out) {
   Point3 m{0, 0, 0};
   for (std::size_t f = 0; f + 1 < c.face_offsets.size(); ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
-    const Point3 a = vsub(c.vertices[c.face_vertices[b]], o);
+    const Point3 a = c.vertices[c.face_vertices[b]] - o;
     for (auto k = b + 1; k + 1 < e; ++k) {
-      const Point3 p = vsub(c.vertices[c.face_vertices[k]], o), q = vsub(c.vertices[c.face_vertices[k + 1]], o);
+      const Point3 p = c.vertices[c.face_vertices[k]] - o, q = c.vertices[c.face_vertices[k + 1]] - o;
       const double w = det3(a, p, q);
       vol += w;
-      m = vadd(m, vscale(w, vadd(vadd(a, p), q)));
+      m = m + w * (a + p + q);
     }
   }
   out.volume = vol / 6;
-  out.centroid = vol != 0 ? vadd(o, vscale(1.0 / (4 * vol), m)) : o;
+  out.centroid = vol != 0 ? o + 1.0 / (4 * vol) * m : o;
 }
 
 // The tets with vertices renamed by rank, in a stable counting sort by their lowest
@@ -195,27 +195,222 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 // dual cell (error ~ condition * 1e-16 of the tet size).
 constexpr double kMaxCondition = 1e4;
 
+bool finite(const Point3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+// Stage 1: refuses sites, a margin or a box that no cell could be computed from.
+void check_voronoi_input(std::span<const Point3> sites, const VoronoiOptions& o) {
+  if (sites.empty()) throw std::invalid_argument("no sites");
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    if (!finite(sites[i]))
+      throw std::invalid_argument("voronoi: site " + std::to_string(i) + " has a non-finite coordinate");
+  if (!(std::isfinite(o.margin) && o.margin >= 0)) throw std::invalid_argument("voronoi: margin must be finite and >= 0");
+  if (o.box && !(finite(o.box->lo) && finite(o.box->hi)))
+    throw std::invalid_argument("voronoi: the box has a non-finite coordinate");
+}
+
+// Stage 2 when the DT has no volume (fewer than four distinct or coplanar sites):
+// every other site is a candidate neighbour of each cell.
+void all_pairs_cells(std::span<const Point3> sites, const std::vector<std::int64_t>& dup, const VoronoiOptions& o,
+                     VoronoiDiagram& vd) {
+  if (sites.size() > 4096) throw std::runtime_error("coplanar input too large for all-pairs cells");
+  ConvexCell cell;
+  std::vector<std::uint32_t> row;
+  auto storage = std::make_shared<std::vector<CellArena>>(1);
+  for (std::uint32_t v = 0; v < sites.size(); ++v) {
+    if (dup[v] >= 0) {
+      vd.cells[v].duplicate_of = dup[v];
+      continue;
+    }
+    row.clear();
+    for (std::uint32_t w = 0; w < sites.size(); ++w)
+      if (w != v && dup[w] < 0) row.push_back(w);
+    sort_by_distance(sites, v, row);
+    compute_cell(cell, sites, v, row, vd.box, o.tolerance, o.shrink);
+    store(storage->front(), cell, vd.cells[v]);
+  }
+  vd.storage = std::move(storage);
+  vd.clipped = sites.size();
+}
+
+// The DT renumbered for locality: cells in the order of their first tet (the tets come
+// out of the DT in spatial, insertion order, so neighbouring cells are near each other;
+// sites in no tet, the duplicates, go last), sites by that rank, and tets in the order
+// the cells first reach them, so that the stars, tets and centres of consecutive cells
+// lie in nearby memory instead of all over the mesh.
+struct RankedDelaunay {
+  std::vector<std::uint32_t> order;  // site of each rank
+  std::vector<Tet> tets;             // over ranks
+  std::vector<Point3> sites;         // by rank
+  std::vector<char> duplicate;       // by rank
+};
+
+// Stage 3: ranks the sites and sorts the tets (consumes `tets`).
+RankedDelaunay rank_by_first_cell(std::vector<Tet>& tets, std::span<const Point3> sites,
+                                  const std::vector<std::int64_t>& dup) {
+  const std::size_t n = sites.size();
+  RankedDelaunay r;
+  r.order.reserve(n);
+  std::vector<std::uint32_t> rank(n, kNone);
+  for (const auto& q : tets)
+    for (auto v : q)
+      if (rank[v] == kNone) rank[v] = static_cast<std::uint32_t>(r.order.size()), r.order.push_back(v);
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (rank[v] == kNone) r.order.push_back(v);
+  r.tets = sort_by_first_cell(tets, rank);
+  std::vector<std::uint32_t>().swap(rank);
+  tets = {};
+  r.sites.resize(n);
+  r.duplicate.resize(n);
+  for (std::size_t k = 0; k < n; ++k) r.sites[k] = sites[r.order[k]], r.duplicate[k] = dup[r.order[k]] >= 0;
+  return r;
+}
+
+// Every vertex's star and every tet's circumcentre (with whether it is too
+// ill-conditioned to trust).
+struct StarsAndCentres {
+  std::vector<std::uint32_t> star_off, star;
+  std::vector<Point3> centre;
+  std::vector<char> bad;
+};
+
+// Stage 4: the stars (one task) while other workers compute the circumcentres (chunks
+// of 4096 tets); with one thread, one after the other.
+StarsAndCentres stars_and_centres(const RankedDelaunay& dt, unsigned threads) {
+  const std::vector<Tet>& tets = dt.tets;
+  StarsAndCentres sc;
+  sc.centre.resize(tets.size());
+  sc.bad.resize(tets.size());
+  constexpr std::size_t kChunk = 4096;
+  parallel_chunks(1 + (tets.size() + kChunk - 1) / kChunk, threads, 1, [&](std::size_t job, std::size_t, unsigned) {
+    if (job == 0) return vertex_stars(dt.sites.size(), tets, sc.star_off, sc.star);
+    for (std::size_t t = (job - 1) * kChunk, e = std::min(tets.size(), job * kChunk); t < e; ++t) {
+      const Tet& q = tets[t];
+      double cond = 0;
+      sc.centre[t] = circumcenter(dt.sites[q[0]], dt.sites[q[1]], dt.sites[q[2]], dt.sites[q[3]], &cond);
+      sc.bad[t] = !(cond <= kMaxCondition);
+    }
+  });
+  return sc;
+}
+
+// A worker's reusable state for stage 5.
+struct CellScratch {
+  explicit CellScratch(std::size_t n) : builder(n) {}
+  DualCellBuilder builder;
+  ConvexCell cell;
+  std::vector<std::uint32_t> row;
+  CellBuffer buffer;
+  CellArena arena;
+};
+
+// The box walls a dual cell crosses strictly (beyond the band): bit 2k the low wall of
+// axis k, bit 2k+1 the high one.
+int crossed_walls(const CellBuffer& buf, const Box& box, double band) {
+  int walls = 0;
+  for (const auto& p : buf.vertices) {
+    walls |= (p.x < box.lo.x - band) << 0 | (p.x > box.hi.x + band) << 1;
+    walls |= (p.y < box.lo.y - band) << 2 | (p.y > box.hi.y + band) << 3;
+    walls |= (p.z < box.lo.z - band) << 4 | (p.z > box.hi.z + band) << 5;
+  }
+  return walls;
+}
+
+// The dual cell in `sc.buffer` (site s) clipped by the walls it crosses, into `out`.
+void clip_dual_to_walls(CellScratch& sc, const Point3& s, int walls, const Box& box, double tolerance,
+                        VoronoiCell& out) {
+  ConvexCell& cell = sc.cell;
+  const CellBuffer& buf = sc.buffer;
+  cell.assign(buf.vertices, buf.face_offsets, buf.face_vertices, buf.face_neighbor, s);
+  const Point3 lo = box.lo - s, hi = box.hi - s;
+  const Point3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const double los[3] = {lo.x, lo.y, lo.z}, his[3] = {hi.x, hi.y, hi.z};
+  for (int k = 0; k < 3 && !cell.empty(); ++k) {
+    if (walls >> (2 * k) & 1) cell.clip(-1 * axis[k], -los[k], -1 - 2 * k, tolerance * box.diagonal());
+    if (walls >> (2 * k + 1) & 1) cell.clip(axis[k], his[k], -2 - 2 * k, tolerance * box.diagonal());
+  }
+  cell.translate(s);
+  store(sc.arena, cell, out);
+}
+
+// What stage 5 did with one cell.
+enum class CellPath { duplicate, dual, dual_box_clipped, clipped };
+
+// Stage 5, one cell (rank rk): the dual of its star when it can be trusted (clipped by
+// the box walls it crosses), else clipped from the bisectors of its DT neighbours.
+CellPath one_cell(std::size_t rk, std::span<const Point3> sites, const std::vector<std::int64_t>& dup,
+                  const RankedDelaunay& dt, const StarsAndCentres& sc, const VoronoiOptions& o, double band,
+                  CellScratch& scratch, VoronoiDiagram& vd) {
+  const std::uint32_t i = dt.order[rk];
+  VoronoiCell& out = vd.cells[i];
+  const auto r = static_cast<std::uint32_t>(rk);
+  const std::span<const std::uint32_t> st(sc.star.data() + sc.star_off[r], sc.star_off[r + 1] - sc.star_off[r]);
+  if (dt.duplicate[r]) {
+    out.duplicate_of = dup[i];
+    return CellPath::duplicate;
+  }
+  const Point3 s = dt.sites[r];
+  const bool dual_ok = o.shrink == 0;
+  CellBuffer& buf = scratch.buffer;
+  if (dual_ok && scratch.builder.build(r, st, dt.tets, sc.centre, sc.bad, band, 1e4 * band, buf)) {
+    for (auto& f : buf.face_neighbor) f = static_cast<std::int32_t>(dt.order[f]);
+    const int walls = crossed_walls(buf, vd.box, band);
+    if (!walls) {
+      measure(buf, s, out);
+      store(scratch.arena, buf.vertices, buf.face_offsets, buf.face_vertices, buf.face_neighbor, out);
+      return CellPath::dual;
+    }
+    clip_dual_to_walls(scratch, s, walls, vd.box, o.tolerance, out);
+    return CellPath::dual_box_clipped;
+  }
+  if (!dual_ok) scratch.builder.gather(r, st, dt.tets, sc.bad);
+  scratch.row.clear();
+  for (auto w : scratch.builder.neighbors()) scratch.row.push_back(dt.order[w]);
+  sort_by_distance(sites, i, scratch.row);
+  compute_cell(scratch.cell, sites, i, scratch.row, vd.box, o.tolerance, o.shrink);
+  store(scratch.arena, scratch.cell, out);
+  return CellPath::clipped;
+}
+
+// Stage 5: every cell, in rank order, in chunks over the threads; the cells' storage
+// (one arena per worker) then goes to the diagram.
+void dual_cells(std::span<const Point3> sites, const std::vector<std::int64_t>& dup, const RankedDelaunay& dt,
+                const StarsAndCentres& sc, const VoronoiOptions& o, unsigned threads, VoronoiDiagram& vd) {
+  const double band = o.tolerance * vd.box.diagonal();
+  std::atomic<std::size_t> clipped{0}, box_clipped{0};
+  std::vector<std::unique_ptr<CellScratch>> scratch(threads);
+  parallel_chunks(sites.size(), threads, 256, [&](std::size_t b, std::size_t e, unsigned w) {
+    if (!scratch[w]) scratch[w] = std::make_unique<CellScratch>(sites.size());
+    std::size_t n_clip = 0, n_box = 0;
+    for (std::size_t k = b; k < e; ++k) {
+      // The cells are stored by site id, in no spatial order: fetch the next one early.
+      if (k + 1 < e) __builtin_prefetch(&vd.cells[dt.order[k + 1]], 1);
+      const CellPath path = one_cell(k, sites, dup, dt, sc, o, band, *scratch[w], vd);
+      n_clip += path == CellPath::clipped;
+      n_box += path == CellPath::dual_box_clipped;
+    }
+    clipped += n_clip;
+    box_clipped += n_box;
+  });
+  auto storage = std::make_shared<std::vector<CellArena>>();
+  for (auto& s : scratch)
+    if (s) storage->push_back(std::move(s->arena));
+  vd.storage = std::move(storage);
+  vd.clipped = clipped;
+  vd.box_clipped = box_clipped;
+}
+
 }  // namespace
 
 VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptions& o) {
-  if (sites.empty()) throw std::invalid_argument("no sites");
-  for (std::size_t i = 0; i < sites.size(); ++i)
-    if (!std::isfinite(sites[i].x) || !std::isfinite(sites[i].y) || !std::isfinite(sites[i].z))
-      throw std::invalid_argument("voronoi: site " + std::to_string(i) + " has a non-finite coordinate");
-  if (!(std::isfinite(o.margin) && o.margin >= 0)) throw std::invalid_argument("voronoi: margin must be finite and >= 0");
-  if (o.box && !(std::isfinite(o.box->lo.x) && std::isfinite(o.box->lo.y) && std::isfinite(o.box->lo.z) &&
-                 std::isfinite(o.box->hi.x) && std::isfinite(o.box->hi.y) && std::isfinite(o.box->hi.z)))
-    throw std::invalid_argument("voronoi: the box has a non-finite coordinate");
+  check_voronoi_input(sites, o);
   VoronoiDiagram vd;
   vd.sites.assign(sites.begin(), sites.end());
   vd.box = o.box ? *o.box : default_box(sites, o.margin);
-  if (!(std::isfinite(vd.box.lo.x) && std::isfinite(vd.box.lo.y) && std::isfinite(vd.box.lo.z) &&
-        std::isfinite(vd.box.hi.x) && std::isfinite(vd.box.hi.y) && std::isfinite(vd.box.hi.z)))
+  if (!(finite(vd.box.lo) && finite(vd.box.hi)))
     throw std::invalid_argument("voronoi: the box overflows (coordinates or margin too large)");
   vd.cells.resize(sites.size());
   const auto dup = find_duplicates(sites);
   const unsigned threads = thread_count(o.threads);
-  const double band = o.tolerance * vd.box.diagonal();
 
   auto t0 = Clock::now();
   BuildResult r = build_delaunay(sites, o.predicates, o.build);
@@ -225,140 +420,13 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   vd.seconds_dt = since(t0);
   t0 = Clock::now();
   const std::clock_t c0 = std::clock();
-
   if (r.failure) {
-    // Fewer than four distinct or coplanar sites: every other site is a candidate.
-    if (sites.size() > 4096) throw std::runtime_error("coplanar input too large for all-pairs cells");
-    ConvexCell cell;
-    std::vector<std::uint32_t> row;
-    auto storage = std::make_shared<std::vector<CellArena>>(1);
-    for (std::uint32_t v = 0; v < sites.size(); ++v) {
-      if (dup[v] >= 0) {
-        vd.cells[v].duplicate_of = dup[v];
-        continue;
-      }
-      row.clear();
-      for (std::uint32_t w = 0; w < sites.size(); ++w)
-        if (w != v && dup[w] < 0) row.push_back(w);
-      sort_by_distance(sites, v, row);
-      compute_cell(cell, sites, v, row, vd.box, o.tolerance, o.shrink);
-      store(storage->front(), cell, vd.cells[v]);
-    }
-    vd.storage = std::move(storage);
-    vd.clipped = sites.size();
-    vd.seconds_cells = since(t0);
-  vd.cpu_seconds_cells = double(std::clock() - c0) / CLOCKS_PER_SEC;
-    return vd;
+    all_pairs_cells(sites, dup, o, vd);
+  } else {
+    const RankedDelaunay dt = rank_by_first_cell(r.mesh.tets, sites, dup);
+    const StarsAndCentres sc = stars_and_centres(dt, threads);
+    dual_cells(sites, dup, dt, sc, o, threads, vd);
   }
-
-  // Cells in the order of their first tet: the tets come out of the DT in spatial
-  // (insertion) order, so neighbouring cells are near each other. One pass over the
-  // tets (no sort); sites in no tet (duplicates) go last.
-  const std::size_t n = sites.size();
-  std::vector<std::uint32_t> order;
-  order.reserve(n);
-  std::vector<std::uint32_t> rank(n, kNone);
-  for (const auto& q : r.mesh.tets)
-    for (auto v : q)
-      if (rank[v] == kNone) rank[v] = static_cast<std::uint32_t>(order.size()), order.push_back(v);
-  for (std::uint32_t v = 0; v < n; ++v)
-    if (rank[v] == kNone) order.push_back(v);
-  // Sites renumbered by rank and tets in the order the cells first reach them (counting
-  // sort on the lowest rank of their vertices): the stars, tets and centres of
-  // consecutive cells then lie in nearby memory instead of all over the mesh.
-  const std::vector<Tet> tets = sort_by_first_cell(r.mesh.tets, rank);
-  std::vector<std::uint32_t>().swap(rank);
-  r.mesh.tets = {};
-  std::vector<Point3> ranked(n);
-  std::vector<char> dup_ranked(n);
-  for (std::size_t k = 0; k < n; ++k) ranked[k] = sites[order[k]], dup_ranked[k] = dup[order[k]] >= 0;
-  // The stars (one task) while other workers compute the circumcentres (chunks of
-  // 4096 tets); with one thread, one after the other.
-  std::vector<std::uint32_t> star_off, star;
-  std::vector<Point3> cc(tets.size());
-  std::vector<char> bad(tets.size());
-  constexpr std::size_t kChunk = 4096;
-  parallel_chunks(1 + (tets.size() + kChunk - 1) / kChunk, threads, 1, [&](std::size_t job, std::size_t, unsigned) {
-    if (job == 0) return vertex_stars(n, tets, star_off, star);
-    for (std::size_t t = (job - 1) * kChunk, e = std::min(tets.size(), job * kChunk); t < e; ++t) {
-      const Tet& q = tets[t];
-      double cond = 0;
-      cc[t] = circumcenter(ranked[q[0]], ranked[q[1]], ranked[q[2]], ranked[q[3]], &cond);
-      bad[t] = !(cond <= kMaxCondition);
-    }
-  });
-
-  std::atomic<std::size_t> clipped{0}, box_clipped{0};
-  const bool dual_ok = o.shrink == 0;
-  struct Scratch {
-    explicit Scratch(std::size_t n) : builder(n) {}
-    DualCellBuilder builder;
-    ConvexCell cell;
-    std::vector<std::uint32_t> row;
-    CellBuffer buffer;
-    CellArena arena;
-  };
-  std::vector<std::unique_ptr<Scratch>> scratch(threads);
-  parallel_chunks(sites.size(), threads, 256, [&](std::size_t b, std::size_t e, unsigned w) {
-    if (!scratch[w]) scratch[w] = std::make_unique<Scratch>(sites.size());
-    auto& [builder, cell, row, buf, arena] = *scratch[w];
-    std::size_t n_clip = 0, n_box = 0;
-    for (std::size_t k = b; k < e; ++k) {
-      const std::uint32_t i = order[k];
-      // The cells are stored by site id, in no spatial order: fetch the next one early.
-      if (k + 1 < e) __builtin_prefetch(&vd.cells[order[k + 1]], 1);
-      VoronoiCell& out = vd.cells[i];
-      const auto rk = static_cast<std::uint32_t>(k);
-      const std::span<const std::uint32_t> st(star.data() + star_off[rk], star_off[rk + 1] - star_off[rk]);
-      if (dup_ranked[rk]) {
-        out.duplicate_of = dup[i];
-        continue;
-      }
-      const Point3 s = ranked[rk];
-      if (dual_ok && builder.build(rk, st, tets, cc, bad, band, 1e4 * band, buf)) {
-        for (auto& f : buf.face_neighbor) f = static_cast<std::int32_t>(order[f]);
-        // Walls the cell crosses (strictly, beyond the band).
-        int walls = 0;
-        for (const auto& p : buf.vertices) {
-          walls |= (p.x < vd.box.lo.x - band) << 0 | (p.x > vd.box.hi.x + band) << 1;
-          walls |= (p.y < vd.box.lo.y - band) << 2 | (p.y > vd.box.hi.y + band) << 3;
-          walls |= (p.z < vd.box.lo.z - band) << 4 | (p.z > vd.box.hi.z + band) << 5;
-        }
-        if (!walls) {
-          measure(buf, s, out);
-          store(arena, buf.vertices, buf.face_offsets, buf.face_vertices, buf.face_neighbor, out);
-          continue;
-        }
-        ++n_box;
-        cell.assign(buf.vertices, buf.face_offsets, buf.face_vertices, buf.face_neighbor, s);
-        const Point3 lo = vsub(vd.box.lo, s), hi = vsub(vd.box.hi, s);
-        const Point3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-        const double los[3] = {lo.x, lo.y, lo.z}, his[3] = {hi.x, hi.y, hi.z};
-        for (int k = 0; k < 3 && !cell.empty(); ++k) {
-          if (walls >> (2 * k) & 1) cell.clip(vscale(-1, axis[k]), -los[k], -1 - 2 * k, o.tolerance * vd.box.diagonal());
-          if (walls >> (2 * k + 1) & 1) cell.clip(axis[k], his[k], -2 - 2 * k, o.tolerance * vd.box.diagonal());
-        }
-        cell.translate(s);
-        store(arena, cell, out);
-        continue;
-      }
-      ++n_clip;
-      if (!dual_ok) builder.gather(rk, st, tets, bad);
-      row.clear();
-      for (auto w : builder.neighbors()) row.push_back(order[w]);
-      sort_by_distance(sites, i, row);
-      compute_cell(cell, sites, i, row, vd.box, o.tolerance, o.shrink);
-      store(arena, cell, out);
-    }
-    clipped += n_clip;
-    box_clipped += n_box;
-  });
-  auto storage = std::make_shared<std::vector<CellArena>>();
-  for (auto& sc : scratch)
-    if (sc) storage->push_back(std::move(sc->arena));
-  vd.storage = std::move(storage);
-  vd.clipped = clipped;
-  vd.box_clipped = box_clipped;
   vd.seconds_cells = since(t0);
   vd.cpu_seconds_cells = double(std::clock() - c0) / CLOCKS_PER_SEC;
   return vd;

@@ -14,8 +14,8 @@ double face_area(const VoronoiCell& c, std::size_t f) {
   const Point3 o = c.vertices[c.face_vertices[b]];
   Point3 n{0, 0, 0};
   for (auto k = b + 1; k + 1 < e; ++k)
-    n = vadd(n, vcross(vsub(c.vertices[c.face_vertices[k]], o), vsub(c.vertices[c.face_vertices[k + 1]], o)));
-  return 0.5 * vnorm(n);
+    n = n + cross(c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
+  return 0.5 * norm(n);
 }
 
 namespace {

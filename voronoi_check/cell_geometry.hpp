@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <span>
 
-#include "voronoi/vec.hpp"
+#include "voronoi/box.hpp"
 #include "voronoi/voronoi.hpp"
 
 namespace dtlab {

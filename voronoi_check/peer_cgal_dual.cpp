@@ -59,9 +59,9 @@ void dual_cell(const DT& dt, DT::Vertex_handle h, Scratch& s) {
     Point3 n{0, 0, 0};
     const Point3 o = s.v[s.corners[first]];
     for (std::size_t k = first + 1; k + 1 < s.corners.size(); ++k)
-      n = vor::vadd(n, vor::vcross(vor::vsub(s.v[s.corners[k]], o), vor::vsub(s.v[s.corners[k + 1]], o)));
+      n = n + cross(s.v[s.corners[k]] - o, s.v[s.corners[k + 1]] - o);
     const Point3 d{w->point().x() - p.x(), w->point().y() - p.y(), w->point().z() - p.z()};
-    if (vor::vdot(n, d) < 0) std::reverse(s.corners.begin() + first, s.corners.end());
+    if (dot(n, d) < 0) std::reverse(s.corners.begin() + first, s.corners.end());
     s.offsets.push_back(static_cast<std::uint32_t>(s.corners.size()));
     s.tags.push_back(static_cast<std::int32_t>(w->info()));
   }
@@ -75,7 +75,7 @@ void clip_to_box(vor::ConvexCell& cell, const Point3& s, const vor::Box& box) {
     Point3 n{0, 0, 0};
     (axis == 0 ? n.x : axis == 1 ? n.y : n.z) = 1;
     cell.clip(n, hi[axis], -2 * axis - 2, 0);
-    if (!cell.empty()) cell.clip(vor::vscale(-1, n), -lo[axis], -2 * axis - 1, 0);
+    if (!cell.empty()) cell.clip(-1 * n, -lo[axis], -2 * axis - 1, 0);
   }
 }
 

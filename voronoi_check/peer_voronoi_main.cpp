@@ -71,22 +71,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: dtlab_voronoi_peer PEER IN OUT XMIN YMIN ZMIN XMAX YMAX ZMAX\n");
     return 2;
   }
-  try {
+  return run_peer_main([&] {
     double b[6];
     for (int k = 0; k < 6; ++k) b[k] = std::strtod(argv[4 + k], nullptr);
     const vor::Box box{{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
     const std::vector<Point3> sites = read_peer_points(argv[2]);
     const PeerCells cells = run(argv[1], sites, box);
     write_peer_cells(argv[3], cells.seconds, cells.cells);
-    return 0;
-  } catch (const PeerNotInstalled& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 4;
-  } catch (const PeerRefusal& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 2;
-  }
+  });
 }

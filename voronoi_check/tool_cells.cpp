@@ -70,9 +70,9 @@ double cell_volume(const VoronoiCell& c) {
   double vol = 0;
   for (std::size_t f = 0; f < c.face_count(); ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
-    const Point3 a = vsub(c.vertices[c.face_vertices[b]], o);
+    const Point3 a = c.vertices[c.face_vertices[b]] - o;
     for (auto k = b + 1; k + 1 < e; ++k)
-      vol += det3(a, vsub(c.vertices[c.face_vertices[k]], o), vsub(c.vertices[c.face_vertices[k + 1]], o));
+      vol += det3(a, c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
   }
   return vol / 6;
 }

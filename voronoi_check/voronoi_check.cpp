@@ -30,7 +30,7 @@ const char* topology_name(Topology t) {
 const char* voronoi_verdict_name(VoronoiVerdict v) {
   static const char* names[] = {"exact-topology", "rounded-topology", "bad-geometry", "volume-mismatch",
                                 "wrong-topology", "crashed",          "hung",         "refused",
-                                "not-installed"};
+                                "not-installed",  "out-of-memory"};
   return names[static_cast<int>(v)];
 }
 
@@ -57,7 +57,7 @@ double sites_extent(std::span<const Point3> sites, const Box& box) {
     b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
     b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
   }
-  const Point3 e = vsub(b.hi, b.lo);
+  const Point3 e = b.hi - b.lo;
   const double ext = std::max({e.x, e.y, e.z});
   return ext > 0 ? ext : box.diagonal();
 }
@@ -150,8 +150,8 @@ class Judge {
         const Point3 o = clipped_.vertices()[fv[0]];
         Point3 n{0, 0, 0};
         for (std::size_t k = 1; k + 1 < fv.size(); ++k)
-          n = vadd(n, vcross(vsub(clipped_.vertices()[fv[k]], o), vsub(clipped_.vertices()[fv[k + 1]], o)));
-        area += 0.5 * vnorm(n);
+          n = n + cross(clipped_.vertices()[fv[k]] - o, clipped_.vertices()[fv[k + 1]] - o);
+        area += 0.5 * norm(n);
       }
     if (area > 0) return area;
     // Rounded away by the clip: required when a vertex of the exact face is inside the box.

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "voronoi/vec.hpp"
+#include "voronoi/box.hpp"
 #include "voronoi_check/tool_cells.hpp"
 
 namespace dtlab {
@@ -44,11 +44,19 @@ enum class Topology { exact, rounded, wrong };
 const char* topology_name(Topology t);
 
 // The whole answer: wrong-topology before volume-mismatch before bad-geometry (vertices
-// off, cells not convex) before rounded-topology before exact-topology; the last three
-// are a peer's "no answer" verdicts (voronoi_check/voronoi_peers.hpp).
+// off, cells not convex) before rounded-topology before exact-topology; crashed to
+// out_of_memory are a peer's "no answer" verdicts (voronoi_check/voronoi_peers.hpp).
 enum class VoronoiVerdict {
-  exact_topology, rounded_topology, bad_geometry, volume_mismatch, wrong_topology,
-  crashed, hung, refused, not_installed,
+  exact_topology,
+  rounded_topology,
+  bad_geometry,
+  volume_mismatch,
+  wrong_topology,
+  crashed,
+  hung,
+  refused,
+  not_installed,
+  out_of_memory,  // ended for lack of memory (oracle/child_process.hpp's out_of_memory)
 };
 const char* voronoi_verdict_name(VoronoiVerdict v);
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "oracle/child_process.hpp"
+#include "oracle/peer_child.hpp"
 #include "oracle/peer_exchange.hpp"
 #include "oracle/temp_dir.hpp"
 #include "voronoi_check/cell_exchange.hpp"
@@ -41,9 +42,7 @@ std::uint64_t memory_limit(const std::string& name, const VoronoiPeerOptions& o)
 #else
   (void)name;
 #endif
-  if (o.memory_bytes) return o.memory_bytes;
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? static_cast<std::uint64_t>(pages) * page / 2 : 0;
+  return o.memory_bytes ? o.memory_bytes : default_peer_memory();
 }
 
 std::vector<std::string> command(const std::string& name, const VoronoiPeerOptions& o) {
@@ -70,16 +69,21 @@ bool no_answer(const ChildResult& c, const std::string& log, VoronoiPeerRun& run
     case ChildStatus::timed_out:
       run.verdict = VoronoiVerdict::hung, run.message = "killed after the time limit";
       return true;
+    case ChildStatus::output_limit: run.verdict = VoronoiVerdict::refused, run.message = c.message; return true;
     case ChildStatus::signaled:
+      if (c.out_of_memory) break;
       run.verdict = VoronoiVerdict::crashed, run.message = strsignal(c.signal);
       return true;
     case ChildStatus::exited:
       if (c.exit_code == 0) return false;
+      if (c.out_of_memory) break;
       run.verdict = c.exit_code == 4 ? VoronoiVerdict::not_installed : VoronoiVerdict::refused;
       run.message = last_line_of(log);
       return true;
   }
-  return false;
+  run.verdict = VoronoiVerdict::out_of_memory;
+  run.message = last_line_of(log).empty() ? c.message : last_line_of(log);
+  return true;
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ TEST_CASE("interior Voronoi vertices are circumcentres of Delaunay tets") {
     if (std::any_of(c.face_neighbor.begin(), c.face_neighbor.end(), [](int t) { return t < 0; })) continue;
     for (const auto& v : c.vertices) {
       double best = INFINITY;
-      for (const auto& q : cc) best = std::min(best, vnorm(vsub(q, v)));
+      for (const auto& q : cc) best = std::min(best, norm(q - v));
       CHECK(best < 1e-9);
       ++checked;
     }
@@ -88,10 +88,10 @@ TEST_CASE("circumcenter is equidistant and reports bad conditioning of flat tets
   Point3 a{1, 0, 0}, b{0, 1, 0}, c{0, 0, 1}, d{0.3, 0.2, 0.1};
   double cond = 0;
   Point3 o = circumcenter(a, b, c, d, &cond);
-  const double r = vnorm(vsub(a, o));
-  CHECK(vnorm(vsub(b, o)) == Approx(r).epsilon(1e-14));
-  CHECK(vnorm(vsub(c, o)) == Approx(r).epsilon(1e-14));
-  CHECK(vnorm(vsub(d, o)) == Approx(r).epsilon(1e-14));
+  const double r = norm(a - o);
+  CHECK(norm(b - o) == Approx(r).epsilon(1e-14));
+  CHECK(norm(c - o) == Approx(r).epsilon(1e-14));
+  CHECK(norm(d - o) == Approx(r).epsilon(1e-14));
   double flat = 0;
   circumcenter({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 1e-9}, &flat);
   CHECK(flat > 1e8 * cond);

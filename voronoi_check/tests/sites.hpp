@@ -3,7 +3,7 @@
 #include <random>
 #include <vector>
 
-#include "voronoi/vec.hpp"
+#include "voronoi/box.hpp"
 
 namespace dtlab::test {
 

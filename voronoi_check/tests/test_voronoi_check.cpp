@@ -194,7 +194,7 @@ TEST_CASE("mutation suite: every mutant is detected") {
   }
   SECTION("a cell scaled (volumes no longer sum to the box)") {
     const auto m = mutated(t, k, [&](auto& site, auto& vs, auto&, auto&, auto&) {
-      for (auto& p : vs) p = vor::vadd(sites[site], vor::vscale(0.9, vor::vsub(p, sites[site])));
+      for (auto& p : vs) p = sites[site] + 0.9 * (p - sites[site]);
     });
     const auto r = check_voronoi(sites, kBox, m);
     CHECK(r.count(D::volume_mismatch) == 1);
