@@ -184,7 +184,9 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
     return infinite && (k == first[0] || k == first[1] || k == first[2] || k == first[3]);
   };
   if (infinite) ins.stats().inserted = 4;
+  progress_begin(opt.progress, "insert", n);
   for (std::uint32_t k = 0; k < n; ++k) {
+    progress_advance(opt.progress, k);
     if (is_first(k)) continue;
     const auto outcome = ins.insert(k);
     if (outcome == Inserter<B>::Outcome::duplicate) {
@@ -201,6 +203,7 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
       break;
     }
   }
+  if (!res.failure) progress_advance(opt.progress, n);
   res.stats = ins.stats();
   res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.stats.orient3d_calls = ins.geometry().orient_calls;
