@@ -1,4 +1,5 @@
 // _core.tetrahedralize: the kernel's build_delaunay on a numpy array.
+#include <optional>
 #include <utility>
 
 #include "cli/tetra_report.hpp"
@@ -7,6 +8,7 @@
 #include "python/src/json_to_python.hpp"
 #include "python/src/kernel_options.hpp"
 #include "python/src/numpy_io.hpp"
+#include "python/src/progress_callback.hpp"
 
 namespace py = pybind11;
 
@@ -16,9 +18,11 @@ namespace {
 // {"tets", "duplicates", "skipped", "summary"}: summary is `dtlab tetra --json`'s.
 py::dict tetrahedralize(py::handle points, const std::string& predicates, const std::string& perturb,
                         const std::string& boundary, const std::string& order, std::uint64_t seed, double eps,
-                        const std::string& eps_mode) {
-  const KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
+                        const std::string& eps_mode, const py::object& progress) {
+  KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
   const DoubleArray pts = point_array(points, "points");
+  std::optional<Progress> listener = python_progress(progress);
+  k.build.progress = progress_pointer(listener);
   BuildResult r;
   {
     py::gil_scoped_release nogil;
@@ -38,6 +42,7 @@ py::dict tetrahedralize(py::handle points, const std::string& predicates, const 
 void bind_tetrahedralize(py::module_& m) {
   m.def("tetrahedralize", &tetrahedralize, py::arg("points"), py::arg("predicates"), py::arg("perturb"),
         py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"),
+        py::arg("progress") = py::none(),
         "Builds the Delaunay tetrahedralization; returns the raw result (see dtlab.tetrahedralize).");
 }
 
