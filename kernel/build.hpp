@@ -9,7 +9,6 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/progress.hpp"
 #include "kernel/tetrahedralization.hpp"
 
 namespace dtlab {
@@ -25,7 +24,6 @@ struct BuildOptions {
   // Count which adaptive stage decided each predicate call (BuildStats::stages): an
   // increment through a pointer on every call, so benchmarks turn it off.
   bool count_stages = true;
-  Progress* progress = nullptr;  // stage "insert": points of the insertion order done
 };
 
 // The runtime predicate choice: backend name (naive|epsilon|adaptive|exact),

@@ -1,9 +1,11 @@
 #pragma once
 // Progress of a long library call: a callback with (stage, done, total), made from the
-// calling thread about every `every` items of a stage and at its end. A loop holds a
-// `Progress*`; when it is null (no one listens) the cost is one branch per item.
-// The callback may throw (a Python KeyboardInterrupt, a user's exception): the loop
-// stops at once and the exception propagates out of the library call.
+// calling thread about every `every` items of a stage and at its end. The caller sets
+// the listener for the duration of a call with a ProgressScope; the library's loops
+// (the build's insertion loop, the checker's steps) read it once, on the thread that
+// made the call (workers see none), so no options struct carries it. No listener: one
+// branch per item. The callback may throw (a Python KeyboardInterrupt, a user's
+// exception): the loop stops at once and the exception propagates out of the call.
 #include <algorithm>
 #include <cstddef>
 #include <functional>
@@ -48,6 +50,24 @@ class Progress {
   std::string_view stage_;
   std::size_t total_ = 0, step_ = 1, next_ = 0;
   bool ended_ = false;
+};
+
+// The listener of this thread's library calls, or null.
+inline Progress*& thread_progress() {
+  static thread_local Progress* listener = nullptr;
+  return listener;
+}
+
+// Sets this thread's listener until the end of the scope (the previous one comes back).
+class ProgressScope {
+ public:
+  explicit ProgressScope(Progress* listener) : previous_(thread_progress()) { thread_progress() = listener; }
+  ~ProgressScope() { thread_progress() = previous_; }
+  ProgressScope(const ProgressScope&) = delete;
+  ProgressScope& operator=(const ProgressScope&) = delete;
+
+ private:
+  Progress* previous_;
 };
 
 // A stage that may have no listener (the form the library's loops use).

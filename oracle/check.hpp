@@ -9,7 +9,6 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/progress.hpp"
 #include "kernel/tetrahedralization.hpp"
 
 namespace dtlab {
@@ -51,9 +50,6 @@ struct CheckOptions {
   // Threads for the orientation pass, the facet table with its insphere tests and the
   // edge count (0: all hardware threads). The report is the same for every count.
   unsigned threads = 1;
-  // Stage "check": the numbered proof steps done (of 8), reported between them on the
-  // calling thread.
-  Progress* progress = nullptr;
 };
 
 struct CheckStats {

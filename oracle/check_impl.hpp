@@ -21,6 +21,7 @@
 #include <string>
 
 #include "kernel/parallel_for.hpp"
+#include "kernel/progress.hpp"
 #include "oracle/boundary.hpp"
 #include "oracle/check.hpp"
 #include "oracle/exact_volume.hpp"
@@ -88,7 +89,8 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   };
 
   // 1. indices
-  progress_begin(opt.progress, "check", 8);
+  Progress* const progress = thread_progress();  // stage "check": the steps done, of 8
+  progress_begin(progress, "check", 8);
   std::vector<char> used(n, 0);
   if (T.size() >= (1u << 30)) throw std::length_error("check: more than 2^30 tets");
   if (n >= (1u << 31)) throw std::length_error("check: more than 2^31 points");
@@ -110,7 +112,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     for (auto v : k) used[v] = 1;
   }
   if (!indices_ok) return finish();
-  progress_advance(opt.progress, 1);
+  progress_advance(progress, 1);
   st.vertices = static_cast<std::uint64_t>(std::count(used.begin(), used.end(), 1));
 
   if (T.empty()) {
@@ -137,7 +139,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
       out.add(DefectKind::flat, {static_cast<std::uint32_t>(i)}, tet_vertices(T[i]), 0, "orient3d == 0");
   }
 
-  progress_advance(opt.progress, 2);
+  progress_advance(progress, 2);
   // 3. facet table, and 4. Delaunay: insphere on each facet shared by two positive
   // tets, as the table finds it (no adjacency array is kept), on any worker; the
   // non-Delaunay and cospherical ones are recorded in the table's order.
@@ -185,7 +187,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
             0, "both tets lie on the same side of their shared facet");
   }
 
-  progress_advance(opt.progress, 4);
+  progress_advance(progress, 4);
   // 5. boundary surface
   const BoundarySurface bs = build_boundary(T, table, n);
   st.boundary_vertices = bs.vertices;
@@ -247,7 +249,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
       out.add(DefectKind::euler, {}, {}, 0, "V-E+F-T = " + std::to_string(st.euler) + ", expected 1 (a ball)");
   }
 
-  progress_advance(opt.progress, 5);
+  progress_advance(progress, 5);
   // 6. global convexity and single covering. Runs whenever the surface is a closed,
   // connected, locally convex 2-manifold (non-Delaunay facets do not matter here).
   const bool surface_ok = local_ok && bs.components == 1 && out.count(DefectKind::hull_not_convex) == 0 &&
@@ -289,11 +291,11 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     }
   }
 
-  progress_advance(opt.progress, 6);
+  progress_advance(progress, 6);
   // 7. points
   check_points(t, used, opt.duplicates, out, st);
 
-  progress_advance(opt.progress, 7);
+  progress_advance(progress, 7);
   // 8. volumes: the exact volume inside the boundary (the hull's, once the cover is
   // proven); with opt.volume_identity also the exact sum over the tets, compared.
   if (local_ok) {
@@ -311,7 +313,7 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   // "valid" needs the single cover proven; no path may reach here without it.
   if (report.ok() && !st.cover_proven)
     out.add(DefectKind::unproven, {}, {}, 0, "the single cover of the hull was not proven");
-  progress_advance(opt.progress, 8);
+  progress_advance(progress, 8);
   return finish();
 }
 

@@ -57,11 +57,11 @@ py::dict check(py::handle points, py::handle tets, const std::string& orientatio
   Checked c;
   {
     py::gil_scoped_release nogil;
+    const ProgressScope scope(progress_pointer(listener));
     // t is ours: the owning check renumbers it for locality (the report keeps the caller's ids).
     c.orientation = orient_tets(t, orientation);
     c.report = check_tetrahedralization(std::move(t), {.duplicates = dups, .delaunay = delaunay,
-                                                       .witnesses_per_kind = witnesses, .threads = threads,
-                                                       .progress = progress_pointer(listener)});
+                                                       .witnesses_per_kind = witnesses, .threads = threads});
   }
   return report_dict(c);
 }

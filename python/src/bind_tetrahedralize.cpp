@@ -2,8 +2,8 @@
 #include <optional>
 #include <utility>
 
-#include "cli/tetra_report.hpp"
 #include "kernel/build.hpp"
+#include "options/tetra_summary.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/json_to_python.hpp"
 #include "python/src/kernel_options.hpp"
@@ -19,17 +19,17 @@ namespace {
 py::dict tetrahedralize(py::handle points, const std::string& predicates, const std::string& perturb,
                         const std::string& boundary, const std::string& order, std::uint64_t seed, double eps,
                         const std::string& eps_mode, const py::object& progress) {
-  KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
+  const KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
   const DoubleArray pts = point_array(points, "points");
   std::optional<Progress> listener = python_progress(progress);
-  k.build.progress = progress_pointer(listener);
   BuildResult r;
   {
     py::gil_scoped_release nogil;
+    const ProgressScope scope(progress_pointer(listener));
     r = build_delaunay(points_of(pts), k.predicates, k.build);
   }
   py::dict out;
-  out["summary"] = json_to_python(cli::tetra_summary(r, k.args));
+  out["summary"] = json_to_python(tetra_summary(r, k.args));
   out["tets"] = to_numpy<std::uint32_t, 4>(std::move(r.mesh.tets));
   out["duplicates"] = to_numpy<std::uint32_t, 1>(std::move(r.duplicates));
   out["skipped"] = to_numpy<std::uint32_t, 1>(std::move(r.skipped));
