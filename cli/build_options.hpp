@@ -3,12 +3,14 @@
 // (tetra, oracle, bench, voronoi, fuzz): --predicates, --eps, --eps-mode, --perturb,
 // --boundary, --order, --seed. One definition, so the names, defaults and help texts
 // are the same wherever a DT is built; a command registers the subset that applies.
+// The values, their checks and their meaning are the options library's
+// (options/kernel_options.hpp, shared with the Python module); this is their CLI form.
 #include <cstdint>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
-#include "kernel/build.hpp"
+#include "options/kernel_options.hpp"
 
 namespace dtlab::cli {
 
@@ -26,22 +28,10 @@ enum KernelOption : unsigned {
   kThreadsOption = 1u << 6,
 };
 
-// "" when `name` is a backend (a built-in name, or plugin:PATH of a loadable plug-in),
-// else why not.
-std::string predicates_error(const std::string& name);
-
-struct KernelArgs {
-  std::string predicates = "adaptive";
-  double eps = 1e-12;
-  std::string eps_mode = "absolute";
-  std::string perturb = "sos";
-  std::string boundary = "infinite";
-  std::string order = "brio";
-  std::uint64_t seed = 1;
+struct KernelArgs : KernelOptions {
   unsigned threads = 0;  // 0: all hardware threads
 
   void add_to(CLI::App& app, unsigned which = kAllKernelOptions);
-  PredicateSpec predicate_spec() const;
   BuildOptions build_options() const;  // throws CLI::ValidationError on a bad --boundary
 };
 

@@ -11,31 +11,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "options/number_check.hpp"
+
 namespace dtlab::cli {
 
 namespace number_options_detail {
 
-inline std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
-// Empty when `text` is a number in [lo, hi] (whole if `whole`), else the reason.
-inline std::string check_number(const std::string& text, double lo, double hi, bool whole) {
-  const char* b = text.data();
-  const char* e = b + text.size();
-  if (b != e && *b == '+') ++b;
-  double v = 0;
-  auto [p, ec] = std::from_chars(b, e, v);
-  const std::string shown = text.size() <= 32 ? text : text.substr(0, 24) + "...";
-  if (ec == std::errc::result_out_of_range) return "'" + shown + "' is out of range of a double";
-  if (ec != std::errc() || p != e) return "'" + shown + "' is not a number";
-  if (!std::isfinite(v)) return "'" + shown + "' is not finite";
-  if (whole && v != std::trunc(v)) return "'" + shown + "' is not a whole number";
-  if (v < lo || v > hi) return "'" + shown + "' is not in [" + fmt(lo) + ", " + fmt(hi) + "]";
-  return {};
-}
+using dtlab::check_number;  // options/number_check.hpp, shared with the Python module
+inline std::string fmt(double v) { return number_text(v); }
 
 }  // namespace number_options_detail
 

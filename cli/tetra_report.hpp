@@ -1,5 +1,5 @@
 #pragma once
-// The summary of one build, as text and as JSON.
+// The summary of one build as text (its JSON form: options/tetra_summary.hpp).
 #include <cstdio>
 #include <string>
 
@@ -7,11 +7,11 @@
 
 #include "cli/build_options.hpp"
 #include "kernel/build.hpp"
+#include "options/tetra_summary.hpp"  // tetra_summary: the JSON form
 #include "oracle/check.hpp"
 
 namespace dtlab::cli {
 
-nlohmann::json tetra_summary(const BuildResult& r, const KernelArgs& k);
 void print_tetra_summary(std::FILE* out, const BuildResult& r, const std::string& input);
 // `tetra --check`: the verdict, the defect counts per kind and a few witnesses.
 void print_tetra_check(std::FILE* out, const CheckReport& r);

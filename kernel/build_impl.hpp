@@ -18,6 +18,7 @@
 #include "kernel/enclosing_tet.hpp"
 #include "kernel/ids.hpp"
 #include "kernel/inserter.hpp"
+#include "kernel/progress.hpp"
 #include "kernel/spatial_order.hpp"
 
 namespace dtlab {
@@ -184,7 +185,10 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
     return infinite && (k == first[0] || k == first[1] || k == first[2] || k == first[3]);
   };
   if (infinite) ins.stats().inserted = 4;
+  Progress* const progress = thread_progress();  // stage "insert": points of the order done
+  progress_begin(progress, "insert", n);
   for (std::uint32_t k = 0; k < n; ++k) {
+    progress_advance(progress, k);
     if (is_first(k)) continue;
     const auto outcome = ins.insert(k);
     if (outcome == Inserter<B>::Outcome::duplicate) {
@@ -201,6 +205,7 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
       break;
     }
   }
+  if (!res.failure) progress_advance(progress, n);
   res.stats = ins.stats();
   res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.stats.orient3d_calls = ins.geometry().orient_calls;

@@ -20,6 +20,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernel/progress.hpp"
 #include "kernel/parallel_for.hpp"
 #include "oracle/boundary.hpp"
 #include "oracle/check.hpp"
@@ -316,8 +317,11 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     return report;
   };
 
+  Progress* const progress = thread_progress();  // stage "check": the steps done, of 8
+  progress_begin(progress, "check", 8);
   std::vector<char> used(n, 0);
   if (!check_indices(T, n, used, out)) return finish();
+  progress_advance(progress, 1);
   st.vertices = static_cast<std::uint64_t>(std::count(used.begin(), used.end(), 1));
   if (T.empty()) {
     // Right only for an input that spans no volume (fewer than 4 points, or flat).
@@ -327,8 +331,10 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
     return finish();
   }
   const std::vector<signed char> sign = check_orientation(P, T, opt.threads, pred, out);
+  progress_advance(progress, 2);
   const std::vector<std::uint32_t> rank = first_appearance(T, n);
   const FacetTable table = check_facets_and_delaunay(P, T, rank, sign, opt, pred, report, out);
+  progress_advance(progress, 4);
 
   const BoundarySurface bs = build_boundary(T, table, n);
   st.boundary_vertices = bs.vertices;
@@ -340,17 +346,21 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   check_boundary_components(bs, out);
   check_edge_convexity(P, bs, pred, out);
   check_euler(T, rank, bs, local_ok, opt.threads, st, out);
+  progress_advance(progress, 5);
 
   // Stage 6 runs whenever the surface is a closed, connected, locally convex
   // 2-manifold (non-Delaunay facets do not matter here).
   const bool surface_ok = local_ok && bs.components == 1 && out.count(DefectKind::hull_not_convex) == 0 &&
                           out.count(DefectKind::gap) == 0 && out.count(DefectKind::euler) == 0;
   if (surface_ok) check_single_cover(P, T, bs, pred, st, out);
+  progress_advance(progress, 6);
   check_points(t, used, opt.duplicates, out, st);
+  progress_advance(progress, 7);
   if (local_ok) check_volumes(P, T, bs, opt, st, out);
   // "valid" needs the single cover proven; no path may reach here without it.
   if (report.ok() && !st.cover_proven)
     out.add(DefectKind::unproven, {}, {}, 0, "the single cover of the hull was not proven");
+  progress_advance(progress, 8);
   return finish();
 }
 

@@ -21,6 +21,7 @@ from typing import Any, Union
 import numpy as np
 
 from . import _core, _function_peer, _meshio, fuzz
+from ._progress import ProgressArg, StageBar
 from ._results import (DEFECT_KINDS, BuildFailure, CheckReport, Comparison, Defect, Failure, Mesh,
                        OracleReport, OracleRun, Piece, Pieces, Tetrahedralization, VoronoiCell,
                        VoronoiDiagram)
@@ -52,7 +53,7 @@ def _count(value: int, name: str) -> int:
 def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "sos",
                    boundary: str = "infinite", order: str = "brio", seed: int = 1, *,
                    eps: float = 1e-12, eps_mode: str = "absolute",
-                   raise_on_failure: bool = True) -> Tetrahedralization:
+                   raise_on_failure: bool = True, progress: ProgressArg = None) -> Tetrahedralization:
     """The Delaunay tetrahedralization of an (n, 3) array of points.
 
     predicates: "naive", "epsilon", "adaptive" (Shewchuk, the default) or "exact" (GMP);
@@ -66,9 +67,13 @@ def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "so
     collinear or coplanar raise ValueError. A non-robust backend may stop at a named
     failure (walk-cycle, flip-stuck, inconsistent-adjacency, outside-boundary): that
     raises BuildFailure carrying the partial mesh, or, with raise_on_failure=False,
-    comes back in `failure`.
+    comes back in `failure`. progress: None, True (a tqdm bar) or a callable
+    progress(done, total, "insert") called about every n/1000 points inserted; what
+    it raises (KeyboardInterrupt too) stops the build and propagates.
     """
-    raw = _core.tetrahedralize(points, predicates, perturb, boundary, order, _seed(seed), float(eps), eps_mode)
+    with StageBar(progress, "tetrahedralize") as bar:
+        raw = _core.tetrahedralize(points, predicates, perturb, boundary, order, _seed(seed), float(eps), eps_mode,
+                                   bar.callback)
     summary = dict(raw["summary"])
     f = summary.pop("failure")
     summary.pop("duplicates")
@@ -84,7 +89,8 @@ def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "so
 
 
 def check(points: Any, tets: Any, orientation: str = "any", *, duplicates: Any = None,
-          witnesses: int = 16, delaunay: bool = True, threads: int = 1) -> CheckReport:
+          witnesses: int = 16, delaunay: bool = True, threads: int = 1,
+          progress: ProgressArg = None) -> CheckReport:
     """Proves exactly that `tets` is the Delaunay tetrahedralization of `points`, or
     names each defect with witnesses: broken-adjacency, inverted, flat, non-delaunay,
     hull-not-convex, overlap, gap, missing-point, duplicate-vertex, euler (see
@@ -103,13 +109,15 @@ def check(points: Any, tets: Any, orientation: str = "any", *, duplicates: Any =
     is verified to have the coordinates of a vertex; exact repeats need not be listed).
     witnesses: defects listed per kind. delaunay=False skips the insphere tests.
     threads: threads of the check (0: all cores, at most 1024); the report is the same
-    for every count.
+    for every count. progress: None, True (a tqdm bar) or progress(done, 8, "check"),
+    called as each of the checker's 8 numbered steps ends.
     """
     nthreads = _count(threads, "threads")
     if nthreads > 1024:
         raise ValueError(f"threads: expected at most 1024, got {threads!r}")
-    raw = _core.check(points, tets, orientation, duplicates, _count(witnesses, "witnesses"), bool(delaunay),
-                      nthreads)
+    with StageBar(progress, "check") as bar:
+        raw = _core.check(points, tets, orientation, duplicates, _count(witnesses, "witnesses"), bool(delaunay),
+                          nthreads, bar.callback)
     return CheckReport._from_raw(raw)
 
 
@@ -306,7 +314,7 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
              recurse: Iterable[int] = (), recurse_pieces: int = 4, sites: Any = None,
              impact: Sequence[float] | None = None, impact_radius: float = 0.0, site_noise: float = 0.0,
              island_split: bool = True, cell_scale: Sequence[float] = (1.0, 1.0, 1.0),
-             density: float = 1.0) -> Pieces:
+             density: float = 1.0, progress: ProgressArg = None) -> Pieces:
     """Voronoi fracture of a closed triangle mesh into closed pieces.
 
     `pieces` sites are sampled inside the mesh (sampler "winding", "sdf" or "rays",
@@ -321,13 +329,16 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
     impact_radius (sites crowd around it), site_noise (jitter relative to the box
     diagonal), island_split (False: a cell's disconnected chunks stay one piece),
     cell_scale (anisotropic cells), density (the manifest's mass and mass_inertia).
+    progress: None, True (a tqdm bar) or progress(done, total, "fracture:booleans"),
+    called after each cell's boolean (from the worker that did it, with the GIL).
     """
-    raw = _core.fracture(vertices, faces, _count(pieces, "--pieces"), _seed(seed), float(margin), sampler,
-                         bool(blue_noise), _count(threads, "threads"), [_count(r, "--recurse") for r in recurse],
-                         _count(recurse_pieces, "--recurse-pieces"),
-                         *_site_source(sites), None if impact is None else _triple(impact, "--impact"),
-                         float(impact_radius), float(site_noise), bool(island_split),
-                         _triple(cell_scale, "--cell-scale"), float(density))
+    with StageBar(progress, "fracture") as bar:
+        raw = _core.fracture(vertices, faces, _count(pieces, "--pieces"), _seed(seed), float(margin), sampler,
+                             bool(blue_noise), _count(threads, "threads"), [_count(r, "--recurse") for r in recurse],
+                             _count(recurse_pieces, "--recurse-pieces"),
+                             *_site_source(sites), None if impact is None else _triple(impact, "--impact"),
+                             float(impact_radius), float(site_noise), bool(island_split),
+                             _triple(cell_scale, "--cell-scale"), float(density), bar.callback)
     out = Pieces(Piece(p["vertices"], p["faces"], p["cut"], p["cut_tag"], float(p["volume"]), tuple(p["centroid"]),
                        tuple(p["site"]), float(p["interior_area"]), p["neighbors"], int(p["parent"]),
                        int(p["site_index"]), int(p["island"]))

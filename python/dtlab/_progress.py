@@ -1,6 +1,10 @@
 """Progress of long calls: `progress=` takes None/False (silent), True (a tqdm bar when
 tqdm is installed, else one line per stage on stderr) or a callable
-progress(done, total, stage) called after each stage."""
+progress(done, total, stage). `Progress` counts the stages of a Python-side call
+(dtlab.spatial); `StageBar` is handed to the C++ loops (tetrahedralize, check,
+fracture, fuzz campaigns), which call it about every total/1000 items of each stage
+and at its end, from the calling thread (or a worker, one at a time) with the GIL
+held. Whatever it raises (KeyboardInterrupt included) stops the call and propagates."""
 from __future__ import annotations
 
 import sys
@@ -36,6 +40,60 @@ class Progress:
             self._call(self.done, self.total, stage)
 
     def __enter__(self) -> Progress:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        if self._bar is not None:
+            self._bar.close()
+
+
+def _resolve(progress: ProgressArg) -> Callable[[int, int, str], Any] | None | bool:
+    """The callable, None (silent) or True (a bar or stderr lines)."""
+    if progress is None or progress is False:
+        return None
+    if callable(progress):
+        return progress
+    if progress is True:
+        return True
+    raise ValueError(f"progress must be None, a bool or a callable, got {progress!r}")
+
+
+class StageBar:
+    """progress(done, total, stage) for a C++ loop: the user's callable, a tqdm bar
+    reset at each stage, or (True without tqdm) a line on stderr as a stage starts and
+    ends. `callback` is None when silent (the C++ loop then reports nothing)."""
+
+    def __init__(self, progress: ProgressArg, label: str) -> None:
+        self.label = label
+        self._stage: str | None = None
+        self._bar = None
+        self._call: Callable[[int, int, str], Any] | None = None
+        how = _resolve(progress)
+        if callable(how):
+            self._call = how
+        elif how is True:
+            try:
+                from tqdm import tqdm
+                self._bar = tqdm(total=0, desc=label, leave=False)
+            except ImportError:
+                self._call = self._line
+        self.callback: Callable[[int, int, str], Any] | None = None if how is None else self
+
+    def _line(self, done: int, total: int, stage: str) -> None:
+        if done == 0 or done >= total:
+            print(f"{self.label}: {stage} {done}/{total}", file=sys.stderr)
+
+    def __call__(self, done: int, total: int, stage: str) -> None:
+        if self._bar is not None:
+            if stage != self._stage:
+                self._stage = stage
+                self._bar.reset(total=total)
+                self._bar.set_description(f"{self.label} {stage}")
+            self._bar.update(done - self._bar.n)
+        if self._call is not None:
+            self._call(done, total, stage)
+
+    def __enter__(self) -> StageBar:
         return self
 
     def __exit__(self, *exc: Any) -> None:

@@ -11,6 +11,7 @@
 #include "python/src/json_to_python.hpp"
 #include "python/src/numpy_io.hpp"
 #include "python/src/orientation.hpp"
+#include "python/src/progress_callback.hpp"
 
 namespace py = pybind11;
 
@@ -45,16 +46,18 @@ py::dict report_dict(const Checked& c) {
 }
 
 py::dict check(py::handle points, py::handle tets, const std::string& orientation, py::handle duplicates,
-               std::size_t witnesses, bool delaunay, unsigned threads) {
+               std::size_t witnesses, bool delaunay, unsigned threads, const py::object& progress) {
   check_orientation_mode(orientation);
   Tetrahedralization t;
   t.points = input_points(points);
   t.tets = index_rows<4>(tets, t.points.size(), "tets");
   std::vector<std::uint32_t> dups;
   if (!duplicates.is_none()) dups = index_list(duplicates, t.points.size(), "duplicates");
+  std::optional<Progress> listener = python_progress(progress);
   Checked c;
   {
     py::gil_scoped_release nogil;
+    const ProgressScope scope(progress_pointer(listener));
     // t is ours: the owning check renumbers it for locality (the report keeps the caller's ids).
     c.orientation = orient_tets(t, orientation);
     c.report = check_tetrahedralization(std::move(t), {.duplicates = dups, .delaunay = delaunay,
@@ -106,7 +109,8 @@ py::list defect_kinds() {
 
 void bind_check(py::module_& m) {
   m.def("check", &check, py::arg("points"), py::arg("tets"), py::arg("orientation"), py::arg("duplicates"),
-        py::arg("witnesses"), py::arg("delaunay"), py::arg("threads"), "Exact invariant check; returns the raw report (see dtlab.check).");
+        py::arg("witnesses"), py::arg("delaunay"), py::arg("threads"), py::arg("progress") = py::none(),
+        "Exact invariant check; returns the raw report (see dtlab.check).");
   m.def("compare", &compare, py::arg("points"), py::arg("tets_a"), py::arg("tets_b"), py::arg("orientation"),
         "Checks both meshes and compares them canonically (see dtlab.compare).");
   m.def("defect_kinds", &defect_kinds, "The checker's defect kinds, in its order.");

@@ -9,6 +9,7 @@
 #include "python/src/bindings.hpp"
 #include "python/src/json_to_python.hpp"
 #include "python/src/numpy_io.hpp"
+#include "python/src/progress_callback.hpp"
 #include "python/src/triangle_mesh_arrays.hpp"
 
 namespace py = pybind11;
@@ -54,7 +55,8 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
                   const std::string& sampler, bool blue_noise, unsigned threads,
                   const std::vector<std::size_t>& recurse, std::size_t recurse_pieces, const std::string& site_source,
                   py::handle sites, std::optional<std::array<double, 3>> impact, double impact_radius,
-                  double site_noise, bool island_split, std::array<double, 3> cell_scale, double density) {
+                  double site_noise, bool island_split, std::array<double, 3> cell_scale, double density,
+                  const py::object& progress) {
   const auto method = parse_sample_method(sampler);
   if (!method || *method == SampleMethod::surface)
     throw py::value_error("--sampler must be rays, sdf or winding (a volume sampler)");
@@ -78,6 +80,12 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
     if (!(c >= 1e-6 && c <= 1e6)) throw py::value_error("--cell-scale: every factor must be in [1e-06 - 1e+06]");
   o.cell_scale = {cell_scale[0], cell_scale[1], cell_scale[2]};
   if (!(density > 0 && density <= 1e300)) throw py::value_error("--density: must be a positive number");
+  if (!progress.is_none()) {
+    // Called from the boolean workers, one at a time (fracture/cell_boolean.cpp).
+    o.progress = [call = python_callback(progress)](std::size_t done, std::size_t total) {
+      call(ProgressEvent{"fracture:booleans", done, total});
+    };
+  }
   FractureResult r;
   {
     py::gil_scoped_release nogil;
@@ -118,7 +126,8 @@ void bind_fracture(py::module_& m) {
         py::arg("recurse_pieces"), py::arg("site_source") = "sampler", py::arg("sites") = py::none(),
         py::arg("impact") = py::none(), py::arg("impact_radius") = 0.0, py::arg("site_noise") = 0.0,
         py::arg("island_split") = true, py::arg("cell_scale") = std::array<double, 3>{1, 1, 1},
-        py::arg("density") = 1.0, "Voronoi fracture of a closed mesh (see dtlab.fracture).");
+        py::arg("density") = 1.0, py::arg("progress") = py::none(),
+        "Voronoi fracture of a closed mesh (see dtlab.fracture).");
 }
 
 }  // namespace dtlab::python

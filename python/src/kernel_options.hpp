@@ -1,16 +1,16 @@
 #pragma once
 // The kernel options of the Python API (predicates, perturb, boundary, order, seed, eps,
-// eps_mode), validated by the CLI's own option definitions (cli/build_options.hpp), so
-// a bad value raises ValueError with the message `dtlab tetra` prints for it.
+// eps_mode), checked by the options library the CLI uses too (options/kernel_options.hpp),
+// so a bad value raises ValueError with the message `dtlab tetra` prints for it.
 #include <cstdint>
 #include <string>
 
-#include "cli/build_options.hpp"
+#include "options/kernel_options.hpp"
 
 namespace dtlab::python {
 
 struct KernelChoice {
-  cli::KernelArgs args;
+  KernelOptions args;
   PredicateSpec predicates;
   BuildOptions build;
 };

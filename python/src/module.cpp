@@ -1,8 +1,7 @@
 // _core: the compiled half of the `dtlab` Python package. The public API, with its
 // result classes and docstrings, is dtlab/__init__.py; this module does the work.
-#include <CLI/CLI.hpp>
-
 #include "kernel/input_error.hpp"
+#include "options/option_error.hpp"
 #include "python/src/bindings.hpp"
 
 namespace py = pybind11;
@@ -16,7 +15,7 @@ PYBIND11_MODULE(_core, m) {
       if (p) std::rethrow_exception(p);
     } catch (const dtlab::InputError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
-    } catch (const CLI::ParseError& e) {
+    } catch (const dtlab::OptionError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });

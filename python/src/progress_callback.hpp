@@ -1,0 +1,36 @@
+#pragma once
+// progress= of the Python API: a dtlab::Progress (kernel/progress.hpp) that calls a
+// Python callable(done, total, stage). The library calls it from the calling thread
+// while the GIL is released; the call takes the GIL, also runs pending signal handlers
+// (Ctrl-C), and a Python exception propagates out of the library call as
+// py::error_already_set (pybind11 raises it again in Python).
+#include <functional>
+#include <optional>
+
+#include <pybind11/pybind11.h>
+
+#include "kernel/progress.hpp"
+
+namespace dtlab::python {
+
+// The call itself. `callback` must outlive every use (the binding's argument does):
+// copies of the function copy a handle, never a reference count, so they may be made
+// without the GIL.
+inline std::function<void(const ProgressEvent&)> python_callback(const pybind11::object& callback) {
+  const pybind11::handle f = callback;
+  return [f](const ProgressEvent& e) {
+    pybind11::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw pybind11::error_already_set();
+    f(e.done, e.total, pybind11::str(e.stage.data(), e.stage.size()));
+  };
+}
+
+// Empty for None.
+inline std::optional<Progress> python_progress(const pybind11::object& callback) {
+  if (callback.is_none()) return std::nullopt;
+  return Progress(python_callback(callback));
+}
+
+inline Progress* progress_pointer(std::optional<Progress>& p) { return p ? &*p : nullptr; }
+
+}  // namespace dtlab::python
