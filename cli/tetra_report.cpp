@@ -20,6 +20,8 @@ nlohmann::json tetra_summary(const BuildResult& r, const KernelArgs& k) {
   j["walk_steps"] = r.stats.walk_steps;
   j["orient3d_calls"] = r.stats.orient3d_calls;
   j["insphere_calls"] = r.stats.insphere_calls;
+  j["build_threads"] = r.stats.threads;
+  j["conflicts"] = r.stats.conflicts;  // parallel build: insertions rolled back and retried
   for (const auto& [stage, count] : r.stats.stages) j["adaptive_stages"][stage] = count;
   if (r.failure)
     j["failure"] = {{"kind", failure_name(r.failure->kind)}, {"point", r.failure->point}, {"detail", r.failure->detail}};
@@ -37,6 +39,9 @@ void print_tetra_summary(std::FILE* out, const BuildResult& r, const std::string
                (unsigned long long)r.stats.flips32, (unsigned long long)r.stats.flips44,
                (unsigned long long)r.stats.walk_steps, (unsigned long long)r.stats.orient3d_calls,
                (unsigned long long)r.stats.insphere_calls);
+  if (r.stats.threads > 1)
+    std::fprintf(out, "built on %u threads; %llu insertions met another thread's tets and were retried\n",
+                 r.stats.threads, (unsigned long long)r.stats.conflicts);
   if (!r.stats.stages.empty()) {
     std::fprintf(out, "adaptive stages:");
     for (const auto& [stage, count] : r.stats.stages) std::fprintf(out, " %s %llu", stage.c_str(), (unsigned long long)count);

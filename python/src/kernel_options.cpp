@@ -19,6 +19,7 @@ KernelChoice kernel_choice(const std::string& predicates, const std::string& per
   app.parse(argv);                         // CLI::ParseError -> ValueError (module.cpp)
   k.predicates = k.args.predicate_spec();
   k.build = k.args.build_options();
+  k.build.threads = 1;  // a serial build unless the caller asks for threads (tetrahedralize's threads=)
   return k;
 }
 
