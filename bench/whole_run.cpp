@@ -50,9 +50,10 @@ ChildReport run_in_child(const std::string& tool, std::vector<Point3>& points,
     rep.tets = r.mesh.tets.size();
     if (r.failure) std::snprintf(rep.note, sizeof rep.note, "%s", failure_name(r.failure->kind));
   };
-  if (tool == "dtlab") {
+  if (tool == "dtlab" || tool == "dtlab-serial") {
     BuildOptions timed = options;
     timed.count_stages = false;  // no per-call counting in timed runs
+    timed.threads = tool == "dtlab" ? threads : 1;
     const auto t0 = std::chrono::steady_clock::now();
     // The child's copy of the caller's points is handed to the build, as a program that
     // read them would: one copy of the points at the peak.
@@ -67,6 +68,7 @@ ChildReport run_in_child(const std::string& tool, std::vector<Point3>& points,
     BuildOptions timed = options;
     timed.count_stages = false;
     timed.order = InsertionOrder::input;
+    timed.threads = 1;
     report_build(build_delaunay(std::move(sorted), spec, timed), t0);
   } else if (tool == "cgal") {
     OracleRun r = cgal_delaunay(points);

@@ -24,9 +24,10 @@ struct RunMeasure {
 };
 
 // One run of `tool` on `points` in a forked child (the child may consume its copy of
-// `points`; the caller's is unchanged). Tools: dtlab, dtlab-cgal-order, cgal, tetgen,
-// and the parallel peers cgal-parallel and gmsh-hxt on `threads` threads (in their
-// helper process, as `dtlab oracle` runs them; peak memory is the helper's).
+// `points`; the caller's is unchanged). Tools: dtlab (on `threads` threads), dtlab-serial,
+// dtlab-cgal-order (serial), cgal, tetgen, and the parallel peers cgal-parallel and
+// gmsh-hxt on `threads` threads (in their helper process, as `dtlab oracle` runs them;
+// peak memory is the helper's).
 RunMeasure measure_run(const std::string& tool, std::vector<Point3>& points,
                        const PredicateSpec& spec, const BuildOptions& options, unsigned threads = 1);
 

@@ -23,8 +23,8 @@ enum KernelOption : unsigned {
   kSeedOption = 1u << 5,
   kAllKernelOptions = (1u << 6) - 1,
   // --threads: not in kAllKernelOptions (voronoi and fracture have their own), named
-  // by the commands that take it. The build itself is serial; the threads run the
-  // exact check and the writers (kernel/README.md, "Threads").
+  // by the commands that take it: the build, the exact check and the writers
+  // (kernel/README.md, "The parallel build").
   kThreadsOption = 1u << 6,
 };
 

@@ -49,13 +49,18 @@ int run_bench(const BenchArgs& a) {
       const auto n = static_cast<std::size_t>(size);
       std::vector<Point3> points = generate_points(dist, n, a.seed);
       malloc_trim(0);  // what generating them freed goes back to the system before the children fork
-      for (const std::string& tool : a.tools) {
-        BenchRow row{dist, n, tool, {}};
-        for (int r = 0; r < a.runs; ++r) {
-          progress.update("runs", done, total, dist + " n=" + std::to_string(n) + " " + tool);
-          row.runs.push_back(measure_run(tool, points, spec, options, thread_count(a.kernel.threads)));
+      // Runs alternate between the tools (round r runs every tool once), so that a change
+      // of the machine's load spreads over all of them.
+      std::vector<BenchRow> rows;
+      for (const std::string& tool : a.tools) rows.push_back(BenchRow{dist, n, tool, {}});
+      for (int r = 0; r < a.runs; ++r)
+        for (BenchRow& row : rows) {
+          progress.update("runs", done, total, dist + " n=" + std::to_string(n) + " " + row.tool);
+          row.runs.push_back(measure_run(row.tool, points, spec, options, thread_count(a.kernel.threads)));
           ++done;
         }
+      for (const BenchRow& row : rows) {
+        const std::string& tool = row.tool;
         const bool any = row.median_seconds() > 0;
         const RunMeasure& last = row.runs.back();
         // Measured: the child's peak resident memory over the finite tets.
@@ -66,8 +71,8 @@ int run_bench(const BenchArgs& a) {
                             {"tets", last.tets},
                             {"bytes_per_tet", bytes_per_tet},
                             {"runs", a.runs}, {"note", last.note}};
-        // The threads the tool ran on: the parallel peers take --threads, the rest is serial.
-        j["threads"] = tool == "cgal-parallel" || tool == "gmsh-hxt" ? thread_count(a.kernel.threads) : 1u;
+        // The threads the tool ran on: dtlab and the parallel peers take --threads, the rest is serial.
+        j["threads"] = tool == "cgal-parallel" || tool == "gmsh-hxt" || tool == "dtlab" ? thread_count(a.kernel.threads) : 1u;
         all.push_back(j);
         if (a.json) continue;
         if (!any) {
@@ -100,10 +105,10 @@ void add_bench_command(CLI::App& app, int& rc) {
                   "(--dist is the old spelling)")
       ->delimiter(',')->capture_default_str();
   sub->add_option("--tools", args->tools,
-                  "dtlab, cgal, tetgen; dtlab-cgal-order: dtlab inserting in CGAL's spatial_sort order; "
-                  "cgal-parallel, gmsh-hxt: the parallel peers on --threads threads")
+                  "dtlab (on --threads threads), dtlab-serial (one thread), cgal, tetgen; dtlab-cgal-order: serial dtlab "
+                  "inserting in CGAL's spatial_sort order; cgal-parallel, gmsh-hxt: the parallel peers on --threads threads")
       ->delimiter(',')
-      ->check(CLI::IsMember({"dtlab", "cgal", "tetgen", "dtlab-cgal-order", "cgal-parallel", "gmsh-hxt"}))
+      ->check(CLI::IsMember({"dtlab", "dtlab-serial", "cgal", "tetgen", "dtlab-cgal-order", "cgal-parallel", "gmsh-hxt"}))
       ->capture_default_str();
   sub->add_option("--runs", args->runs, "runs per tool and size (median reported)")->transform(count_in(1, 1000))->capture_default_str();
   sub->add_option("--points-seed", args->seed, "seed of the generated points")->check(seed_value())->capture_default_str();

@@ -29,6 +29,7 @@
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/summary.hpp"
+#include "kernel/canonical_order.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
@@ -93,10 +94,30 @@ std::vector<PredicateSpec> backends_of(const FuzzArgs& a) {
   return specs;
 }
 
+// --against serial (with --threads above 1): the threaded build against the serial one, tet
+// for tet. Only for one backend with sos, where the tetrahedralization is unique (without
+// perturbation two valid builds may differ; the checker judges those).
+fuzz::OracleHook serial_hook(const std::vector<PredicateSpec>& backends, const BuildOptions& build) {
+  if (build.threads == 1) usage_error("--against serial compares a threaded build: give --threads 0 or above 1");
+  if (backends.size() != 1 || !backends[0].perturb)
+    usage_error("--against serial needs exactly one backend, with --perturb sos (the only unique answer)");
+  BuildOptions serial = build;
+  serial.threads = 1;
+  return {"serial", [spec = backends[0], serial](std::span<const Point3> points, const BuildResult& ours) -> std::string {
+            if (ours.failure) return "";
+            const BuildResult r = build_delaunay(points, spec, serial);
+            if (r.failure) return "serial-failed";
+            std::vector<Tet> tets = r.mesh.tets;
+            canonical_order(tets, points.size(), 1);
+            if (r.duplicates != ours.duplicates) return "duplicates-differ";
+            return tets == ours.mesh.tets ? "" : "tets-differ";
+          }};
+}
+
 std::vector<fuzz::OracleHook> oracles_of(const std::string& names) {
   std::vector<fuzz::OracleHook> hooks;
   for (const auto& name : split(names)) {
-    if (name == "none") continue;
+    if (name == "none" || name == "serial") continue;  // serial: serial_hook
     if (!is_peer_name(name)) usage_error("unknown oracle '" + name + "' (none, or peers: see dtlab oracle --help)");
     // The peer runs in its own process and its answer counts only when the checker
     // proves it Delaunay: its crash, time-out or wrong answer is "no answer", never
@@ -355,7 +376,11 @@ int run_fuzz(const FuzzArgs& a) {
   o.seed = a.seed;
   o.backends = backends_of(a);
   o.build = a.kernel.build_options();  // boundary and order; the seed is set per case
+  // Threaded builds split every case across the threads, however small it is.
+  if (o.build.threads != 1) o.build.parallel_grain = 1;
   o.oracles = oracles_of(a.oracle);
+  for (const auto& name : split(a.oracle))
+    if (name == "serial") o.oracles.push_back(serial_hook(o.backends, o.build));
   o.jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
   o.out_dir = a.out;
   if (!a.shard.empty()) {
@@ -392,11 +417,13 @@ void add_fuzz_command(CLI::App& app, int& rc) {
                                "comma list of naive, epsilon, adaptive, exact, plugin:PATH.so")
                    ->capture_default_str();
   sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();
-  args->kernel.add_to(*sub, kEpsOption | kBoundaryOption | kOrderOption);
+  args->kernel.threads = 1;  // one build per job by default (--jobs runs the cases in parallel)
+  args->kernel.add_to(*sub, kEpsOption | kBoundaryOption | kOrderOption | kThreadsOption);
   sub->add_flag_callback(
       "--relative-eps", [args] { args->kernel.eps_mode = "relative"; }, "the old spelling of --eps-mode relative");
   sub->add_option("--against,--oracle", args->oracle,
                   "none, or a comma list of peers to compare with (cgal, tetgen, qhull, ...), as in `dtlab oracle`; "
+                  "serial: a --threads build against the serial build, tet for tet (one backend, sos); "
                   "--oracle is the old spelling")
       ->capture_default_str();
   sub->add_option("--target", args->target,

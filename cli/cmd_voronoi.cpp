@@ -87,6 +87,7 @@ int run_voronoi(const VoronoiArgs& a) {
   o.predicates = a.kernel.predicate_spec();
   o.build = a.kernel.build_options();
   o.threads = a.threads;
+  o.build.threads = a.threads;  // the Delaunay build too
   if (!a.box.empty()) {
     if (a.box.size() != 6 || !(a.box[0] < a.box[3] && a.box[1] < a.box[4] && a.box[2] < a.box[5]))
       throw UsageError("--box needs xmin ymin zmin xmax ymax zmax with min < max");
@@ -171,7 +172,7 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   sub->add_option("--box", args->box, "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
       ->expected(6)->check(number_in(-1e300, 1e300));
   sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->check(number_in(0, 1e6))->capture_default_str();
-  sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->transform(count_in(0, 1024))->capture_default_str();
+  sub->add_option("--threads", args->threads, "threads for the Delaunay build and the cells (0: all)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
       ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();

@@ -13,6 +13,9 @@ void print_tetra_summary(std::FILE* out, const BuildResult& r, const std::string
                (unsigned long long)r.stats.flips32, (unsigned long long)r.stats.flips44,
                (unsigned long long)r.stats.walk_steps, (unsigned long long)r.stats.orient3d_calls,
                (unsigned long long)r.stats.insphere_calls);
+  if (r.stats.threads > 1)
+    std::fprintf(out, "built on %u threads; %llu insertions met another thread's tets and were retried\n",
+                 r.stats.threads, (unsigned long long)r.stats.conflicts);
   if (!r.stats.stages.empty()) {
     std::fprintf(out, "adaptive stages:");
     for (const auto& [stage, count] : r.stats.stages) std::fprintf(out, " %s %llu", stage.c_str(), (unsigned long long)count);

@@ -24,6 +24,15 @@ struct BuildOptions {
   // Count which adaptive stage decided each predicate call (BuildStats::stages): an
   // increment through a pointer on every call, so benchmarks turn it off.
   bool count_stages = true;
+  // Threads of the insertion (kernel/README.md, "The parallel build"); 0: all hardware
+  // threads, 1: the serial build. With --perturb sos the tets are the same for every
+  // count; threaded builds list them in a canonical order (each tet from its smallest
+  // vertex, sorted), so their output does not depend on the schedule either.
+  unsigned threads = 1;
+  // A pass of the parallel build gives each thread at least this many points (fewer
+  // points: fewer threads, down to the serial insertion). Tests and fuzz campaigns set
+  // it to 1 so that even small inputs run on every thread.
+  std::size_t parallel_grain = 2048;
 };
 
 // The runtime predicate choice: backend name (naive|epsilon|adaptive|exact),
@@ -57,6 +66,10 @@ struct BuildStats {
   std::uint64_t flips14 = 0, flips23 = 0, flips32 = 0, flips44 = 0;
   std::uint64_t walk_steps = 0;
   std::uint64_t orient3d_calls = 0, insphere_calls = 0;
+  // Parallel build: insertions rolled back because another thread held a tet (their
+  // flips and predicate calls are counted above), and the threads used.
+  std::uint64_t conflicts = 0;
+  unsigned threads = 1;
   double seconds = 0;  // wall time of the insertion loop
   // Which stage of the adaptive predicates decided how many calls ("insphere:A", ...).
   std::vector<std::pair<std::string, std::uint64_t>> stages;

@@ -15,10 +15,14 @@
 #endif
 
 #include "kernel/build.hpp"
+#include "kernel/canonical_order.hpp"
 #include "kernel/enclosing_tet.hpp"
 #include "kernel/ids.hpp"
+#include "kernel/insertion_log.hpp"
 #include "kernel/inserter.hpp"
+#include "kernel/parallel_build.hpp"
 #include "kernel/progress.hpp"
+#include "kernel/parallel_for.hpp"
 #include "kernel/spatial_order.hpp"
 
 namespace dtlab {
@@ -52,28 +56,27 @@ inline const char* release_pages(const char* begin, const char* end) {
 }
 
 // The finite live tets, vertex ids translated back to input indices (vertex v is
-// input point order[v]). The records are released as they are read and freed at the
-// end: the mesh cannot be used afterwards.
-inline void compact(std::vector<TetRecord>& records, std::uint32_t n, const std::vector<std::uint32_t>& order,
+// input point order[v]). The records' pages are handed back as they are read (the caller
+// frees the buffer): the mesh cannot be used afterwards.
+inline void compact(TetRecord* records, std::size_t size, std::uint32_t n, const std::vector<std::uint32_t>& order,
                     std::vector<Tet>& out) {
   const auto finite = [n](const TetRecord& r) {
     return r.v[0] < n && r.v[1] < n && r.v[2] < n && r.v[3] < n;  // dead tets have v[0] == kNone
   };
   std::size_t count = 0;
-  for (const TetRecord& r : records) count += finite(r);
+  for (std::size_t t = 0; t < size; ++t) count += finite(records[t]);
   out.clear();
   out.reserve(count);
   constexpr std::size_t kChunk = 1 << 15;  // records between two releases (1 MiB)
-  const char* unreleased = reinterpret_cast<const char*>(records.data());
-  for (std::size_t start = 0; start < records.size(); start += kChunk) {
-    const std::size_t stop = std::min(records.size(), start + kChunk);
+  const char* unreleased = reinterpret_cast<const char*>(records);
+  for (std::size_t start = 0; start < size; start += kChunk) {
+    const std::size_t stop = std::min(size, start + kChunk);
     for (std::size_t t = start; t < stop; ++t) {
       const TetRecord& r = records[t];
       if (finite(r)) out.push_back({order[r.v[0]], order[r.v[1]], order[r.v[2]], order[r.v[3]]});
     }
-    unreleased = release_pages(unreleased, reinterpret_cast<const char*>(records.data() + stop));
+    unreleased = release_pages(unreleased, reinterpret_cast<const char*>(records + stop));
   }
-  std::vector<TetRecord>().swap(records);
 }
 
 // Moves points[k] to position order[k] in place (order is consumed: it ends as the
@@ -96,6 +99,20 @@ inline void apply_insertion_order(std::vector<Point3>& points, const std::vector
 }
 
 }  // namespace detail
+
+// The insertion loop's report in input indices. A duplicate's vertex stands for the first
+// occurrence in input order (the smallest input index of its copies): each pair swaps the
+// two indices when the point not inserted came first, in any order of the pairs.
+inline void resolve_log(BuildResult& res, const InsertionLog& log, std::vector<std::uint32_t>& order) {
+  for (const auto& [k, v] : log.duplicates) {
+    if (order[k] < order[v]) std::swap(order[k], order[v]);
+    res.duplicates.push_back(order[k]);
+  }
+  std::sort(res.duplicates.begin(), res.duplicates.end());
+  if (log.failure) res.failure = BuildFailure{log.failure->kind, order[log.failure->rank], log.failure->detail};
+  for (const std::uint32_t k : log.skipped) res.skipped.push_back(order[k]);
+  std::sort(res.skipped.begin(), res.skipped.end());
+}
 
 // `pts` holds the input points in input order; the build owns it, permutes it in place
 // and hands it back in input order as the result's points (no second copy).
@@ -176,43 +193,70 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
     if (pred.orient3d(pts[n], pts[n + 1], pts[n + 2], pts[n + 3]) < 0) std::swap(first[0], first[1]);
   }
 
-  Inserter<B> ins(pts.data(), pred, inf, opt.seed);
-  ins.reserve(n);
-  ins.start(first[0], first[1], first[2], first[3]);
-  const auto t0 = std::chrono::steady_clock::now();
   const bool infinite = opt.boundary == Boundary::infinite;
   const auto is_first = [&](std::uint32_t k) {
     return infinite && (k == first[0] || k == first[1] || k == first[2] || k == first[3]);
   };
-  if (infinite) ins.stats().inserted = 4;
+  const unsigned threads = std::min(thread_count(opt.threads), kMaxBuildThreads);
+  InsertionLog log;
   Progress* const progress = thread_progress();  // stage "insert": points of the order done
   progress_begin(progress, "insert", n);
-  for (std::uint32_t k = 0; k < n; ++k) {
-    progress_advance(progress, k);
-    if (is_first(k)) continue;
-    const auto outcome = ins.insert(k);
-    if (outcome == Inserter<B>::Outcome::duplicate) {
-      // The vertex stands for the first occurrence in input order, the others are
-      // its duplicates (their coordinates are equal: nothing else changes).
-      const std::uint32_t v = ins.found();
-      if (order[k] < order[v]) std::swap(order[k], order[v]);
-      res.duplicates.push_back(order[k]);
-    } else if (outcome == Inserter<B>::Outcome::failed) {
-      res.failure = BuildFailure{ins.failure(), order[k], ins.failure_detail()};
-      for (std::uint32_t j = k; j < n; ++j)
-        if (!is_first(j)) res.skipped.push_back(order[j]);
-      std::sort(res.skipped.begin(), res.skipped.end());
-      break;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (threads <= 1) {
+    Inserter<B> ins(pts.data(), pred, inf, opt.seed);
+    ins.reserve(n);
+    ins.start(first[0], first[1], first[2], first[3]);
+    if (infinite) ins.stats().inserted = 4;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      progress_advance(progress, k);
+      if (is_first(k)) continue;
+      const auto outcome = ins.insert(k);
+      if (outcome == Inserter<B>::Outcome::duplicate) {
+        log.duplicates.push_back({k, ins.found()});
+      } else if (outcome == Inserter<B>::Outcome::failed) {
+        log.failure = InsertionLog::Failure{k, ins.failure(), ins.failure_detail()};
+        for (std::uint32_t j = k; j < n; ++j)
+          if (!is_first(j)) log.skipped.push_back(j);
+        break;
+      }
     }
+    res.stats = ins.stats();
+    res.stats.orient3d_calls = ins.geometry().orient_calls;
+    res.stats.insphere_calls = ins.geometry().insphere_calls;
+    res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    res.peak_tets = ins.mesh().size();
+    resolve_log(res, log, order);
+    std::vector<TetRecord>& records = ins.mesh().records();
+    detail::compact(records.data(), records.size(), n, order, res.mesh.tets);
+    std::vector<TetRecord>().swap(records);
+  } else {
+    ParallelInsertion<B> par(pts.data(), n, inf, pred, opt, threads);
+    par.start(first, 4);
+    // BRIO rounds one after the other (the input order is one round).
+    const std::vector<std::size_t> rounds =
+        opt.order == InsertionOrder::brio ? brio_rounds(n) : std::vector<std::size_t>{0, n};
+    for (std::size_t r = 0; r + 1 < rounds.size(); ++r) {
+      progress_advance(progress, rounds[r]);  // on the calling thread, between rounds
+      std::vector<std::uint32_t> list;
+      list.reserve(rounds[r + 1] - rounds[r]);
+      for (std::size_t k = rounds[r]; k < rounds[r + 1]; ++k)
+        if (!is_first(static_cast<std::uint32_t>(k))) list.push_back(static_cast<std::uint32_t>(k));
+      if (!par.insert(std::move(list), log)) {
+        for (std::size_t k = rounds[r + 1]; k < n; ++k)
+          if (!is_first(static_cast<std::uint32_t>(k))) log.skipped.push_back(static_cast<std::uint32_t>(k));
+        break;
+      }
+    }
+    res.stats = par.finish();
+    if (infinite) res.stats.inserted += 4;
+    res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    res.peak_tets = par.store().size();
+    resolve_log(res, log, order);
+    detail::compact(par.store().records(), par.store().size(), n, order, res.mesh.tets);
+    std::free(par.store().release_records());
+    canonical_order(res.mesh.tets, n, threads);
   }
   if (!res.failure) progress_advance(progress, n);
-  res.stats = ins.stats();
-  res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  res.stats.orient3d_calls = ins.geometry().orient_calls;
-  res.stats.insphere_calls = ins.geometry().insphere_calls;
-  res.peak_tets = ins.mesh().size();
-  std::sort(res.duplicates.begin(), res.duplicates.end());
-  detail::compact(ins.mesh().records(), n, order, res.mesh.tets);
   pts.resize(n);
   detail::restore_input_order(pts, order);
   res.mesh.points = std::move(pts);

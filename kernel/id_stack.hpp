@@ -23,6 +23,9 @@ class IdStack {
     if (n > capacity_) grow(n);
   }
   std::size_t capacity() const { return capacity_; }
+  const std::uint32_t* begin() const { return data_.get(); }
+  const std::uint32_t* end() const { return data_.get() + size_; }
+  std::uint32_t operator[](std::size_t i) const { return data_[i]; }
 
  private:
   [[gnu::noinline]] void grow(std::size_t need) {

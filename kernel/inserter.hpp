@@ -42,6 +42,7 @@
 #include <utility>
 
 #include "kernel/build.hpp"
+#include "kernel/claimed_mesh.hpp"
 #include "kernel/geometry.hpp"
 #include "kernel/id_stack.hpp"
 #include "kernel/ids.hpp"
@@ -50,14 +51,22 @@
 
 namespace dtlab {
 
-template <PredicateBackend B>
+// Mesh: TetMesh (the serial build) or ClaimedMesh (one thread of the parallel build,
+// kernel/claimed_mesh.hpp). The flip code is the same; it calls mesh_.claim(t) before it
+// first reads a tet that it reached by adjacency and that it did not create in this
+// insertion (a no-op on TetMesh); every other tet it reads is one it created or one whose
+// adjacency it wrote (ClaimedMesh::link claims the far tet). With ClaimedMesh an insertion
+// that meets another thread's tet is rolled back whole (Outcome::conflict).
+template <PredicateBackend B, class Mesh = TetMesh>
 class Inserter {
  public:
-  enum class Outcome { inserted, duplicate, failed };
+  // conflict: another thread held a tet (ClaimedMesh only; nothing changed, retry later).
+  // no_room: the shared storage is full (ClaimedMesh only; nothing changed, grow and retry).
+  enum class Outcome { inserted, duplicate, failed, conflict, no_room };
 
   // points: indexed by vertex id; inf the infinite vertex's id, or kNone (bigtet).
-  Inserter(const Point3* points, const B& pred, std::uint32_t inf, std::uint64_t seed)
-      : geo_(points, pred, inf), rng_(seed * 0x9E3779B97F4A7C15ull + 1) {}
+  Inserter(const Point3* points, const B& pred, std::uint32_t inf, std::uint64_t seed, Mesh mesh = Mesh{})
+      : mesh_(std::move(mesh)), geo_(points, pred, inf), rng_(seed * 0x9E3779B97F4A7C15ull + 1) {}
 
   // The first tet (positively oriented) and, with an infinite vertex, the four
   // infinite tets on its facets: the one on facet f is the first tet with vertex f
@@ -67,7 +76,45 @@ class Inserter {
     const std::uint32_t t0 = mesh_.create(a, b, c, d);
     last_ = t0;
     geo_.set_first_tet(a, b, c, d);
-    if (geo_.infinite() == kNone) return;
+    if (geo_.infinite() != kNone) add_infinite_tets(t0);
+    if constexpr (Mesh::kClaims) mesh_.commit();
+  }
+
+  // Inserts vertex p. On Outcome::duplicate, found() is the vertex equal to p.
+  Outcome insert(std::uint32_t p) {
+    if constexpr (Mesh::kClaims) {
+      const std::uint32_t last = last_;
+      try {
+        const Outcome o = insert_unclaimed(p);
+        mesh_.commit();  // also after a named failure: the mesh stays as it stands
+        return o;
+      } catch (const ClaimConflict& c) {
+        mesh_.rollback();
+        stack_.clear();
+        last_ = last;
+        return c.out_of_slots ? Outcome::no_room : Outcome::conflict;
+      }
+    } else {
+      return insert_unclaimed(p);
+    }
+  }
+
+  std::uint32_t found() const { return found_; }
+  Mesh& mesh() { return mesh_; }
+  Geometry<B>& geometry() { return geo_; }
+  BuildStats& stats() { return stats_; }
+  FailureKind failure() const { return failure_; }
+  const std::string& failure_detail() const { return detail_; }
+  void reserve(std::size_t points) {
+    if constexpr (!Mesh::kClaims) mesh_.reserve(7 * points + 64);
+    stack_.reserve(1024);
+  }
+
+ private:
+  // The four infinite tets on the facets of the first tet t0 = (a,b,c,d).
+  void add_infinite_tets(std::uint32_t t0) {
+    const std::uint32_t a = mesh_.vertex(t0, 0), b = mesh_.vertex(t0, 1), c = mesh_.vertex(t0, 2),
+                        d = mesh_.vertex(t0, 3);
     std::uint32_t tets[5] = {t0};
     for (int f = 0; f < 4; ++f) {
       std::uint32_t v[4] = {a, b, c, d};
@@ -83,8 +130,7 @@ class Inserter {
               mesh_.link(4 * tets[i] + f, 4 * tets[j] + g);
   }
 
-  // Inserts vertex p. On Outcome::duplicate, found() is the vertex equal to p.
-  Outcome insert(std::uint32_t p) {
+  Outcome insert_unclaimed(std::uint32_t p) {
     std::uint32_t t;
     bool on_boundary = false;
     if (!locate(p, t, on_boundary)) return Outcome::failed;
@@ -100,18 +146,6 @@ class Inserter {
     return Outcome::inserted;
   }
 
-  std::uint32_t found() const { return found_; }
-  TetMesh& mesh() { return mesh_; }
-  Geometry<B>& geometry() { return geo_; }
-  BuildStats& stats() { return stats_; }
-  FailureKind failure() const { return failure_; }
-  const std::string& failure_detail() const { return detail_; }
-  void reserve(std::size_t points) {
-    mesh_.reserve(7 * points + 64);
-    stack_.reserve(1024);
-  }
-
- private:
   std::uint32_t next_random() {
     rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
     return static_cast<std::uint32_t>(rng_ >> 32);
@@ -136,9 +170,7 @@ class Inserter {
   // voids both arguments, so the walk is also bounded: walk-cycle after
   // 1000 + 2 tets steps.
   bool locate(std::uint32_t p, std::uint32_t& out, bool& on_boundary) {
-    std::uint32_t t = last_;
-    if (mesh_.dead(t))
-      for (t = 0; mesh_.dead(t); ++t) {}
+    std::uint32_t t = mesh_.walk_start(last_, Mesh::kClaims ? next_random() : 0);
     std::uint32_t entry = kNone;
     const std::uint64_t max_steps = 1000 + 2 * std::uint64_t(mesh_.live());
     for (std::uint64_t step = 0; step < max_steps; ++step) {
@@ -159,6 +191,7 @@ class Inserter {
             return fail(FailureKind::outside_boundary, "point lies outside the enclosing tetrahedron");
           entry = nb;
           t = nb >> 2;
+          mesh_.claim(t);
           moved = true;
         }
       }
@@ -224,6 +257,7 @@ class Inserter {
       const std::uint32_t across = mesh_.adj(facet);
       if (across == kNone) continue;  // the outside of a bigtet
       r.ta = across >> 2, r.ja = across & 3;
+      mesh_.claim(r.ta);
       int ta_side[4];
       if (!geo_.conflict(mesh_.verts(r.ta), p, ta_side)) continue;
       if (++flips > max_flips)
@@ -386,6 +420,7 @@ class Inserter {
     const std::uint32_t n2f = mesh_.adj(4 * r.ta + r.in_ta[x_pos]);
     if (n2f == kNone) return true;
     const std::uint32_t n1 = n1f >> 2, n2 = n2f >> 2;
+    mesh_.claim(n2);
     const std::uint32_t e = mesh_.apex(n1f);
     if (mesh_.apex(n2f) != e) return true;
     std::uint32_t tv[4], nv[4];
@@ -451,7 +486,7 @@ class Inserter {
     return true;
   }
 
-  TetMesh mesh_;
+  Mesh mesh_;
   Geometry<B> geo_;
   std::uint64_t rng_;
   std::uint32_t last_ = 0;

@@ -18,4 +18,8 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, i
 // the points) largest, each round Hilbert-sorted.
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed);
 
+// The rounds of brio_order for n points, first to last: positions [r[k], r[k+1]) of
+// the order, r.front() == 0, r.back() == n.
+std::vector<std::size_t> brio_rounds(std::size_t n);
+
 }  // namespace dtlab

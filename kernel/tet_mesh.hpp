@@ -27,6 +27,17 @@ static_assert(sizeof(TetRecord) == 32);
 
 class TetMesh {
  public:
+  // The serial mesh: nothing to claim (kernel/claimed_mesh.hpp is the parallel build's view).
+  static constexpr bool kClaims = false;
+  void claim(std::uint32_t) const {}
+  // Where a walk starts: `hint`, or the first live tet when it died.
+  std::uint32_t walk_start(std::uint32_t hint, std::uint32_t) const {
+    std::uint32_t t = hint;
+    if (dead(t))
+      for (t = 0; dead(t); ++t) {}
+    return t;
+  }
+
   std::uint32_t size() const { return static_cast<std::uint32_t>(tets_.size()); }
   std::uint32_t live() const { return size() - static_cast<std::uint32_t>(free_.size()); }
   bool dead(std::uint32_t t) const { return tets_[t].v[0] == kNone; }

@@ -18,6 +18,8 @@ nlohmann::json tetra_summary(const BuildResult& r, const KernelOptions& k) {
   j["walk_steps"] = r.stats.walk_steps;
   j["orient3d_calls"] = r.stats.orient3d_calls;
   j["insphere_calls"] = r.stats.insphere_calls;
+  j["build_threads"] = r.stats.threads;
+  j["conflicts"] = r.stats.conflicts;  // parallel build: insertions rolled back and retried
   for (const auto& [stage, count] : r.stats.stages) j["adaptive_stages"][stage] = count;
   if (r.failure)
     j["failure"] = {

@@ -53,14 +53,17 @@ def _count(value: int, name: str) -> int:
 def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "sos",
                    boundary: str = "infinite", order: str = "brio", seed: int = 1, *,
                    eps: float = 1e-12, eps_mode: str = "absolute",
-                   raise_on_failure: bool = True, progress: ProgressArg = None) -> Tetrahedralization:
+                   raise_on_failure: bool = True, threads: int = 1,
+                   progress: ProgressArg = None) -> Tetrahedralization:
     """The Delaunay tetrahedralization of an (n, 3) array of points.
 
     predicates: "naive", "epsilon", "adaptive" (Shewchuk, the default) or "exact" (GMP);
     perturb: "sos" (symbolic perturbation: a unique answer on degenerate input, CGAL's)
     or "none"; boundary: "infinite" or "bigtet[:FACTOR]" (the thesis's enclosing
     tetrahedron); order: "brio" or "input"; seed: of the BRIO rounds and the walk;
-    eps, eps_mode ("absolute" or "relative"): the epsilon backend's band.
+    eps, eps_mode ("absolute" or "relative"): the epsilon backend's band. threads: of the
+    build (0: all cores); with perturb="sos" the tets are the same for every count, and a
+    threaded build lists them in a canonical order (each from its smallest vertex, sorted).
 
     Returns a Tetrahedralization with tets ((m, 4) uint32, positive orientation),
     duplicates, stats and failure. Fewer than 4 points or an input with all points
@@ -68,12 +71,16 @@ def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "so
     failure (walk-cycle, flip-stuck, inconsistent-adjacency, outside-boundary): that
     raises BuildFailure carrying the partial mesh, or, with raise_on_failure=False,
     comes back in `failure`. progress: None, True (a tqdm bar) or a callable
-    progress(done, total, "insert") called about every n/1000 points inserted; what
+    progress(done, total, "insert") called about every n/1000 points inserted (once per
+    BRIO round when threads > 1); what
     it raises (KeyboardInterrupt too) stops the build and propagates.
     """
+    nthreads = _count(threads, "threads")
+    if nthreads > 1024:
+        raise ValueError(f"threads: expected at most 1024, got {threads!r}")
     with StageBar(progress, "tetrahedralize") as bar:
         raw = _core.tetrahedralize(points, predicates, perturb, boundary, order, _seed(seed), float(eps), eps_mode,
-                                   bar.callback)
+                                   nthreads, bar.callback)
     summary = dict(raw["summary"])
     f = summary.pop("failure")
     summary.pop("duplicates")

@@ -18,8 +18,9 @@ namespace {
 // {"tets", "duplicates", "skipped", "summary"}: summary is `dtlab tetra --json`'s.
 py::dict tetrahedralize(py::handle points, const std::string& predicates, const std::string& perturb,
                         const std::string& boundary, const std::string& order, std::uint64_t seed, double eps,
-                        const std::string& eps_mode, const py::object& progress) {
-  const KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
+                        const std::string& eps_mode, unsigned threads, const py::object& progress) {
+  KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
+  k.build.threads = threads;  // 0: all hardware threads
   const DoubleArray pts = point_array(points, "points");
   std::optional<Progress> listener = python_progress(progress);
   BuildResult r;
@@ -42,7 +43,7 @@ py::dict tetrahedralize(py::handle points, const std::string& predicates, const 
 void bind_tetrahedralize(py::module_& m) {
   m.def("tetrahedralize", &tetrahedralize, py::arg("points"), py::arg("predicates"), py::arg("perturb"),
         py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"),
-        py::arg("progress") = py::none(),
+        py::arg("threads") = 1u, py::arg("progress") = py::none(),
         "Builds the Delaunay tetrahedralization; returns the raw result (see dtlab.tetrahedralize).");
 }
 

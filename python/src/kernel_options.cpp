@@ -9,6 +9,7 @@ KernelChoice kernel_choice(const std::string& predicates, const std::string& per
   k.args.validate();  // OptionError -> ValueError (module.cpp)
   k.predicates = k.args.predicate_spec();
   k.build = k.args.build_options();
+  k.build.threads = 1;  // a serial build unless the caller asks for threads (tetrahedralize's threads=)
   return k;
 }
 

@@ -1,0 +1,155 @@
+// The parallel build (kernel/README.md, "The parallel build"): with --perturb sos the same
+// tets as the serial build at every thread count, run after run; without perturbation a
+// valid Delaunay tetrahedralization; non-robust backends end with a named failure or a
+// result, never a hang or a crash. Identity and validity only: speed is benchmarked.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+
+#include "delaunay_check.hpp"
+#include "kernel/build.hpp"
+#include "kernel/canonical_order.hpp"
+
+using namespace dtlab;
+
+namespace {
+
+std::vector<Point3> uniform(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Point3> pts(n);
+  for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
+  return pts;
+}
+
+// A k^3 integer lattice, shuffled: cospherical and coplanar sets everywhere.
+std::vector<Point3> lattice(int k, std::uint64_t seed) {
+  std::vector<Point3> pts;
+  for (int x = 0; x < k; ++x)
+    for (int y = 0; y < k; ++y)
+      for (int z = 0; z < k; ++z) pts.push_back({double(x), double(y), double(z)});
+  std::mt19937_64 rng(seed);
+  std::shuffle(pts.begin(), pts.end(), rng);
+  return pts;
+}
+
+// The serial build's tets in canonical order (kernel/canonical_order.hpp).
+std::vector<Tet> canonical(std::vector<Tet> tets, std::size_t points) {
+  canonical_order(tets, points, 1);
+  return tets;
+}
+
+BuildOptions threaded(unsigned threads, std::size_t grain = 1) {
+  BuildOptions o;
+  o.threads = threads;
+  o.parallel_grain = grain;
+  return o;
+}
+
+const PredicateSpec kAdaptiveSos{"adaptive", 0, false, true};
+const PredicateSpec kAdaptiveRaw{"adaptive", 0, false, false};
+
+// Every thread count of the issue, several runs each: the same array as the serial build's
+// tets in canonical order, the same duplicates, no failure.
+void require_same_as_serial(const std::vector<Point3>& pts, const PredicateSpec& spec, BuildOptions base,
+                            std::size_t grain) {
+  const BuildResult serial = build_delaunay(pts, spec, base);
+  REQUIRE_FALSE(serial.failure);
+  const std::vector<Tet> expected = canonical(serial.mesh.tets, pts.size());
+  for (unsigned threads : {2u, 3u, 4u, 8u})
+    for (int run = 0; run < 3; ++run) {
+      BuildOptions o = base;
+      o.threads = threads;
+      o.parallel_grain = grain;
+      const BuildResult r = build_delaunay(pts, spec, o);
+      INFO("threads " << threads << " run " << run);
+      REQUIRE_FALSE(r.failure);
+      CHECK(r.stats.threads == threads);
+      CHECK(r.stats.inserted == serial.stats.inserted);
+      CHECK(r.duplicates == serial.duplicates);
+      CHECK(r.mesh.points == serial.mesh.points);
+      REQUIRE(r.mesh.tets == expected);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("canonical tets: the smallest vertex first, the orientation kept", "[threads]") {
+  const std::vector<Point3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const Tet base = {0, 1, 3, 2};  // positive (Shewchuk's sign), canonical
+  REQUIRE(test::validate(BuildResult{{p, {base}}, {}, {}, {}, {}, 0}) == "");
+  // The 12 even permutations of its vertices give it back, the 12 odd ones its mirror.
+  std::array<int, 4> perm = {0, 1, 2, 3};
+  int even = 0;
+  do {
+    int inversions = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) inversions += perm[i] > perm[j];
+    const Tet t = {base[perm[0]], base[perm[1]], base[perm[2]], base[perm[3]]};
+    INFO(t[0] << t[1] << t[2] << t[3]);
+    CHECK(canonical_tet(t) == (inversions % 2 ? Tet{0, 1, 2, 3} : base));
+    even += inversions % 2 == 0;
+  } while (std::next_permutation(perm.begin(), perm.end()));
+  CHECK(even == 12);
+}
+
+TEST_CASE("parallel build: uniform points, the serial build's tets at 2, 3, 4, 8 threads", "[threads]") {
+  const auto pts = uniform(20000, 7);
+  require_same_as_serial(pts, kAdaptiveSos, {}, 1);     // every pass split, however small
+  require_same_as_serial(pts, kAdaptiveSos, {}, 2048);  // the default grain
+}
+
+TEST_CASE("parallel build: lattice points (sos), input order, bigtet, duplicates", "[threads]") {
+  auto pts = lattice(14, 3);
+  require_same_as_serial(pts, kAdaptiveSos, {}, 1);
+  BuildOptions input;
+  input.order = InsertionOrder::input;
+  require_same_as_serial(pts, kAdaptiveSos, input, 1);
+  BuildOptions big;
+  big.boundary = Boundary::bigtet;
+  big.bigtet_factor = 100;
+  require_same_as_serial(pts, kAdaptiveSos, big, 1);
+  // Every point three times: the vertex is each point's first copy in input order.
+  std::vector<Point3> copies = lattice(9, 5);
+  const std::size_t n = copies.size();
+  for (std::size_t i = 0; i < 2 * n; ++i) copies.push_back(copies[(i * 7919) % n]);
+  require_same_as_serial(copies, kAdaptiveSos, {}, 1);
+  require_same_as_serial(copies, PredicateSpec{"exact", 0, false, true}, {}, 1);
+}
+
+TEST_CASE("parallel build without perturbation: a valid Delaunay tetrahedralization of degenerate input",
+          "[threads]") {
+  for (unsigned threads : {2u, 4u, 8u}) {
+    INFO("threads " << threads);
+    const BuildResult r = build_delaunay(lattice(12, threads), kAdaptiveRaw, threaded(threads));
+    REQUIRE_FALSE(r.failure);
+    CHECK(test::validate(r) == "");
+    BuildOptions big = threaded(threads);
+    big.boundary = Boundary::bigtet;
+    big.bigtet_factor = 100;
+    const BuildResult b = build_delaunay(lattice(10, threads), kAdaptiveRaw, big);
+    REQUIRE_FALSE(b.failure);
+    CHECK(test::validate(b) == "");
+  }
+}
+
+TEST_CASE("parallel build with a non-robust backend: a named failure or a result, never a hang", "[threads]") {
+  // A huge epsilon band calls almost everything flat: the serial build fails by name.
+  const PredicateSpec wide{"epsilon", 1e-3, false, false};
+  const auto pts = uniform(4000, 11);
+  for (unsigned threads : {1u, 2u, 4u, 8u}) {
+    INFO("threads " << threads);
+    const BuildResult r = build_delaunay(pts, wide, threaded(threads));
+    if (!r.failure) continue;
+    CHECK(r.failure->kind != FailureKind::lower_dimensional);
+    CHECK(std::is_sorted(r.skipped.begin(), r.skipped.end()));
+    CHECK(std::binary_search(r.skipped.begin(), r.skipped.end(), static_cast<std::uint32_t>(r.failure->point)));
+    // Every input point is inserted, a duplicate or skipped, and only one of them.
+    std::vector<int> seen(pts.size(), 0);
+    for (const std::uint32_t k : r.skipped) ++seen[k];
+    for (const std::uint32_t k : r.duplicates) ++seen[k];
+    CHECK(std::count(seen.begin(), seen.end(), 2) == 0);
+    CHECK(r.stats.inserted + r.skipped.size() + r.duplicates.size() == pts.size());
+  }
+}
