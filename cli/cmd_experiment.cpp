@@ -144,6 +144,13 @@ void add_leaderboard_command(CLI::App* sub, int& rc) {
       ->check(number_in(0, 1e6));
   l->add_option("--speed-n", board->speed_n, "one size for the speed table (0: 10^5 and 10^6; 10^4 with --quick)")
       ->transform(count_in(0, 1e9));
+  l->add_option("--voronoi-peers", board->voronoi_peers,
+                "Voronoi peers of the Voronoi section (voro++, scipy-voronoi, qvoronoi, cgal-dual, dtlab:B), all, "
+                "or none")
+      ->delimiter(',');
+  l->add_option("--voronoi-speed", board->voronoi_speed_sizes,
+                "sizes of the Voronoi speed table (default 100000; 10000 with --quick; 1000000 is slow)")
+      ->delimiter(',');
   l->add_flag("--no-meshes", *board_no_meshes, "leave out the CGAL demo mesh samples");
   l->add_option("--cgal-data", board->cgal_data, "CGAL demo data.tar.gz (default: libcgal-demo's)")->check(CLI::ExistingFile);
   l->add_flag("--json", *board_json, "print a JSON summary (the report's headline facts) on stdout");
@@ -173,6 +180,13 @@ void add_leaderboard_command(CLI::App* sub, int& rc) {
     };
     if (board->peers != std::vector<std::string>{"all"}) args.insert(args.end(), {"--peers", join(board->peers)});
     if (!board->families.empty()) args.insert(args.end(), {"--family", join(board->families)});
+    if (board->voronoi_peers != std::vector<std::string>{"all"})
+      args.insert(args.end(), {"--voronoi-peers", join(board->voronoi_peers)});
+    if (!board->voronoi_speed_sizes.empty()) {
+      std::vector<std::string> sizes;
+      for (auto n : board->voronoi_speed_sizes) sizes.push_back(std::to_string(n));
+      args.insert(args.end(), {"--voronoi-speed", join(sizes)});
+    }
     // Each defined peer as a quoted --peer, so the recorded command runs as it is.
     for (const auto& name : defined) args.push_back(peer_definition_arguments(name).substr(1));
     board->command_line = command_line(l->get_name(), args);

@@ -16,6 +16,7 @@
 #include "cli/build_options.hpp"
 #include "cli/cli_error.hpp"
 #include "cli/command.hpp"
+#include "cli/fuzz_voronoi_target.hpp"
 #include "cli/number_options.hpp"
 #include "cli/peer_definitions.hpp"
 #include "cli/progress.hpp"
@@ -30,6 +31,7 @@
 #include "fuzz/families.hpp"
 #include "fuzz/summary.hpp"
 #include "kernel/canonical_order.hpp"
+#include "voronoi_check/voronoi_peers.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
@@ -363,6 +365,17 @@ int run_fuzz(const FuzzArgs& a) {
     for (const auto& name : o.families)
       if (!fuzz::find_family(name)) usage_error("unknown family '" + name + "' (see dtlab fuzz --list)");
   }
+  // A Voronoi peer by its name, or by voronoi:NAME where the name is a DT peer's too (dtlab:B).
+  const std::string voronoi_target = a.target.rfind("voronoi:", 0) == 0 ? a.target.substr(8) : a.target;
+  if (!a.target.empty() && is_voronoi_peer_name(voronoi_target) &&
+      (voronoi_target != a.target || !is_peer_name(a.target))) {
+    check_min_points(a);
+    VoronoiTargetArgs v{voronoi_target, o.families, a.cases, std::nullopt, a.seed, a.min_points, a.max_points, a.out,
+                        !a.no_shrink, a.shrink_budget,
+                        a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency()), a.json, a.quiet};
+    if (a.only_case >= 0) v.only_case = static_cast<std::size_t>(a.only_case);
+    return run_voronoi_target(v);
+  }
   if (!a.target.empty()) return run_target(a, o.families);
   o.cases = a.cases;
   if (a.only_case >= 0) {
@@ -427,8 +440,9 @@ void add_fuzz_command(CLI::App& app, int& rc) {
                   "--oracle is the old spelling")
       ->capture_default_str();
   sub->add_option("--target", args->target,
-                  "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...); its failures are shrunk into "
-                  "the corpus. Exit 1 when it failed, 3 when it is not installed");
+                  "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...; or a Voronoi peer: voro++, "
+                  "scipy-voronoi, qvoronoi, cgal-dual, voronoi:dtlab:B); its failures are shrunk into the corpus. Exit 1 "
+                  "when it failed, 3 when it is not installed");
   args->defined.add_to(*sub);
   sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_option("--out", args->out, "campaign folder (results*.jsonl, corpus/, summary.md, environment.json)")

@@ -27,6 +27,8 @@ struct LeaderboardOptions {
   std::size_t shrink_runs = 0;             // peer runs per shrunk (peer, source) and pass; 0: 48 quick, 300 otherwise
   double shrink_seconds = 0;               // the shrink stage's wall-clock budget; 0: 30 s quick, 600 otherwise
   std::size_t speed_n = 0;                 // one size for the speed table; 0: 10^4 quick, else 10^5 and 10^6
+  std::vector<std::string> voronoi_peers = {"all"};  // the Voronoi section's peers; {"none"}: left out
+  std::vector<std::size_t> voronoi_speed_sizes;     // empty: 10^4 quick, else 10^5 (10^6 when asked)
   bool progress = false;
   std::string command_line;
 };

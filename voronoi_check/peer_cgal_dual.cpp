@@ -5,7 +5,17 @@
 // (voronoi/convex_cell.hpp). A hull vertex's cell is unbounded: the adapter clips the
 // box with the bisectors of CGAL's neighbours of it instead (its topology is
 // CGAL's, its vertices ours). One vertex per set of duplicated sites.
+//
+// Cospherical sites (lattices) make several Delaunay cells share one circumcentre,
+// which CGAL's dual gives once per cell, rounded differently: the adapter merges the
+// cells around a vertex whose shared facet and two apexes are cospherical (CGAL's exact
+// side_of_sphere is ON_BOUNDARY) into one Voronoi vertex, at the dual of one of them;
+// a face left with fewer than 3 distinct vertices has zero area and is dropped. The
+// cells are so judged on the topology CGAL's exact predicates give, not on its
+// rounding of coincident centres.
+#include <algorithm>
 #include <map>
+#include <numeric>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
@@ -26,16 +36,57 @@ using Tds = CGAL::Triangulation_data_structure_3<Vb, CGAL::Delaunay_triangulatio
 using DT = CGAL::Delaunay_triangulation_3<K, Tds>;
 
 struct Scratch {
-  std::map<DT::Cell_handle, std::uint32_t> index;
+  std::map<DT::Cell_handle, std::uint32_t> index;  // Voronoi vertex of each incident cell
+  std::vector<DT::Cell_handle> cells;
+  std::vector<std::uint32_t> parent;                 // union-find over `cells`
   std::vector<Point3> v;
   std::vector<std::uint32_t> offsets, corners;
   std::vector<std::int32_t> tags;
 };
 
-// The bounded dual cell of interior vertex h, faces outward, tagged by neighbour.
-void dual_cell(const DT& dt, DT::Vertex_handle h, Scratch& s) {
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// One Voronoi vertex per class of the cells around interior vertex h whose
+// circumcentres coincide exactly (adjacent, shared facet and both apexes cospherical).
+void merge_coincident_centres(const DT& dt, DT::Vertex_handle h, Scratch& s) {
   s.index.clear();
   s.v.clear();
+  s.cells.clear();
+  dt.incident_cells(h, std::back_inserter(s.cells));
+  std::map<DT::Cell_handle, std::uint32_t> slot;
+  for (std::uint32_t i = 0; i < s.cells.size(); ++i) slot[s.cells[i]] = i;
+  s.parent.resize(s.cells.size());
+  std::iota(s.parent.begin(), s.parent.end(), 0u);
+  for (std::uint32_t i = 0; i < s.cells.size(); ++i) {
+    const DT::Cell_handle c = s.cells[i];
+    for (int f = 0; f < 4; ++f) {
+      if (c->vertex(f) == h) continue;  // the facet opposite h does not contain it
+      const DT::Cell_handle d = c->neighbor(f);
+      const auto it = slot.find(d);
+      if (it == slot.end() || it->second < i) continue;
+      const auto& apex = d->vertex(d->index(c))->point();
+      if (dt.side_of_sphere(c, apex) == CGAL::ON_BOUNDARY)
+        s.parent[find_root(s.parent, it->second)] = find_root(s.parent, i);
+    }
+  }
+  std::vector<std::uint32_t> vertex_of_root(s.cells.size(), 0xFFFFFFFFu);
+  for (std::uint32_t i = 0; i < s.cells.size(); ++i) {
+    std::uint32_t& v = vertex_of_root[find_root(s.parent, i)];
+    if (v == 0xFFFFFFFFu) {
+      v = static_cast<std::uint32_t>(s.v.size());
+      const auto q = dt.dual(s.cells[i]);
+      s.v.push_back({q.x(), q.y(), q.z()});
+    }
+    s.index[s.cells[i]] = v;
+  }
+}
+
+// The bounded dual cell of interior vertex h, faces outward, tagged by neighbour.
+void dual_cell(const DT& dt, DT::Vertex_handle h, Scratch& s) {
+  merge_coincident_centres(dt, h, s);
   s.offsets.assign(1, 0);
   s.corners.clear();
   s.tags.clear();
@@ -48,13 +99,16 @@ void dual_cell(const DT& dt, DT::Vertex_handle h, Scratch& s) {
     const std::size_t first = s.corners.size();
     auto c = dt.incident_cells(e), done = c;
     do {
-      auto [it, fresh] = s.index.try_emplace(c, static_cast<std::uint32_t>(s.v.size()));
-      if (fresh) {
-        const auto q = dt.dual(c);
-        s.v.push_back({q.x(), q.y(), q.z()});
-      }
-      s.corners.push_back(it->second);
+      const std::uint32_t v = s.index.at(c);
+      if (s.corners.size() == first || s.corners.back() != v) s.corners.push_back(v);
     } while (++c != done);
+    if (s.corners.size() > first + 1 && s.corners.back() == s.corners[first]) s.corners.pop_back();
+    std::vector<std::uint32_t> distinct(s.corners.begin() + static_cast<std::ptrdiff_t>(first), s.corners.end());
+    std::sort(distinct.begin(), distinct.end());
+    if (std::unique(distinct.begin(), distinct.end()) - distinct.begin() < 3) {  // zero area: no face
+      s.corners.resize(first);
+      continue;
+    }
     // Outward: the face's normal points from h towards w.
     Point3 n{0, 0, 0};
     const Point3 o = s.v[s.corners[first]];
@@ -104,7 +158,7 @@ PeerCells peer_cgal_dual(const std::vector<Point3>& sites, const vor::Box& box) 
       dt.finite_adjacent_vertices(h, std::back_inserter(adj));
       nb.clear();
       for (auto w : adj) nb.push_back(w->info());
-      compute_cell(cell, sites, id, nb, box, 0);
+      compute_cell(cell, sites, id, nb, box, 1e-12);  // the clipping band of our own cells
     } else {
       dual_cell(dt, h, s);
       cell.assign(s.v, s.offsets, s.corners, s.tags, site);

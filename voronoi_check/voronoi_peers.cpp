@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -93,6 +94,11 @@ const std::vector<std::string>& voronoi_peer_names() {
                                               "cgal-dual",      "dtlab:naive",   "dtlab:epsilon",
                                               "dtlab:adaptive", "dtlab:exact"};
   return names;
+}
+
+bool is_voronoi_peer_name(const std::string& name) {
+  const auto& k = voronoi_peer_names();
+  return std::find(k.begin(), k.end(), name) != k.end();
 }
 
 std::vector<std::string> expand_voronoi_peer_names(const std::vector<std::string>& names) {

@@ -40,6 +40,7 @@ struct VoronoiPeerRun {
 };
 
 const std::vector<std::string>& voronoi_peer_names();
+bool is_voronoi_peer_name(const std::string& name);
 // "all" expands to every peer; throws std::invalid_argument naming an unknown one.
 std::vector<std::string> expand_voronoi_peer_names(const std::vector<std::string>& names);
 

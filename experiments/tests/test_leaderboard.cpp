@@ -30,6 +30,7 @@ TEST_CASE("leaderboard: report, csv, environment and shrunk failures", "[experim
   o.jobs = 2;
   o.shrink_runs = 6;  // too few for one pass: later passes go on
   o.shrink_seconds = 120;
+  o.voronoi_peers = {"voro++"};  // the Voronoi section with one peer
   const auto r = experiments::run_leaderboard(o);
   CHECK(r.exit_code == 0);
   for (const char* f : {"report.md", "report.html", "leaderboard.csv", "environment.json", "data/speed.csv"})
@@ -75,6 +76,12 @@ TEST_CASE("leaderboard: report, csv, environment and shrunk failures", "[experim
   CHECK(report.find("quick run") != std::string::npos);
   CHECK(report.find("Wilson") != std::string::npos);
   CHECK(report.find("Where the time went") != std::string::npos);
+  // The Voronoi section: voro++ judged on the same families, its speed measured with the check's time.
+  CHECK(report.find("## Voronoi cells") != std::string::npos);
+  CHECK(report.find("| `voro++` | 9 |") != std::string::npos);  // 3 families x 3 seeds
+  CHECK(std::filesystem::exists(o.out / "data" / "voronoi.csv"));
+  CHECK(std::filesystem::exists(o.out / "data" / "voronoi_speed.csv"));
+  CHECK(r.facts["voronoi"]["saved_pairs"] == r.facts["voronoi"]["failing_pairs"]);
   // Every failing (peer, source) has an input saved, shrunk or with the reason why not.
   CHECK(r.facts["saved_cells"] == r.facts["failing_cells"]);
   // naive without perturbation fails somewhere on these families at n = 48 in 3 seeds;
