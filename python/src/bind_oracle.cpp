@@ -1,7 +1,17 @@
 // _core.oracle: `dtlab oracle` on a numpy array, through the same library call as
 // the CLI (oracle/oracle_session.hpp): the same peers, verdicts, comparisons and
 // exit code.
+#include <pthread.h>
+#include <signal.h>
+
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <future>
+#include <memory>
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 #include "oracle/child_process.hpp"
 #include "oracle/oracle_session.hpp"
@@ -18,17 +28,38 @@ namespace py = pybind11;
 namespace dtlab::python {
 namespace {
 
-// Polled while a peer runs: Python's own Ctrl-C handling (KeyboardInterrupt) answers
-// within the runner's poll interval instead of after the peer's timeout.
-bool python_signal_pending() {
-  py::gil_scoped_acquire gil;
-  return PyErr_CheckSignals() != 0;
-}
-
-struct InterruptCheck {
-  InterruptCheck() { set_interrupt_check(&python_signal_pending); }
-  ~InterruptCheck() { set_interrupt_check(nullptr); }
+// One oracle() call, shared by the caller and the worker thread that runs it. The
+// caller waits without the GIL and checks Python's signals every 50 ms; on Ctrl-C it
+// raises KeyboardInterrupt at once and leaves the worker to end alone. The build and
+// the exact checks cannot stop midway: the worker finishes the stage it is in, its
+// result discarded; a running peer is killed and no further stage starts.
+struct OracleCall {
+  std::vector<Point3> points;
+  OracleSessionOptions options;
+  OracleSession session;
+  std::exception_ptr error;
+  std::atomic<bool> cancelled{false};
+  std::promise<void> done;
 };
+
+// The cancel flag of the call the current thread works for (none: never cancelled).
+thread_local const std::atomic<bool>* t_cancelled = nullptr;
+bool call_cancelled() { return t_cancelled && t_cancelled->load(); }
+
+void run_call(const std::shared_ptr<OracleCall>& call) {
+  // Signals go to Python's thread, which answers them.
+  sigset_t block;
+  sigemptyset(&block);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&block, sig);
+  pthread_sigmask(SIG_BLOCK, &block, nullptr);
+  t_cancelled = &call->cancelled;
+  try {
+    call->session = run_oracle_session(call->points, call->options);
+  } catch (...) {
+    call->error = std::current_exception();
+  }
+  call->done.set_value();
+}
 
 py::dict oracle(py::handle points, const std::vector<std::string>& against, const std::string& predicates,
                 const std::string& perturb, const std::string& boundary, const std::string& order,
@@ -52,21 +83,36 @@ py::dict oracle(py::handle points, const std::vector<std::string>& against, cons
   o.peers.timeout_s = timeout;
   o.peers.memory_bytes = static_cast<std::uint64_t>(memory_mb * 1e6);
   o.peers.tetgen = tetgen;
-  OracleSession s;
+  auto call = std::make_shared<OracleCall>();
+  call->points.assign(pts.begin(), pts.end());
+  call->options = std::move(o);
+  std::future<void> done = call->done.get_future();
+  std::thread worker(run_call, call);
   bool interrupted = false;
   {
-    const InterruptCheck check;
     py::gil_scoped_release nogil;
-    try {
-      s = run_oracle_session(pts, o);
-    } catch (const ChildInterrupted&) {
-      interrupted = true;  // the KeyboardInterrupt is pending, raised below
-    } catch (const std::invalid_argument& e) {
+    while (done.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
       py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) {
+        interrupted = true;  // the KeyboardInterrupt is pending, raised below
+        break;
+      }
+    }
+  }
+  if (interrupted) {
+    call->cancelled = true;
+    worker.detach();
+    throw py::error_already_set();
+  }
+  worker.join();
+  if (call->error) {
+    try {
+      std::rethrow_exception(call->error);
+    } catch (const std::invalid_argument& e) {
       throw py::value_error(e.what());
     }
   }
-  if (interrupted) throw py::error_already_set();
+  const OracleSession& s = call->session;
   py::dict out(json_to_python(to_json(s)));
   out["dtlab_tets"] = to_numpy<std::uint32_t, 4>(std::vector<Tet>(s.built.mesh.tets));
   py::dict tets, checks;
@@ -82,6 +128,7 @@ py::dict oracle(py::handle points, const std::vector<std::string>& against, cons
 }  // namespace
 
 void bind_oracle(py::module_& m) {
+  set_interrupt_check(&call_cancelled);
   m.def("oracle", &oracle, py::arg("points"), py::arg("against"), py::arg("predicates"), py::arg("perturb"),
         py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"),
         py::arg("tetgen"), py::arg("timeout"), py::arg("memory_mb"), "`dtlab oracle` on an array (see dtlab.oracle).");
