@@ -234,6 +234,25 @@ expect 1 "check rep5 (a facet shared by 200000 tets)" -- "$dtlab" check "$tmp/re
 ok "rep5's witness lines are short" [ "$(awk '{ if (length($0) > m) m = length($0) } END { print m }' "$tmp/out")" -lt 400 ]
 says "rep5 names the count" "facet shared by 200000 tets \\(the first 16 listed\\)"
 
+# A mesh with no tets over flat points is valid, and says why; over 3D points it is a gap.
+printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 1 1 0\n4 2 3 0\n' > "$tmp/cop.node"
+printf '0 4 0\n' > "$tmp/cop.ele"
+expect 0 "check cop (coplanar points, no tets)" -- "$dtlab" check "$tmp/cop"
+says "cop: the empty mesh is proven right" "valid: no tetrahedra; the points are coplanar \(decided exactly\), so the empty mesh is the Delaunay tetrahedralization"
+says "cop: volume 0, the span named" "input spans plane: volume 0"
+never "cop: no unproven cover is claimed" "cover not proven"
+expect 0 "check cop --json" -- "$dtlab" check "$tmp/cop" --json
+says "cop --json names the span" '"input_span": "plane"'
+printf '4 3 0 0\n0 0 0 0\n1 1 1 1\n2 2 2 2\n3 3 3 3\n' > "$tmp/col.node"
+cp "$tmp/cop.ele" "$tmp/col.ele"
+expect 0 "check col (collinear points, no tets)" -- "$dtlab" check "$tmp/col"
+says "col: collinear" "the points are collinear"
+printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 1 1 0\n4 2 3 1e-300\n' > "$tmp/lift.node"
+cp "$tmp/cop.ele" "$tmp/lift.ele"
+expect 1 "check lift (one point 1e-300 off the plane, no tets)" -- "$dtlab" check "$tmp/lift"
+says "lift: a gap, the cover not proven" "cover not proven"
+says "lift: the spanning points named" "gap: no tets, but these input points span a tetrahedron; vertices \[0 1 2 4\]"
+
 expect 2 "experiment leaderboard --cgal-data /missing" -- "$dtlab" experiment leaderboard --cgal-data "$tmp/missing.tar.gz" --out "$tmp/lb"
 
 echo "finds2_cli: $pass passed, $fails failed"
