@@ -151,7 +151,17 @@ expect 2 "badcnt.stl (binary with 'solid', wrong count)" -- "$dtlab" mesh check 
 says "badcnt.stl: the count, not endsolid" "binary STL announces 5 triangles"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 2 3 9\n' > "$tmp/idx.obj"
 expect 2 "OBJ index 9 of 4" -- "$dtlab" mesh check "$tmp/idx.obj"
-says "the OBJ index as written" "written 9"
+says "the OBJ index leads, as written" "idx.obj:5: vertex index 9 out of range: 4 vertices so far"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 2 3 -5\n' > "$tmp/neg.obj"
+expect 2 "OBJ index -5 of 4" -- "$dtlab" mesh check "$tmp/neg.obj"
+says "a negative OBJ index as written" "neg.obj:5: vertex index -5 out of range: 4 vertices so far"
+# PLY: a defect of an element's properties names the line of its `element` keyword.
+printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n0\n' > "$tmp/nox.ply"
+expect 2 "PLY vertex element without y, z" -- "$dtlab" mesh check "$tmp/nox.ply"
+says "PLY: the element's line" "nox.ply:3: vertex element lacks x, y or z property"
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty float q\nend_header\n0 0 0\n1 0 0\n0 1 0\n7\n' > "$tmp/nolist.ply"
+expect 2 "PLY face element without an index list" -- "$dtlab" mesh check "$tmp/nolist.ply"
+says "PLY: the face element's line" "nolist.ply:7: face element has no vertex index list"
 printf 'v 0 0 0 1\nv 1 0 0 0.5 0.5 0.5\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n' > "$tmp/w.obj"
 expect 0 "OBJ v x y z [w] and colours" -- "$dtlab" tetra "$tmp/w.obj"
 
