@@ -172,7 +172,19 @@ for f in sc_1e155.xyz sc_1e-300.xyz ulp.xyz mix.xyz; do
 done
 # shellcheck disable=SC2046
 expect 2 "voronoi --box 1e200" -- "$dtlab" voronoi "$finds/five.xyz" --box $(cat "$finds/voronoi_box_1e200.args") --out "$tmp/v"
-says "--box names the range" "beyond 1e100"
+says "--box names the range" "--box: '-1e200' is not in \\[-1e\\+101, 1e\\+101\\]"
+# shellcheck disable=SC2046
+expect 2 "voronoi --check --box 1e200: refused too, not a list of broken cells" -- "$dtlab" voronoi "$finds/five.xyz" --box $(cat "$finds/voronoi_box_1e200.args") --check
+says "--check --box names the range" "not in \\[-1e\\+101, 1e\\+101\\]"
+expect 0 "voronoi --check --box at the range's end: cells without defects" -- "$dtlab" voronoi "$finds/five.xyz" --box -1e101 -1e101 -1e101 1e101 1e101 1e101 --check
+says "--box 1e101: no defect" "check: 0 defect\\(s\\)"
+printf '1e100 0 0\n-1e100 0 0\n0 1e100 0\n0 0 1e100\n0 0 -1e100\n' > "$tmp/e100.xyz"
+expect 0 "voronoi --check, sites at 1e100 with the default box" -- "$dtlab" voronoi "$tmp/e100.xyz" --check
+for c in "" --check; do
+  expect 2 "voronoi $c, --margin 1e6 grows the box of sites at 1e100 out of range" -- "$dtlab" voronoi "$tmp/e100.xyz" --margin 1e6 $c
+  says "--margin named with the range $c" "--margin 1e\\+06 grows the sites' bounding box beyond 1e101"
+  never "no NaN $c" "nan"
+done
 expect 1 "tet_1e110.off: not solid with a NaN volume" -- "$dtlab" mesh check "$finds/tet_1e110.off"
 never "tet_1e110.off is never called solid" "^  solid"
 
