@@ -155,6 +155,23 @@ says "the OBJ index leads, as written" "idx.obj:5: vertex index 9 out of range: 
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 2 3 -5\n' > "$tmp/neg.obj"
 expect 2 "OBJ index -5 of 4" -- "$dtlab" mesh check "$tmp/neg.obj"
 says "a negative OBJ index as written" "neg.obj:5: vertex index -5 out of range: 4 vertices so far"
+# A line of 999 numbers is refused, not one point (the 100 MB line of the probe).
+"$py" -c "print(' '.join(['1'] * 999))" > "$tmp/wide.xyz"
+expect 2 "an .xyz line of 999 fields" -- "$dtlab" tetra "$tmp/wide.xyz"
+says "wide.xyz: the field cap named" "wide.xyz:1: more than 256 fields on one line"
+# Binary PLY: bytes after the last element are refused (a whole extra face here).
+"$py" - "$tmp" <<'PY'
+import struct, sys
+h = (b"ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+     b"property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n")
+body = b"".join(struct.pack("<3f", *p) for p in [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)])
+body += b"".join(struct.pack("<B3i", 3, *t) for t in [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])
+open(sys.argv[1] + "/bin_ok.ply", "wb").write(h + body)
+open(sys.argv[1] + "/bin_trailing.ply", "wb").write(h + body + struct.pack("<B3i", 3, 0, 1, 2))
+PY
+expect 0 "binary PLY tet" -- "$dtlab" mesh check "$tmp/bin_ok.ply"
+expect 2 "binary PLY with a face past the count" -- "$dtlab" mesh check "$tmp/bin_trailing.ply"
+says "binary PLY trailing bytes named" "bin_trailing.ply:0: 13 bytes after the last element"
 # PLY: a defect of an element's properties names the line of its `element` keyword.
 printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n0\n' > "$tmp/nox.ply"
 expect 2 "PLY vertex element without y, z" -- "$dtlab" mesh check "$tmp/nox.ply"
@@ -187,6 +204,11 @@ for c in "" --check; do
 done
 expect 1 "tet_1e110.off: not solid with a NaN volume" -- "$dtlab" mesh check "$finds/tet_1e110.off"
 never "tet_1e110.off is never called solid" "^  solid"
+# sample and fracture agree: both refuse the magnitudes whose volume overflows.
+expect 2 "sample tet_1e110.off" -- "$dtlab" sample "$finds/tet_1e110.off" --count 10 --out "$tmp/s110.xyz"
+says "sample names the overflow" "coordinates too large"
+expect 2 "fracture tet_1e110.off (not 'sampler found no site')" -- "$dtlab" fracture "$finds/tet_1e110.off" --pieces 3 --out "$tmp/f110" --quiet
+says "fracture names the overflow" "coordinates too large"
 
 # Nested shells of the same orientation: diagnosed, and united by --repair.
 expect 1 "nested_same.off is not solid" -- "$dtlab" mesh check "$finds/nested_same.off"
@@ -204,6 +226,14 @@ expect 2 "fuzz resume with another --points is refused" -- "$dtlab" fuzz --famil
 says "the refusal names --points" "with --points 64"
 expect 2 "fuzz resume with another --order is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 --order input --out "$D" --quiet --no-shrink
 says "the refusal names --order" "with --order"
+# Each setting that changes outcomes (--perturb is part of the backend labels).
+for pair in "--min-points 5|--min-points" "--seed 9|--seed" "--boundary bigtet|--boundary" \
+  "--perturb none|--predicates" "--against cgal|--against"; do
+  setting=${pair%|*}
+  # shellcheck disable=SC2086
+  expect 2 "fuzz resume with another $setting is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 $setting --out "$D" --quiet --no-shrink
+  says "the refusal names ${pair#*|}" "with ${pair#*|}"
+done
 # A results.jsonl whose last line was cut: the cut case runs again, nothing doubled.
 # (campT is the probe's folder after the old resume: line 6 is a cut record with a
 # whole one glued to it; here the cut is made afresh from its first five lines.)

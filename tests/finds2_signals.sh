@@ -42,8 +42,26 @@ interrupt() {
   ok "$name $sig: the temp folder holds nothing of dtlab's ($(ls -A "$td" | head -3 | tr '\n' ' '))" [ -z "$(ls -A "$td")" ]
 }
 
+# The issue's case: `timeout -s INT 3 dtlab oracle big.xyz --against all`.
+"$py" -c "
+import random
+random.seed(1)
+print('\\n'.join('%.17g %.17g %.17g' % (random.random(), random.random(), random.random()) for _ in range(200000)))" > "$tmp/big.xyz"
+mkdir -p "$tmp/t-timeout"
+TMPDIR="$tmp/t-timeout" "$py" "$finds/launch.py" "$tmp/timeout.out" timeout -s INT 3 "$dtlab" oracle "$tmp/big.xyz" --against all --quiet &
+leader=$!
+wait "$leader"
+got=$?
+ok "timeout -s INT 3 oracle --against all: exit $got, expected 124 (timeout's)" [ "$got" -eq 124 ]
+for _ in $(seq 50); do [ -z "$(others "$leader")" ] && break; sleep 0.1; done
+left=$(others "$leader")
+ok "timeout -s INT 3 oracle --against all: nothing of its session left (${left:-none})" [ -z "$left" ]
+for _ in $(seq 30); do [ -z "$(ls -A "$tmp/t-timeout")" ] && break; sleep 0.1; done
+ok "timeout -s INT 3 oracle --against all: the temp folder is empty" [ -z "$(ls -A "$tmp/t-timeout")" ]
+
 for s in "INT 130" "TERM 143" "HUP 129" "KILL 137"; do
   set -- $s
+  interrupt oracle-all "$1" "$2" "$dtlab" oracle "$tmp/big.xyz" --against all --quiet
   interrupt fuzz-against "$1" "$2" "$dtlab" fuzz --family uniform --cases 3 --against slow \
     --peer "slow=$tmp/slow.sh {in} {out}" --out "$tmp/fa-$1" --quiet --no-shrink
   interrupt fuzz-target "$1" "$2" "$dtlab" fuzz --family uniform --cases 3 --target slow \
