@@ -12,17 +12,17 @@
 #include "cli/build_options.hpp"
 #include "cli/cli_error.hpp"
 #include "cli/command.hpp"
-#include "kernel/output_file.hpp"
-#include "cli/number_options.hpp"
 #include "cli/input_points.hpp"
+#include "cli/number_options.hpp"
+#include "cli/voronoi_against.hpp"
+#include "fracture/render_png.hpp"
 #include "kernel/build.hpp"
 #include "kernel/input_error.hpp"
+#include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
-#include "fracture/render_png.hpp"
 #include "voronoi/cell_check.hpp"
 #include "voronoi/voronoi.hpp"
 #include "voronoi/voronoi_io.hpp"
-#include "cli/voronoi_against.hpp"
 
 namespace dtlab::cli {
 
@@ -49,8 +49,8 @@ struct VoronoiArgs {
 constexpr double kCellCoordinateMax = 1e100, kBoxCoordinateMax = 1e101, kCellExtentMin = 1e-100;
 
 // `box`: the clip box, given (--box) or the sites' bounding box grown by --margin.
-void check_voronoi_range(const std::string& input, const std::vector<Point3>& points, const vor::Box& box,
-                         bool given, double margin) {
+void check_voronoi_range(const std::string& input, const std::vector<Point3>& points, const vor::Box& box, bool given,
+                         double margin) {
   Point3 lo = points[0], hi = points[0];
   for (const Point3& p : points) {
     if (std::abs(p.x) > kCellCoordinateMax || std::abs(p.y) > kCellCoordinateMax || std::abs(p.z) > kCellCoordinateMax)
@@ -177,8 +177,10 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
   sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)")
       ->type_name("PREFIX");
-  sub->add_option("--box", args->box, "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
-      ->expected(6)->check(number_in(-1e101, 1e101));
+  sub->add_option("--box", args->box,
+                  "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
+      ->expected(6)
+      ->check(number_in(-1e101, 1e101));
   sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->check(number_in(0, 1e6))->capture_default_str();
   sub->add_option("--threads", args->threads, "threads for the cells (0: all)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");

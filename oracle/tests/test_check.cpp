@@ -223,7 +223,8 @@ TEST_CASE("the renumbering check reports in the caller's numbering", "[check]") 
   // An out-of-range id is reported before any renumbering, also by the owning overload.
   Tetrahedralization bad = t;
   bad.tets[0][2] = 99;
-  CHECK(count(check_tetrahedralization(std::move(bad)), DefectKind::broken_adjacency) == 1);
+  const CheckReport bad_report = check_tetrahedralization(std::move(bad));
+  CHECK(count(bad_report, DefectKind::broken_adjacency) == 1);
 }
 
 TEST_CASE("duplicate vertices", "[check]") {
