@@ -37,8 +37,7 @@ void add_check_command(CLI::App& app, int& rc) {
       j["prefix"] = args->prefix;
       std::printf("%s\n", j.dump(2).c_str());
     } else {
-      std::printf("%s: %s\n", args->prefix.c_str(),
-                  r.ok() ? "valid Delaunay tetrahedralization" : "DEFECTS FOUND");
+      std::printf("%s: %s\n", args->prefix.c_str(), check_headline(r).c_str());
       std::printf("  %s\n", format_stats(r.stats).c_str());
       for (int k = 0; k < kDefectKinds; ++k)
         if (r.counts[k])

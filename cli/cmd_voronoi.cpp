@@ -12,16 +12,17 @@
 #include "cli/build_options.hpp"
 #include "cli/cli_error.hpp"
 #include "cli/command.hpp"
-#include "kernel/output_file.hpp"
-#include "cli/number_options.hpp"
 #include "cli/input_points.hpp"
+#include "cli/number_options.hpp"
+#include "cli/voronoi_against.hpp"
+#include "fracture/render_png.hpp"
 #include "kernel/build.hpp"
 #include "kernel/input_error.hpp"
+#include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
-#include "fracture/render_png.hpp"
 #include "voronoi/cell_check.hpp"
+#include "voronoi/voronoi.hpp"
 #include "voronoi/voronoi_io.hpp"
-#include "cli/voronoi_against.hpp"
 
 namespace dtlab::cli {
 
@@ -41,12 +42,15 @@ struct VoronoiArgs {
 };
 
 // The cells are clipped in doubles: squared distances of coordinates beyond 1e100 or
-// below 1e-100 overflow or underflow. Such inputs are refused, naming the range.
-constexpr double kCellCoordinateMax = 1e100, kCellExtentMin = 1e-100;
+// below 1e-100 overflow or underflow, and so do cell volumes (cubes of the box's
+// extent) near 1e102. Sites are computed for |x| <= 1e100, boxes (default: the sites'
+// bounding box grown by --margin) for |x| <= 1e101; others are refused, naming the
+// range, with or without --check (out of range it could only report broken cells).
+constexpr double kCellCoordinateMax = 1e100, kBoxCoordinateMax = 1e101, kCellExtentMin = 1e-100;
 
-// Without --check (which computes the cells anyway and reports their defects, exit 1).
-void check_voronoi_range(const std::string& input, const std::vector<Point3>& points,
-                         const std::optional<vor::Box>& box, bool checked) {
+// `box`: the clip box, given (--box) or the sites' bounding box grown by --margin.
+void check_voronoi_range(const std::string& input, const std::vector<Point3>& points, const vor::Box& box, bool given,
+                         double margin) {
   Point3 lo = points[0], hi = points[0];
   for (const Point3& p : points) {
     if (std::abs(p.x) > kCellCoordinateMax || std::abs(p.y) > kCellCoordinateMax || std::abs(p.z) > kCellCoordinateMax)
@@ -56,10 +60,14 @@ void check_voronoi_range(const std::string& input, const std::vector<Point3>& po
   }
   if (std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) < kCellExtentMin)
     throw InputError(input, 0, "sites span less than 1e-100: Voronoi cells need an extent of at least 1e-100");
-  if (box && !checked)
-    for (double c : {box->lo.x, box->lo.y, box->lo.z, box->hi.x, box->hi.y, box->hi.z})
-      if (std::abs(c) > kCellCoordinateMax)
-        throw UsageError("--box: corners beyond 1e100 in magnitude (their squares overflow a double): cells are computed for |x| <= 1e100; --check reports what goes wrong beyond");
+  for (double c : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z})
+    if (!(std::abs(c) <= kBoxCoordinateMax)) {
+      char what[96];
+      std::snprintf(what, sizeof what, "--margin %g grows the sites' bounding box", margin);
+      throw UsageError(std::string(given ? "--box: corners" : what) +
+                       " beyond 1e101 in magnitude (cell volumes overflow a double near 1e102): cells are "
+                       "computed in a box within |x| <= 1e101");
+    }
 }
 
 // The last line of defence without --check (which reports them as defects, exit 1): a
@@ -93,7 +101,8 @@ int run_voronoi(const VoronoiArgs& a) {
       throw UsageError("--box needs xmin ymin zmin xmax ymax zmax with min < max");
     o.box = vor::Box{{a.box[0], a.box[1], a.box[2]}, {a.box[3], a.box[4], a.box[5]}};
   }
-  check_voronoi_range(a.input, in.points, o.box, a.check);
+  check_voronoi_range(a.input, in.points, o.box ? *o.box : default_box(in.points, o.margin), o.box.has_value(),
+                      o.margin);
   std::optional<VoronoiDiagram> built;
   try {
     built = compute_voronoi(in.points, o);
@@ -169,8 +178,10 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
   sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)")
       ->type_name("PREFIX");
-  sub->add_option("--box", args->box, "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
-      ->expected(6)->check(number_in(-1e300, 1e300));
+  sub->add_option("--box", args->box,
+                  "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
+      ->expected(6)
+      ->check(number_in(-1e101, 1e101));
   sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->check(number_in(0, 1e6))->capture_default_str();
   sub->add_option("--threads", args->threads, "threads for the Delaunay build and the cells (0: all)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");

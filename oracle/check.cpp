@@ -29,6 +29,18 @@ const char* defect_name(DefectKind k) {
   return "?";
 }
 
+const char* span_name(AffineSpan s) {
+  switch (s) {
+    case AffineSpan::not_decided: return "not-decided";
+    case AffineSpan::no_points: return "no-points";
+    case AffineSpan::point: return "point";
+    case AffineSpan::line: return "line";
+    case AffineSpan::plane: return "plane";
+    case AffineSpan::volume: return "volume";
+  }
+  return "?";
+}
+
 namespace check_detail {
 
 std::vector<std::uint32_t> tet_vertices(const Tet& k) { return {k[0], k[1], k[2], k[3]}; }
@@ -64,27 +76,35 @@ void check_points(const Tetrahedralization& t, const std::vector<char>& used,
   }
 }
 
-std::optional<std::array<std::uint32_t, 4>> spanning_points(std::span<const Point3> pts) {
+SpanWitness affine_span(std::span<const Point3> pts) {
+  SpanWitness w;
   const std::size_t n = pts.size();
-  if (n < 4) return std::nullopt;
+  if (n == 0) return w;
+  w.span = AffineSpan::point;
   std::size_t b = 1;
   while (b < n && pts[b] == pts[0]) ++b;
-  if (b == n) return std::nullopt;
+  if (b == n) return w;
+  w.span = AffineSpan::line;
+  w.points[1] = static_cast<std::uint32_t>(b);
   const mpq_class ux = mpq_class(pts[b].x) - pts[0].x, uy = mpq_class(pts[b].y) - pts[0].y,
                   uz = mpq_class(pts[b].z) - pts[0].z;
   std::size_t c = 0;
-  for (std::size_t i = 1; i < n && c == 0; ++i) {
+  for (std::size_t i = b + 1; i < n && c == 0; ++i) {
     const mpq_class vx = mpq_class(pts[i].x) - pts[0].x, vy = mpq_class(pts[i].y) - pts[0].y,
                     vz = mpq_class(pts[i].z) - pts[0].z;
     if (uy * vz != uz * vy || uz * vx != ux * vz || ux * vy != uy * vx) c = i;
   }
-  if (c == 0) return std::nullopt;
+  if (c == 0) return w;
+  w.span = AffineSpan::plane;
+  w.points[2] = static_cast<std::uint32_t>(c);
   const FilteredExact pred;
-  for (std::size_t d = 1; d < n; ++d)
-    if (pred.orient3d(pts[0], pts[b], pts[c], pts[d]) != 0)
-      return std::array<std::uint32_t, 4>{0, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(c),
-                                          static_cast<std::uint32_t>(d)};
-  return std::nullopt;
+  for (std::size_t d = c + 1; d < n; ++d)
+    if (pred.orient3d(pts[0], pts[b], pts[c], pts[d]) != 0) {
+      w.span = AffineSpan::volume;
+      w.points[3] = static_cast<std::uint32_t>(d);
+      return w;
+    }
+  return w;
 }
 
 }  // namespace check_detail

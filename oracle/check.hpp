@@ -29,6 +29,12 @@ enum class DefectKind {
 inline constexpr int kDefectKinds = 11;
 const char* defect_name(DefectKind k);
 
+// The affine hull of the input points, decided exactly. The checker decides it for a
+// mesh with no tets, which is the Delaunay tetrahedralization only of an input that
+// spans less than a volume.
+enum class AffineSpan { not_decided, no_points, point, line, plane, volume };
+const char* span_name(AffineSpan s);  // "no-points", "point", "line", "plane", ...
+
 struct Defect {
   DefectKind kind;
   std::vector<std::uint32_t> tets;      // tet ids (index into Tetrahedralization::tets)
@@ -66,6 +72,7 @@ struct CheckStats {
   bool volume_equal = false;        // exact sum of tet volumes == exact hull volume
   double volume_tets = 0, volume_hull = 0;  // the exact values, rounded (meaningful only
                                             // as the hull's volume when cover_proven)
+  AffineSpan input_span = AffineSpan::not_decided;  // decided when there are no tets
   double seconds = 0;
 };
 

@@ -62,9 +62,13 @@ std::vector<std::uint32_t> tet_vertices(const Tet& k);
 // Stage 7 (no predicates): missing points and duplicate vertices.
 void check_points(const Tetrahedralization& t, const std::vector<char>& used,
                   std::span<const std::uint32_t> reported, Collector& out, CheckStats& stats);
-// A tetrahedralization with no tets is right only for an input that spans no 3D
-// volume; otherwise returns four affinely independent input points.
-std::optional<std::array<std::uint32_t, 4>> spanning_points(std::span<const Point3> pts);
+// The affine hull of the points, exactly, with affinely independent input points that
+// span it (points[0..dimension], the first ones in the array that do).
+struct SpanWitness {
+  AffineSpan span = AffineSpan::no_points;
+  std::array<std::uint32_t, 4> points{};
+};
+SpanWitness affine_span(std::span<const Point3> pts);
 
 // The numbered stages of check_tetrahedralization_with, each adding its defects to `out`.
 
@@ -325,8 +329,10 @@ CheckReport check_tetrahedralization_with(const Tetrahedralization& t, const Che
   st.vertices = static_cast<std::uint64_t>(std::count(used.begin(), used.end(), 1));
   if (T.empty()) {
     // Right only for an input that spans no volume (fewer than 4 points, or flat).
-    if (auto s = spanning_points(P))
-      out.add(DefectKind::gap, {}, {(*s)[0], (*s)[1], (*s)[2], (*s)[3]}, 1,
+    const SpanWitness s = affine_span(P);
+    st.input_span = s.span;
+    if (s.span == AffineSpan::volume)
+      out.add(DefectKind::gap, {}, {s.points[0], s.points[1], s.points[2], s.points[3]}, 1,
               "no tets, but these input points span a tetrahedron");
     return finish();
   }

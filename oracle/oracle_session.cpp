@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "oracle/check.hpp"
+#include "oracle/child_process.hpp"
 #include "oracle/peer_json.hpp"
 #include "oracle/report_json.hpp"
 #include "oracle/verdict.hpp"
@@ -41,7 +42,12 @@ OracleSession run_oracle_session(std::span<const Point3> pts, const OracleSessio
   const std::vector<std::string> names = expand_peer_names(opt.against);
   const bool all = std::find(opt.against.begin(), opt.against.end(), "all") != opt.against.end();
   OracleSession s;
+  // Between stages, a host's interrupt check (child_process.hpp) ends the session.
+  const auto stop_if_interrupted = [] {
+    if (interrupt_requested()) throw ChildInterrupted();
+  };
   s.built = build_delaunay(pts, opt.predicates, opt.build);
+  stop_if_interrupted();
   if (s.built.failure && s.built.failure->kind == FailureKind::lower_dimensional)
     throw std::invalid_argument(s.built.failure->detail);
   CheckOptions check_options;
@@ -51,6 +57,7 @@ OracleSession run_oracle_session(std::span<const Point3> pts, const OracleSessio
   s.ours_ok = s.ours.ok() && !s.built.failure;
 
   for (const auto& name : names) {
+    stop_if_interrupted();
     if (opt.progress) opt.progress(name, s.peers.size(), names.size());
     s.peers.push_back(run_peer(name, pts, opt.peers));
   }

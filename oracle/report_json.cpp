@@ -14,7 +14,32 @@ std::string list(const std::vector<std::uint32_t>& v) {
   return s + "]";
 }
 
+// A mesh with no tets is right exactly when the input spans less than a volume.
+bool proven_flat(const CheckStats& s) {
+  return s.tets == 0 && s.input_span != AffineSpan::not_decided && s.input_span != AffineSpan::volume;
+}
+
+const char* span_text(AffineSpan s) {
+  switch (s) {
+    case AffineSpan::no_points: return "there are no points";
+    case AffineSpan::point: return "the points coincide";
+    case AffineSpan::line: return "the points are collinear";
+    case AffineSpan::plane: return "the points are coplanar";
+    case AffineSpan::not_decided:
+    case AffineSpan::volume: break;
+  }
+  return "the points span a volume";
+}
+
 }  // namespace
+
+std::string check_headline(const CheckReport& r) {
+  if (!r.ok()) return "DEFECTS FOUND";
+  if (proven_flat(r.stats))
+    return std::string("valid: no tetrahedra; ") + span_text(r.stats.input_span) +
+           " (decided exactly), so the empty mesh is the Delaunay tetrahedralization";
+  return "valid Delaunay tetrahedralization";
+}
 
 std::string format_defect(const Defect& d) {
   std::string s = std::string(defect_name(d.kind)) + ": " + d.detail;
@@ -36,6 +61,8 @@ std::string format_stats(const CheckStats& s) {
   // A volume is only a property of the hull once the tets are proven to tile it once.
   if (s.cover_proven)
     std::snprintf(buf, sizeof buf, "volume %.17g; ", s.volume_hull);
+  else if (proven_flat(s))
+    std::snprintf(buf, sizeof buf, "input spans %s: volume 0; ", span_name(s.input_span));
   else
     std::snprintf(buf, sizeof buf, "cover not proven, no volume; ");
   out += buf;
@@ -74,7 +101,8 @@ nlohmann::json to_json(const CheckReport& r) {
           {"cover_proven", s.cover_proven},
           {"volume_checked", s.volume_checked},
           {"volume_equal", s.volume_equal},
-          {"volume", s.cover_proven ? nlohmann::json(s.volume_hull) : nlohmann::json(nullptr)},
+          {"input_span", span_name(s.input_span)},
+          {"volume", s.cover_proven || proven_flat(s) ? nlohmann::json(s.volume_hull) : nlohmann::json(nullptr)},
           {"seconds", s.seconds}};
 }
 

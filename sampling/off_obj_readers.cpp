@@ -73,9 +73,9 @@ TriangleMesh read_obj(const std::string& path) {
         const long i = r.to_long(s);
         if (i == 0) r.fail("OBJ indices start at 1, got 0");
         const long nv = static_cast<long>(mesh.vertices.size());
-        if (i > nv || i < -nv)  // the 0-based index, and the index as the file writes it
-          r.fail("vertex index " + std::to_string(i > 0 ? i - 1 : nv + i) + " out of range (0-based; written " +
-                 std::string(s) + ", with " + std::to_string(nv) + " vertices so far)");
+        if (i > nv || i < -nv)  // named as the file writes it (1-based, or counting back)
+          r.fail("vertex index " + std::string(s) + " out of range: " + std::to_string(nv) +
+                 " vertices so far (OBJ counts from 1, negative indices back from the last)");
         // Negative indices count back from the last vertex read so far.
         poly.push_back(i > 0 ? i - 1 : static_cast<long>(mesh.vertices.size()) + i);
       }

@@ -25,6 +25,7 @@ struct Property {
 struct Element {
   std::string name;
   long count = 0;
+  long header_line = 0;  // the line of its `element` keyword
   std::vector<Property> props;
 };
 
@@ -165,6 +166,7 @@ PlyHeader read_ply_header(detail::ByteSource& src, const std::string& path) {
       // Each element takes at least one byte of the file (ASCII: a digit and a separator).
       if (count > static_cast<double>(src.size())) throw fail("element count too large: " + quote_token(tok[2]));
       e.count = static_cast<long>(count);
+      e.header_line = src.line();
       h.elements.push_back(std::move(e));
     } else if (tok[0] == "property") {
       if (h.elements.empty()) throw fail("property before any element");
@@ -213,10 +215,10 @@ TriangleMesh read_ply(const std::string& path) {
       else if (p.name == "z") iz = k;
     }
     if (is_vertex && (ix < 0 || iy < 0 || iz < 0))
-      throw InputError(path, 0, "vertex element lacks x, y or z property");
-    if (is_face && ilist < 0) throw InputError(path, 0, "face element has no vertex index list");
+      throw InputError(path, e.header_line, "vertex element lacks x, y or z property");
+    if (is_face && ilist < 0) throw InputError(path, e.header_line, "face element has no vertex index list");
     if (is_face && !seen_vertex && e.count > 0)
-      throw InputError(path, 0, "face element comes before the vertex element");
+      throw InputError(path, e.header_line, "face element comes before the vertex element");
     if (is_vertex) {
       seen_vertex = true;
       mesh.vertices.reserve(std::min(static_cast<std::size_t>(e.count), kMaxReserve));  // count from the file

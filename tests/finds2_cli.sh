@@ -46,25 +46,40 @@ for _ in $(seq 30); do [ -z "$(ls -A "$tmp/tb")" ] && break; sleep 0.1; done
 ok "bench + SIGINT: the temp folder holds nothing of dtlab's ($(ls "$tmp/tb"))" [ -z "$(ls -A "$tmp/tb")" ]
 ok "bench + SIGINT: no tetgen left" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[t]etgen -QzJNF $tmp/tb/'; }"
 
-# Python's oracle() answers Ctrl-C within a second (not after the peer's timeout).
+# Python's oracle() answers Ctrl-C within a second, measured from the signal: while a
+# peer runs (not after its timeout), and while dtlab's own build and exact check of
+# 300000 points run (stages that cannot stop midway: oracle() does not wait for them).
 if [ -n "$pypath" ] && PYTHONPATH="$pypath" "$py" -c "import dtlab" 2>/dev/null; then
   cat > "$tmp/py_int.py" <<EOF
 import os, signal, sys, threading, time, numpy as np
 import dtlab
-threading.Timer(1.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
-t0 = time.monotonic()
+n, when, against = int(sys.argv[1]), float(sys.argv[2]), sys.argv[3]
+pts = np.random.default_rng(1).random((n, 3))
+sent = []
+def interrupt():
+    sent.append(time.monotonic())
+    os.kill(os.getpid(), signal.SIGINT)
+threading.Timer(when, interrupt).start()
 try:
-    dtlab.oracle(np.random.default_rng(1).random((20, 3)), against=("tetgen",), tetgen="$tmp/slowtg.sh", timeout=30)
+    dtlab.oracle(pts, against=(against,), tetgen="$tmp/slowtg.sh", timeout=30)
     print("no interrupt")
 except KeyboardInterrupt:
-    print("interrupted after %.2f s" % (time.monotonic() - t0))
-    sys.exit(0 if time.monotonic() - t0 < 2.5 else 1)
+    late = time.monotonic() - sent[0]
+    print("interrupted %.3f s after the signal" % late)
+    sys.exit(0 if late < 1.0 else 1)
 sys.exit(1)
 EOF
-  expect 0 "python oracle() + SIGINT answers within a second" -- env PYTHONPATH="$pypath" "$py" "$tmp/py_int.py"
-  says "python oracle() raised KeyboardInterrupt" "interrupted after"
+  expect 0 "python oracle() + SIGINT during a peer answers within a second" -- \
+    env PYTHONPATH="$pypath" "$py" "$tmp/py_int.py" 20 1.5 tetgen
+  says "python oracle() raised KeyboardInterrupt" "interrupted 0\.[0-9]+ s after the signal"
   for _ in $(seq 30); do running || break; sleep 0.1; done
   ok "python: no peer left running" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[s]leep 5$mark'; }"
+  for when in 0.3 1.5; do
+    expect 0 "python oracle() + SIGINT at $when s into the build and check of 300000 points" -- \
+      env PYTHONPATH="$pypath" "$py" "$tmp/py_int.py" 300000 "$when" tetgen
+    says "python oracle() raised KeyboardInterrupt at $when s" "interrupted 0\.[0-9]+ s after the signal"
+  done
+  ok "python: no peer left after an interrupted build" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[s]leep 5$mark'; }"
   expect 0 "python check() names a uint64 index as given" -- env PYTHONPATH="$pypath" "$py" -c "
 import numpy as np, dtlab
 try:
@@ -136,7 +151,34 @@ expect 2 "badcnt.stl (binary with 'solid', wrong count)" -- "$dtlab" mesh check 
 says "badcnt.stl: the count, not endsolid" "binary STL announces 5 triangles"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 2 3 9\n' > "$tmp/idx.obj"
 expect 2 "OBJ index 9 of 4" -- "$dtlab" mesh check "$tmp/idx.obj"
-says "the OBJ index as written" "written 9"
+says "the OBJ index leads, as written" "idx.obj:5: vertex index 9 out of range: 4 vertices so far"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 2 3 -5\n' > "$tmp/neg.obj"
+expect 2 "OBJ index -5 of 4" -- "$dtlab" mesh check "$tmp/neg.obj"
+says "a negative OBJ index as written" "neg.obj:5: vertex index -5 out of range: 4 vertices so far"
+# A line of 999 numbers is refused, not one point (the 100 MB line of the probe).
+"$py" -c "print(' '.join(['1'] * 999))" > "$tmp/wide.xyz"
+expect 2 "an .xyz line of 999 fields" -- "$dtlab" tetra "$tmp/wide.xyz"
+says "wide.xyz: the field cap named" "wide.xyz:1: more than 256 fields on one line"
+# Binary PLY: bytes after the last element are refused (a whole extra face here).
+"$py" - "$tmp" <<'PY'
+import struct, sys
+h = (b"ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+     b"property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n")
+body = b"".join(struct.pack("<3f", *p) for p in [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)])
+body += b"".join(struct.pack("<B3i", 3, *t) for t in [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])
+open(sys.argv[1] + "/bin_ok.ply", "wb").write(h + body)
+open(sys.argv[1] + "/bin_trailing.ply", "wb").write(h + body + struct.pack("<B3i", 3, 0, 1, 2))
+PY
+expect 0 "binary PLY tet" -- "$dtlab" mesh check "$tmp/bin_ok.ply"
+expect 2 "binary PLY with a face past the count" -- "$dtlab" mesh check "$tmp/bin_trailing.ply"
+says "binary PLY trailing bytes named" "bin_trailing.ply:0: 13 bytes after the last element"
+# PLY: a defect of an element's properties names the line of its `element` keyword.
+printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n0\n' > "$tmp/nox.ply"
+expect 2 "PLY vertex element without y, z" -- "$dtlab" mesh check "$tmp/nox.ply"
+says "PLY: the element's line" "nox.ply:3: vertex element lacks x, y or z property"
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty float q\nend_header\n0 0 0\n1 0 0\n0 1 0\n7\n' > "$tmp/nolist.ply"
+expect 2 "PLY face element without an index list" -- "$dtlab" mesh check "$tmp/nolist.ply"
+says "PLY: the face element's line" "nolist.ply:7: face element has no vertex index list"
 printf 'v 0 0 0 1\nv 1 0 0 0.5 0.5 0.5\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n' > "$tmp/w.obj"
 expect 0 "OBJ v x y z [w] and colours" -- "$dtlab" tetra "$tmp/w.obj"
 
@@ -147,9 +189,26 @@ for f in sc_1e155.xyz sc_1e-300.xyz ulp.xyz mix.xyz; do
 done
 # shellcheck disable=SC2046
 expect 2 "voronoi --box 1e200" -- "$dtlab" voronoi "$finds/five.xyz" --box $(cat "$finds/voronoi_box_1e200.args") --out "$tmp/v"
-says "--box names the range" "beyond 1e100"
+says "--box names the range" "--box: '-1e200' is not in \\[-1e\\+101, 1e\\+101\\]"
+# shellcheck disable=SC2046
+expect 2 "voronoi --check --box 1e200: refused too, not a list of broken cells" -- "$dtlab" voronoi "$finds/five.xyz" --box $(cat "$finds/voronoi_box_1e200.args") --check
+says "--check --box names the range" "not in \\[-1e\\+101, 1e\\+101\\]"
+expect 0 "voronoi --check --box at the range's end: cells without defects" -- "$dtlab" voronoi "$finds/five.xyz" --box -1e101 -1e101 -1e101 1e101 1e101 1e101 --check
+says "--box 1e101: no defect" "check: 0 defect\\(s\\)"
+printf '1e100 0 0\n-1e100 0 0\n0 1e100 0\n0 0 1e100\n0 0 -1e100\n' > "$tmp/e100.xyz"
+expect 0 "voronoi --check, sites at 1e100 with the default box" -- "$dtlab" voronoi "$tmp/e100.xyz" --check
+for c in "" --check; do
+  expect 2 "voronoi $c, --margin 1e6 grows the box of sites at 1e100 out of range" -- "$dtlab" voronoi "$tmp/e100.xyz" --margin 1e6 $c
+  says "--margin named with the range $c" "--margin 1e\\+06 grows the sites' bounding box beyond 1e101"
+  never "no NaN $c" "nan"
+done
 expect 1 "tet_1e110.off: not solid with a NaN volume" -- "$dtlab" mesh check "$finds/tet_1e110.off"
 never "tet_1e110.off is never called solid" "^  solid"
+# sample and fracture agree: both refuse the magnitudes whose volume overflows.
+expect 2 "sample tet_1e110.off" -- "$dtlab" sample "$finds/tet_1e110.off" --count 10 --out "$tmp/s110.xyz"
+says "sample names the overflow" "coordinates too large"
+expect 2 "fracture tet_1e110.off (not 'sampler found no site')" -- "$dtlab" fracture "$finds/tet_1e110.off" --pieces 3 --out "$tmp/f110" --quiet
+says "fracture names the overflow" "coordinates too large"
 
 # Nested shells of the same orientation: diagnosed, and united by --repair.
 expect 1 "nested_same.off is not solid" -- "$dtlab" mesh check "$finds/nested_same.off"
@@ -167,6 +226,14 @@ expect 2 "fuzz resume with another --points is refused" -- "$dtlab" fuzz --famil
 says "the refusal names --points" "with --points 64"
 expect 2 "fuzz resume with another --order is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 --order input --out "$D" --quiet --no-shrink
 says "the refusal names --order" "with --order"
+# Each setting that changes outcomes (--perturb is part of the backend labels).
+for pair in "--min-points 5|--min-points" "--seed 9|--seed" "--boundary bigtet|--boundary" \
+  "--perturb none|--predicates" "--against cgal|--against"; do
+  setting=${pair%|*}
+  # shellcheck disable=SC2086
+  expect 2 "fuzz resume with another $setting is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 $setting --out "$D" --quiet --no-shrink
+  says "the refusal names ${pair#*|}" "with ${pair#*|}"
+done
 # A results.jsonl whose last line was cut: the cut case runs again, nothing doubled.
 # (campT is the probe's folder after the old resume: line 6 is a cut record with a
 # whole one glued to it; here the cut is made afresh from its first five lines.)
@@ -218,6 +285,25 @@ cp "$finds/rep5.node" "$tmp/rep5.node"
 expect 1 "check rep5 (a facet shared by 200000 tets)" -- "$dtlab" check "$tmp/rep5"
 ok "rep5's witness lines are short" [ "$(awk '{ if (length($0) > m) m = length($0) } END { print m }' "$tmp/out")" -lt 400 ]
 says "rep5 names the count" "facet shared by 200000 tets \\(the first 16 listed\\)"
+
+# A mesh with no tets over flat points is valid, and says why; over 3D points it is a gap.
+printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 1 1 0\n4 2 3 0\n' > "$tmp/cop.node"
+printf '0 4 0\n' > "$tmp/cop.ele"
+expect 0 "check cop (coplanar points, no tets)" -- "$dtlab" check "$tmp/cop"
+says "cop: the empty mesh is proven right" "valid: no tetrahedra; the points are coplanar \(decided exactly\), so the empty mesh is the Delaunay tetrahedralization"
+says "cop: volume 0, the span named" "input spans plane: volume 0"
+never "cop: no unproven cover is claimed" "cover not proven"
+expect 0 "check cop --json" -- "$dtlab" check "$tmp/cop" --json
+says "cop --json names the span" '"input_span": "plane"'
+printf '4 3 0 0\n0 0 0 0\n1 1 1 1\n2 2 2 2\n3 3 3 3\n' > "$tmp/col.node"
+cp "$tmp/cop.ele" "$tmp/col.ele"
+expect 0 "check col (collinear points, no tets)" -- "$dtlab" check "$tmp/col"
+says "col: collinear" "the points are collinear"
+printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 1 1 0\n4 2 3 1e-300\n' > "$tmp/lift.node"
+cp "$tmp/cop.ele" "$tmp/lift.ele"
+expect 1 "check lift (one point 1e-300 off the plane, no tets)" -- "$dtlab" check "$tmp/lift"
+says "lift: a gap, the cover not proven" "cover not proven"
+says "lift: the spanning points named" "gap: no tets, but these input points span a tetrahedron; vertices \[0 1 2 4\]"
 
 expect 2 "experiment leaderboard --cgal-data /missing" -- "$dtlab" experiment leaderboard --cgal-data "$tmp/missing.tar.gz" --out "$tmp/lb"
 

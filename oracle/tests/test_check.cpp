@@ -5,6 +5,7 @@
 #include "oracle/check.hpp"
 #include "oracle/facet_table.hpp"
 #include "oracle/hull_degree.hpp"
+#include "oracle/report_json.hpp"
 #include "oracle/tests/check_helpers.hpp"
 #include "predicates/exact.hpp"
 
@@ -136,6 +137,48 @@ TEST_CASE("gap: separate pieces, and no tets for a 3D input", "[check]") {
   CHECK(check_tetrahedralization(flat).ok());
 }
 
+TEST_CASE("no tets: valid exactly when the input spans less than a volume", "[check]") {
+  struct Case {
+    std::vector<Point3> points;
+    AffineSpan span;
+    const char* words;
+  };
+  const double tiny = 0x1p-1074;  // the smallest subnormal: off the plane z = 0
+  const std::vector<Case> cases = {
+      {{}, AffineSpan::no_points, "there are no points"},
+      {{{1, 2, 3}, {1, 2, 3}}, AffineSpan::point, "the points coincide"},
+      {{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}, {3, 3, 3}}, AffineSpan::line, "the points are collinear"},
+      {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, AffineSpan::plane, "the points are coplanar"},
+      {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.25, 0}}, AffineSpan::plane, "the points are coplanar"},
+      {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 3, tiny}}, AffineSpan::volume, nullptr},
+      // Collinear in doubles' rounding, not exactly: 0.1 * 3 != 0.3.
+      {{{0, 0, 0}, {0.1, 0.1, 0.1}, {0.3, 0.3, 0.30000000000000004}}, AffineSpan::plane, "the points are coplanar"},
+  };
+  for (const Case& c : cases) {
+    Tetrahedralization t;
+    t.points = c.points;
+    const CheckReport r = check_tetrahedralization(t);
+    INFO(summary(r) << " / " << format_stats(r.stats));
+    CHECK(r.stats.input_span == c.span);
+    CHECK_FALSE(r.stats.cover_proven);  // no cover to prove: the headline says why it is right
+    if (c.words) {
+      CHECK(r.ok());
+      CHECK(check_headline(r) == std::string("valid: no tetrahedra; ") + c.words +
+                                     " (decided exactly), so the empty mesh is the Delaunay tetrahedralization");
+      CHECK(to_json(r)["volume"] == 0.0);
+    } else {
+      CHECK(count(r, DefectKind::gap) == 1);
+      CHECK(check_headline(r) == "DEFECTS FOUND");
+      CHECK(format_stats(r.stats).find("cover not proven") != std::string::npos);
+      CHECK(to_json(r)["volume"].is_null());
+    }
+  }
+  // With tets the span is not decided, and "valid" keeps its usual words.
+  const CheckReport star_report = check_tetrahedralization(star());
+  CHECK(star_report.stats.input_span == AffineSpan::not_decided);
+  CHECK(check_headline(star_report) == "valid Delaunay tetrahedralization");
+}
+
 TEST_CASE("missing points and duplicates", "[check]") {
   Tetrahedralization t = star();
   t.points.push_back({0.5, 0.5, 0.5});  // inside, not a vertex
@@ -180,7 +223,8 @@ TEST_CASE("the renumbering check reports in the caller's numbering", "[check]") 
   // An out-of-range id is reported before any renumbering, also by the owning overload.
   Tetrahedralization bad = t;
   bad.tets[0][2] = 99;
-  CHECK(count(check_tetrahedralization(std::move(bad)), DefectKind::broken_adjacency) == 1);
+  const CheckReport bad_report = check_tetrahedralization(std::move(bad));
+  CHECK(count(bad_report, DefectKind::broken_adjacency) == 1);
 }
 
 TEST_CASE("duplicate vertices", "[check]") {

@@ -75,7 +75,15 @@ TEST_CASE("OBJ reader: slashes, negative indices, other records ignored, errors"
                                  "f 1/1/1 3/1/1 2/1/1\nf 1//1 2//1 4//1\nf -4 -1 -2\ng x\nf 2 3 4\n")));
   CHECK(input_error([] { read_obj(write_file("bad1.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n")); }) ==
         "4:OBJ indices start at 1, got 0");
-  CHECK(input_error([] { read_obj(write_file("bad2.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")); }).rfind("4:vertex index 3 out", 0) == 0);
+  // An index out of range is named as the file writes it (1-based, or counting back).
+  CHECK(input_error([] { read_obj(write_file("bad2.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")); }) ==
+        "4:vertex index 4 out of range: 3 vertices so far (OBJ counts from 1, negative indices back from the last)");
+  CHECK(input_error([] {
+          read_obj(write_file("bad2n.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n"));
+        }).rfind("4:vertex index -4 out of range: 3 vertices so far", 0) == 0);
+  CHECK(input_error([] {
+          read_obj(write_file("bad2s.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/2 7/3\n"));
+        }).rfind("4:vertex index 7 out of range", 0) == 0);
   CHECK(input_error([] { read_obj(write_file("bad3.obj", "v 0 0\n")); }) == "1:vertex needs 3 coordinates");
 }
 
