@@ -172,7 +172,10 @@ def test_ctrl_c_ends_the_child_and_answers_at_once(tmp_path, call):
     assert time.monotonic() - t0 < 5
     out, _ = proc.communicate(timeout=30)
     assert proc.returncode == 7 and (line + out).strip() == "KeyboardInterrupt"
-    assert gone(child)
+    deadline = time.monotonic() + 2  # SIGKILLed; under load its end and reaping lag a little
+    while not gone(child):
+        assert time.monotonic() < deadline, "the peer's child outlived the answer"
+        time.sleep(0.01)
 
 
 def test_names_and_callables_are_checked():
