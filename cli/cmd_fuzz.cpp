@@ -370,9 +370,19 @@ int run_fuzz(const FuzzArgs& a) {
   if (!a.target.empty() && is_voronoi_peer_name(voronoi_target) &&
       (voronoi_target != a.target || !is_peer_name(a.target))) {
     check_min_points(a);
-    VoronoiTargetArgs v{voronoi_target, o.families, a.cases, std::nullopt, a.seed, a.min_points, a.max_points, a.out,
-                        !a.no_shrink, a.shrink_budget,
-                        a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency()), a.json, a.quiet};
+    VoronoiTargetArgs v{voronoi_target,
+                        o.families,
+                        a.cases,
+                        std::nullopt,
+                        a.seed,
+                        a.min_points,
+                        a.max_points,
+                        a.out,
+                        !a.no_shrink,
+                        a.shrink_budget,
+                        a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency()),
+                        a.json,
+                        a.quiet};
     if (a.only_case >= 0) v.only_case = static_cast<std::size_t>(a.only_case);
     return run_voronoi_target(v);
   }
@@ -439,10 +449,11 @@ void add_fuzz_command(CLI::App& app, int& rc) {
                   "serial: a --threads build against the serial build, tet for tet (one backend, sos); "
                   "--oracle is the old spelling")
       ->capture_default_str();
-  sub->add_option("--target", args->target,
-                  "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...; or a Voronoi peer: voro++, "
-                  "scipy-voronoi, qvoronoi, cgal-dual, voronoi:dtlab:B); its failures are shrunk into the corpus. Exit 1 "
-                  "when it failed, 3 when it is not installed");
+  sub->add_option(
+      "--target", args->target,
+      "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...; or a Voronoi peer: voro++, "
+      "scipy-voronoi, qvoronoi, cgal-dual, voronoi:dtlab:B); its failures are shrunk into the corpus. Exit 1 "
+      "when it failed, 3 when it is not installed");
   args->defined.add_to(*sub);
   sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_option("--out", args->out, "campaign folder (results*.jsonl, corpus/, summary.md, environment.json)")

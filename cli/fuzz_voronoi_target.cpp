@@ -48,14 +48,21 @@ int run_voronoi_target(const VoronoiTargetArgs& a) {
     not_installed += c.not_judged.empty() && c.run.verdict == VoronoiVerdict::not_installed;
     if (!c.failed()) continue;
     ++r.failing, ++failing;
-    failures.push_back({{"source", c.source}, {"case", c.index}, {"n", c.n},
-                        {"verdict", voronoi_verdict_name(c.run.verdict)}, {"message", c.run.message},
-                        {"corpus_file", c.corpus_file}, {"shrunk_points", c.shrunk_points},
+    failures.push_back({{"source", c.source},
+                        {"case", c.index},
+                        {"n", c.n},
+                        {"verdict", voronoi_verdict_name(c.run.verdict)},
+                        {"message", c.run.message},
+                        {"corpus_file", c.corpus_file},
+                        {"shrunk_points", c.shrunk_points},
                         {"minimal", c.shrunk_minimal}});
   }
   if (a.json) {
-    nlohmann::json j = {{"target", a.target}, {"cases", cases.size()}, {"failing", failing},
-                        {"not_installed", not_installed}, {"failures", failures}};
+    nlohmann::json j = {{"target", a.target},
+                        {"cases", cases.size()},
+                        {"failing", failing},
+                        {"not_installed", not_installed},
+                        {"failures", failures}};
     for (const auto& [src, r] : rows)
       j["families"][src] = {{"cases", r.cases}, {"failing", r.failing}, {"verdicts", r.verdicts}};
     std::cout << j.dump(2) << "\n";

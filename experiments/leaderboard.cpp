@@ -12,11 +12,11 @@
 #include <thread>
 
 #include "experiments/csv_writer.hpp"
+#include "experiments/leaderboard_voronoi.hpp"
 #include "experiments/peer_campaign.hpp"
 #include "experiments/report.hpp"
 #include "experiments/shrink_stage.hpp"
 #include "experiments/thesis_parts.hpp"
-#include "experiments/leaderboard_voronoi.hpp"
 #include "experiments/wilson_interval.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/work_queue.hpp"
@@ -104,7 +104,6 @@ struct Cell {
   const PeerCase* smallest = nullptr;           // smallest shrunk failing input
 };
 
-
 struct SpeedRow {
   std::string source;
   std::size_t n;
@@ -167,9 +166,9 @@ class Leaderboard {
     step("meshes");
     const std::vector<std::string> meshes_wanted =
         options.quick ? std::vector<std::string>{"elephant", "fandisk"} : kMeshes;
-    meshes = options.meshes ? load_meshes(options.cgal_data.empty() ? kDefaultCgalData : options.cgal_data,
-                                          meshes_wanted)
-                            : MeshSet{{}, {}, "left out (--no-meshes)"};
+    meshes = options.meshes
+                 ? load_meshes(options.cgal_data.empty() ? kDefaultCgalData : options.cgal_data, meshes_wanted)
+                 : MeshSet{{}, {}, "left out (--no-meshes)"};
     for (const auto& m : meshes.meshes) samplers.push_back(std::make_unique<MeshSampler>(m));
     std::vector<std::string> family_names = options.families;
     if (family_names.empty())
@@ -177,15 +176,12 @@ class Leaderboard {
     families = fuzz_family_sources(family_names);
     for (std::size_t i = 0; i < samplers.size(); ++i) {
       const MeshSampler* s = samplers[i].get();
-      mesh_sources.push_back({meshes.names[i] + "-surface", [s](std::size_t n, std::uint64_t seed) {
-                                return s->surface(n, seed).points;
-                              }});
-      mesh_sources.push_back({meshes.names[i] + "-volume", [s](std::size_t n, std::uint64_t seed) {
-                                return s->winding(n, seed).points;
-                              }});
+      mesh_sources.push_back({meshes.names[i] + "-surface",
+                              [s](std::size_t n, std::uint64_t seed) { return s->surface(n, seed).points; }});
+      mesh_sources.push_back(
+          {meshes.names[i] + "-volume", [s](std::size_t n, std::uint64_t seed) { return s->winding(n, seed).points; }});
     }
   }
-
 
   // Robustness: peers x sources x sizes x seeds; a peer not installed is run once.
   void run_robustness() {
@@ -229,8 +225,7 @@ class Leaderboard {
       return std::find(peers.begin(), peers.end(), a.peer) < std::find(peers.begin(), peers.end(), b.peer);
     });
     json& per_peer_seconds = stage_seconds["runs_process_seconds"] = json::object();
-    for (const PeerCase& c : all)
-      per_peer_seconds[c.peer] = per_peer_seconds.value(c.peer, 0.0) + c.run.wall_seconds;
+    for (const PeerCase& c : all) per_peer_seconds[c.peer] = per_peer_seconds.value(c.peer, 0.0) + c.run.wall_seconds;
   }
 
   // The first failure of each (peer, source), shrunk under the stage's budget.
@@ -332,8 +327,8 @@ class Leaderboard {
       sp << "peer,source,n,verdict,tets,seconds,wall_seconds,peak_rss_bytes\n";
       for (const auto& s : speed)
         sp << s.run.name << "," << s.source << "," << s.n << "," << verdict_name(s.run.verdict) << ","
-           << (s.run.report ? s.run.report->stats.tets : 0) << "," << s.run.seconds << "," << s.run.wall_seconds
-           << "," << s.run.peak_rss_bytes << "\n";
+           << (s.run.report ? s.run.report->stats.tets : 0) << "," << s.run.seconds << "," << s.run.wall_seconds << ","
+           << s.run.peak_rss_bytes << "\n";
       write_text_file((dir / "data" / "speed.csv").string(), sp.str());
     }
   }
@@ -384,9 +379,8 @@ class Leaderboard {
     for (std::size_t i = 0; i < family_sizes.size(); ++i) o << (i ? ", " : "") << family_sizes[i];
     o << "; surface (`-surface`) and winding-number volume (`-volume`) samples of CGAL demo meshes at n = ";
     for (std::size_t i = 0; i < mesh_sizes.size(); ++i) o << (i ? ", " : "") << mesh_sizes[i];
-    o << (meshes.names.empty() ? " (none: " + meshes.note + ")" : "") << "; " << cases
-      << " seeds per (source, size)" << (options.quick ? " — a quick run: few cases per cell, wide intervals" : "")
-      << ".\n\n";
+    o << (meshes.names.empty() ? " (none: " + meshes.note + ")" : "") << "; " << cases << " seeds per (source, size)"
+      << (options.quick ? " — a quick run: few cases per cell, wide intervals" : "") << ".\n\n";
     o << "## Summary per peer\n\n";
     o << table_row({"peer", "version", "cases", "not delaunay", "share [95% CI]", "verdicts (not delaunay)"})
       << table_rule(6, 2);
@@ -399,10 +393,10 @@ class Leaderboard {
       const auto [lo, hi] = wilson_interval(t.failing, t.cases);
       std::string v;
       for (const auto& [name, k] : t.verdicts) v += (v.empty() ? "" : ", ") + name + " " + std::to_string(k);
-      o << table_row({"`" + p + "`", versions[p].get<std::string>(), std::to_string(t.cases),
-                      std::to_string(t.failing),
-                      percent(t.cases ? double(t.failing) / t.cases : 0) + " [" + percent(lo) + ", " + percent(hi) + "]",
-                      v.empty() ? "-" : v});
+      o << table_row(
+          {"`" + p + "`", versions[p].get<std::string>(), std::to_string(t.cases), std::to_string(t.failing),
+           percent(t.cases ? double(t.failing) / t.cases : 0) + " [" + percent(lo) + ", " + percent(hi) + "]",
+           v.empty() ? "-" : v});
     }
   }
 
@@ -447,8 +441,10 @@ class Leaderboard {
         continue;
       }
       ++saved;
-      if (c->shrunk_minimal) ++shrunk;
-      else ++stops[c->shrink_stop];
+      if (c->shrunk_minimal)
+        ++shrunk;
+      else
+        ++stops[c->shrink_stop];
       std::string minimal = c->shrunk_minimal ? "yes" : "no: " + c->shrink_stop;
       if (c->hung_try_seconds > 0) minimal += " (tries under " + fmt("%.1f", c->hung_try_seconds) + " s)";
       if (!c->shrink_note.empty()) notes.push_back("`" + key.first + "` on " + key.second + ": " + c->shrink_note);
@@ -458,7 +454,8 @@ class Leaderboard {
                           fmt("%.1f", c->shrink_seconds),
                       verdict_name(c->shrunk_verdict), "`" + c->corpus_file + "`"});
     }
-    o << "\n" << failing_cells << " failing (peer, source) pairs, " << saved << " with an input saved, " << shrunk
+    o << "\n"
+      << failing_cells << " failing (peer, source) pairs, " << saved << " with an input saved, " << shrunk
       << " shrunk to 1-minimal";
     for (const auto& [why, k] : stops)
       o << ", " << k << " "
@@ -480,7 +477,8 @@ class Leaderboard {
     for (const auto& s : speed) {
       double cgal = 0;
       for (const auto& t : speed)
-        if (t.source == s.source && t.n == s.n && t.run.name == "cgal" && !no_answer(t.run.verdict)) cgal = t.run.seconds;
+        if (t.source == s.source && t.n == s.n && t.run.name == "cgal" && !no_answer(t.run.verdict))
+          cgal = t.run.seconds;
       const bool answered = !no_answer(s.run.verdict);
       const std::uint64_t tets = s.run.report ? s.run.report->stats.tets : 0;
       o << table_row({s.source, std::to_string(s.n), "`" + s.run.name + "`", verdict_name(s.run.verdict),

@@ -57,7 +57,7 @@ std::vector<VoronoiCase> run_cases(const VoronoiBoardOptions& o) {
 // Stage 2: the first failure at the smallest size of each (peer, source), shrunk and
 // saved while the stage's time lasts (after it: saved unshrunk, "time").
 std::map<std::pair<std::string, std::string>, Tally> shrink_and_tally(std::vector<VoronoiCase>& all,
-                                                                     const VoronoiBoardOptions& o) {
+                                                                      const VoronoiBoardOptions& o) {
   std::map<std::pair<std::string, std::string>, Tally> t;
   for (VoronoiCase& c : all) {
     Tally& k = t[{c.peer, c.source}];
@@ -82,8 +82,8 @@ std::map<std::pair<std::string, std::string>, Tally> shrink_and_tally(std::vecto
     VoronoiPeerOptions po;
     po.timeout_s = o.timeout_s;
     shrink_and_save_voronoi(c, src->generate(c.n, c.seed), po, in_time ? o.shrink_runs : 0, o.out_dir + "/voronoi",
-                            "dtlab experiment leaderboard --seed " + std::to_string(o.seed) + " (Voronoi, " +
-                                c.source + ", n " + std::to_string(c.n) + ", case " + std::to_string(c.index) + ")");
+                            "dtlab experiment leaderboard --seed " + std::to_string(o.seed) + " (Voronoi, " + c.source +
+                                ", n " + std::to_string(c.n) + ", case " + std::to_string(c.index) + ")");
     if (!in_time) c.shrink_stop = "time";
   }
   return t;
@@ -160,10 +160,10 @@ std::string section(const VoronoiBoardOptions& o, const std::map<std::pair<std::
         for (const auto& [v, n] : k.verdicts) sum.verdicts[v] += n;
       }
     const auto [lo, hi] = wilson_interval(sum.failing, sum.cases);
-    m << table_row({"`" + p + "`", std::to_string(sum.cases), std::to_string(sum.failing),
-                    percent(sum.cases ? double(sum.failing) / sum.cases : 0) + " [" + percent(lo) + ", " +
-                        percent(hi) + "]",
-                    verdicts_text(sum.verdicts), std::to_string(sum.not_judged)});
+    m << table_row(
+        {"`" + p + "`", std::to_string(sum.cases), std::to_string(sum.failing),
+         percent(sum.cases ? double(sum.failing) / sum.cases : 0) + " [" + percent(lo) + ", " + percent(hi) + "]",
+         verdicts_text(sum.verdicts), std::to_string(sum.not_judged)});
   }
   m << "\n### Per (peer, source)\n\n";
   m << table_row({"peer", "source", "failing/cases [Wilson 95%]", "verdicts", "saved input (points, minimal, fresh)"})
@@ -177,13 +177,14 @@ std::string section(const VoronoiBoardOptions& o, const std::map<std::pair<std::
               std::to_string(k.shrunk->shrunk_points) + ", " +
               (k.shrunk->shrunk_minimal ? "1-minimal" : "not minimal: " + k.shrunk->shrink_stop) + ", " +
               voronoi_verdict_name(k.shrunk->shrunk_verdict) + ")";
-    m << table_row({"`" + key.first + "`", key.second,
-                    std::to_string(k.failing) + "/" + std::to_string(k.cases) + " [" + percent(lo) + "-" +
-                        percent(hi) + "]",
-                    verdicts_text(k.verdicts), saved});
+    m << table_row(
+        {"`" + key.first + "`", key.second,
+         std::to_string(k.failing) + "/" + std::to_string(k.cases) + " [" + percent(lo) + "-" + percent(hi) + "]",
+         verdicts_text(k.verdicts), saved});
   }
   m << "\nShrunk inputs replay with `dtlab voronoi voronoi/corpus/FILE.node --against PEER` (the command, "
-       "relative to voronoi/, is in each sidecar .json); each was shrunk by delta debugging with every try in a fresh process, at most "
+       "relative to voronoi/, is in each sidecar .json); each was shrunk by delta debugging with every try in a fresh "
+       "process, at most "
     << o.shrink_runs << " runs per pair, " << fmt("%.0f", o.shrink_seconds) << " s for the stage.\n\n";
   m << "### Voronoi speed\n\nSeconds: the cells as the peer times them; check: the exact checker on its cells "
        "(its DT included), one thread; x dtlab: the check over `dtlab:adaptive`'s cells in the same run.\n\n";
@@ -223,8 +224,8 @@ VoronoiBoard run_voronoi_board(const VoronoiBoardOptions& o) {
     saved += k.shrunk && !k.shrunk->corpus_file.empty();
     minimal += k.shrunk && k.shrunk->shrunk_minimal;
   }
-  b.facts = {{"cases", all.size()},        {"failing_pairs", failing}, {"saved_pairs", saved},
-             {"minimal_pairs", minimal},   {"runs_seconds", runs_s},   {"shrink_seconds", shrink_s},
+  b.facts = {{"cases", all.size()},      {"failing_pairs", failing}, {"saved_pairs", saved},
+             {"minimal_pairs", minimal}, {"runs_seconds", runs_s},   {"shrink_seconds", shrink_s},
              {"speed_seconds", speed_s}};
   return b;
 }

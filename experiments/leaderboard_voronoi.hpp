@@ -19,16 +19,16 @@ struct VoronoiBoardOptions {
   std::vector<std::string> peers;  // expanded Voronoi peer names
   std::vector<PointSource> sources;
   std::vector<std::size_t> family_sizes, mesh_sizes;  // sizes of fuzz families, of the others
-  std::size_t families = 0;        // sources[0, families) are fuzz families
-  std::size_t cases = 3;           // seeds per (source, size)
+  std::size_t families = 0;                           // sources[0, families) are fuzz families
+  std::size_t cases = 3;                              // seeds per (source, size)
   std::uint64_t seed = 1;
   unsigned jobs = 2;
   double timeout_s = 30;
-  std::size_t shrink_runs = 300;   // peer runs per shrunk pair
-  double shrink_seconds = 300;     // the shrink stage's wall clock
+  std::size_t shrink_runs = 300;  // peer runs per shrunk pair
+  double shrink_seconds = 300;    // the shrink stage's wall clock
   std::vector<PointSource> speed_sources;
   std::vector<std::size_t> speed_sizes;
-  std::string out_dir;              // data/voronoi*.csv go here, shrunk inputs in out_dir/voronoi/corpus
+  std::string out_dir;  // data/voronoi*.csv go here, shrunk inputs in out_dir/voronoi/corpus
 };
 
 struct VoronoiBoard {

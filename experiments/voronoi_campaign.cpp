@@ -150,8 +150,7 @@ std::vector<VoronoiCase> run_voronoi_campaign(const VoronoiCampaignOptions& o) {
     if (c.failed() && o.shrink && !o.out_dir.empty()) {
       const std::string cmd = "dtlab fuzz --target " + c.peer + " --family " + c.source + " --case " +
                               std::to_string(c.index) + " --seed " + std::to_string(o.seed) + " --min-points " +
-                              std::to_string(o.min_points) + " --points " + std::to_string(o.max_points) +
-                              " --out DIR";
+                              std::to_string(o.min_points) + " --points " + std::to_string(o.max_points) + " --out DIR";
       shrink_and_save_voronoi(c, points, o.peer_options, o.shrink_budget, o.out_dir, cmd);
     }
     if (c.run.report) c.run.report->witnesses.clear();  // counts and largest faces kept

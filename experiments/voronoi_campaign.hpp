@@ -25,16 +25,16 @@ bool voronoi_failed(VoronoiVerdict v);
 struct VoronoiCase {
   std::string peer, source;
   std::size_t index = 0;
-  std::uint64_t seed = 0;          // the case seed (fuzz/case_seed.hpp)
+  std::uint64_t seed = 0;  // the case seed (fuzz/case_seed.hpp)
   std::size_t n = 0;
-  std::string not_judged;          // why the checker cannot judge it (coplanar or fewer than 4
-                                   // distinct sites, a box that overflows); "" when judged
+  std::string not_judged;  // why the checker cannot judge it (coplanar or fewer than 4
+                           // distinct sites, a box that overflows); "" when judged
   VoronoiPeerRun run;
-  std::string corpus_file;         // relative to out_dir; "" when not saved
+  std::string corpus_file;  // relative to out_dir; "" when not saved
   std::size_t shrunk_points = 0;
   bool shrunk_minimal = false;
-  std::string shrink_stop;         // why not 1-minimal: "runs" (budget spent), "hung" (saved unshrunk)
-  std::size_t shrink_runs = 0;     // peer runs the shrink made
+  std::string shrink_stop;      // why not 1-minimal: "runs" (budget spent), "hung" (saved unshrunk)
+  std::size_t shrink_runs = 0;  // peer runs the shrink made
   double shrink_seconds = 0;
   VoronoiVerdict shrunk_verdict = VoronoiVerdict::not_installed;  // the saved input judged afresh
   bool failed() const { return not_judged.empty() && voronoi_failed(run.verdict); }
@@ -58,8 +58,8 @@ struct VoronoiCampaignOptions {
   std::optional<std::size_t> only_case;
   std::size_t min_points = 8, max_points = 64;  // n per case, from the case seed
   std::uint64_t seed = 1;
-  std::string out_dir;     // corpus/ goes here; "" writes nothing
-  bool shrink = true;      // every failing case (false: none; the leaderboard shrinks one per pair)
+  std::string out_dir;  // corpus/ goes here; "" writes nothing
+  bool shrink = true;   // every failing case (false: none; the leaderboard shrinks one per pair)
   std::size_t shrink_budget = 200;
   VoronoiPeerOptions peer_options;
   unsigned jobs = 1;

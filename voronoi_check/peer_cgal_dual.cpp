@@ -38,7 +38,7 @@ using DT = CGAL::Delaunay_triangulation_3<K, Tds>;
 struct Scratch {
   std::map<DT::Cell_handle, std::uint32_t> index;  // Voronoi vertex of each incident cell
   std::vector<DT::Cell_handle> cells;
-  std::vector<std::uint32_t> parent;                 // union-find over `cells`
+  std::vector<std::uint32_t> parent;  // union-find over `cells`
   std::vector<Point3> v;
   std::vector<std::uint32_t> offsets, corners;
   std::vector<std::int32_t> tags;
