@@ -64,6 +64,23 @@ SiteOptions site_options(const FractureArgs& a) {
   return s;
 }
 
+// --tets: every piece through TetGen, into the manifest; false after a one-line message
+// when TetGen fails on a piece (a named failure).
+bool tetrahedralize(const FractureArgs& a, const FractureResult& r, nlohmann::json& m, std::vector<PieceTets>& tets,
+                    Progress& progress) {
+  progress.say("tetrahedralizing " + std::to_string(r.pieces.size()) + " pieces (" + a.tetgen + " -pY)");
+  try {
+    TetgenRunOptions to;
+    to.binary = a.tetgen;
+    tets = tetrahedralize_pieces(r, to);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "dtlab fracture: %s: --tets: %s\n", a.mesh.c_str(), e.what());
+    return false;
+  }
+  add_tets_to_manifest(m, tets);
+  return true;
+}
+
 int run_fracture(const FractureArgs& a) {
   if (a.out.empty() && !a.json && a.png.empty())  // never compute without writing
     throw UsageError("nothing to write: give --out DIR (or --json, --png FILE)");
@@ -107,18 +124,7 @@ int run_fracture(const FractureArgs& a) {
   }
   nlohmann::json m = fracture_manifest(r, a.density);
   std::vector<PieceTets> tets;
-  if (a.tets) {
-    progress.say("tetrahedralizing " + std::to_string(r.pieces.size()) + " pieces (" + a.tetgen + " -pY)");
-    try {
-      TetgenRunOptions to;
-      to.binary = a.tetgen;
-      tets = tetrahedralize_pieces(r, to);
-    } catch (const std::runtime_error& e) {
-      std::fprintf(stderr, "dtlab fracture: %s: --tets: %s\n", a.mesh.c_str(), e.what());
-      return kDefect;
-    }
-    add_tets_to_manifest(m, tets);
-  }
+  if (a.tets && !tetrahedralize(a, r, m, tets, progress)) return kDefect;
   m["input"] = a.mesh;
   m["options"] = {{"pieces", a.pieces}, {"sampler", a.sampler}, {"seed", a.seed}, {"gap", a.gap}, {"margin", a.gap},
                   {"blue_noise", a.blue_noise}, {"explode", a.explode}, {"recurse", a.recurse},
