@@ -64,6 +64,23 @@ SiteOptions site_options(const FractureArgs& a) {
   return s;
 }
 
+// --tets: every piece through TetGen, into the manifest; false after a one-line message
+// when TetGen fails on a piece (a named failure).
+bool tetrahedralize(const FractureArgs& a, const FractureResult& r, nlohmann::json& m, std::vector<PieceTets>& tets,
+                    Progress& progress) {
+  progress.say("tetrahedralizing " + std::to_string(r.pieces.size()) + " pieces (" + a.tetgen + " -pY)");
+  try {
+    TetgenRunOptions to;
+    to.binary = a.tetgen;
+    tets = tetrahedralize_pieces(r, to);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "dtlab fracture: %s: --tets: %s\n", a.mesh.c_str(), e.what());
+    return false;
+  }
+  add_tets_to_manifest(m, tets);
+  return true;
+}
+
 int run_fracture(const FractureArgs& a) {
   if (a.out.empty() && !a.json && a.png.empty())  // never compute without writing
     throw UsageError("nothing to write: give --out DIR (or --json, --png FILE)");
@@ -107,25 +124,16 @@ int run_fracture(const FractureArgs& a) {
   }
   nlohmann::json m = fracture_manifest(r, a.density);
   std::vector<PieceTets> tets;
-  if (a.tets) {
-    progress.say("tetrahedralizing " + std::to_string(r.pieces.size()) + " pieces (" + a.tetgen + " -pY)");
-    try {
-      TetgenRunOptions to;
-      to.binary = a.tetgen;
-      tets = tetrahedralize_pieces(r, to);
-    } catch (const std::runtime_error& e) {
-      std::fprintf(stderr, "dtlab fracture: %s: --tets: %s\n", a.mesh.c_str(), e.what());
-      return kDefect;
-    }
-    add_tets_to_manifest(m, tets);
-  }
+  if (a.tets && !tetrahedralize(a, r, m, tets, progress)) return kDefect;
   m["input"] = a.mesh;
   m["options"] = {{"pieces", a.pieces}, {"sampler", a.sampler}, {"seed", a.seed}, {"gap", a.gap}, {"margin", a.gap},
                   {"blue_noise", a.blue_noise}, {"explode", a.explode}, {"recurse", a.recurse},
                   {"recurse_pieces", a.recurse_pieces}, {"repair", a.repair}, {"split", a.split}, {"vtu", a.vtu},
                   {"boolean_seconds", a.boolean_seconds}, {"sites", a.sites.empty() ? "sampler" : a.sites},
                   {"impact", a.impact}, {"impact_radius", a.impact_radius}, {"site_noise", a.site_noise},
-                  {"island_split", !a.no_island_split}, {"cell_scale", a.cell_scale}, {"density", a.density}, {"exact_tiling", a.exact_tiling}, {"tets", a.tets}};
+                  {"island_split", !a.no_island_split}, {"cell_scale", a.cell_scale}, {"density", a.density}};
+  m["options"]["exact_tiling"] = a.exact_tiling;
+  m["options"]["tets"] = a.tets;
   if (!a.out.empty()) {
     progress.say("writing " + std::to_string(r.pieces.size()) + " pieces to " + a.out);
     std::filesystem::create_directories(a.out);
@@ -169,7 +177,8 @@ int run_fracture(const FractureArgs& a) {
                   a.surfaces ? ", surfaces.vtu" : "", a.gltf ? ", pieces.gltf" : "", a.tets ? ", tets.vtu" : "");
   }
   if (a.tets && m["tets"]["pieces_exact"].get<std::size_t>() != tets.size()) {
-    std::fprintf(stderr, "dtlab fracture: %s: --tets: the tets of %zu pieces do not have their surface's exact volume\n",
+    std::fprintf(stderr,
+                 "dtlab fracture: %s: --tets: the tets of %zu pieces do not have their surface's exact volume\n",
                  a.mesh.c_str(), tets.size() - m["tets"]["pieces_exact"].get<std::size_t>());
     return kDefect;
   }
@@ -222,8 +231,9 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_flag("--surfaces", args->surfaces,
                 "also write OUT/surfaces.vtu: every piece as closed triangles with a 'piece' array (VTK integrates it)");
   sub->add_flag("--gltf", args->gltf, "also write OUT/pieces.gltf (glTF 2.0: a node per piece, cut faces a 2nd material)");
-  sub->add_flag("--exact-tiling", args->exact_tiling,
-                "prove sum(piece volumes) = mesh volume exactly on the unrounded pieces (exact arithmetic; costs time)");
+  sub->add_flag(
+      "--exact-tiling", args->exact_tiling,
+      "prove sum(piece volumes) = mesh volume exactly on the unrounded pieces (exact arithmetic; costs time)");
   sub->add_flag("--tets", args->tets,
                 "also write OUT/tets.vtu: every piece tetrahedralized (TetGen -pY, surface kept) with a 'piece' array");
   sub->add_option("--tetgen", args->tetgen, "--tets: the TetGen program")->type_name("FILE")->capture_default_str();

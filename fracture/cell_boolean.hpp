@@ -54,8 +54,8 @@ class MeshClipper {
   // the corefinement built them (exact constructions, before rounding to doubles).
   void set_exact_tally(bool on);
   struct ExactTally {
-    bool holds = false;    // sum of the exact piece volumes == the mesh's exact volume
-    double difference = 0; // that difference, rounded
+    bool holds = false;     // sum of the exact piece volumes == the mesh's exact volume
+    double difference = 0;  // that difference, rounded
   };
   // After intersect_all with the tally on (every cell's piece, cells with no piece add 0).
   ExactTally exact_tally() const;

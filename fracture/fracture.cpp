@@ -99,7 +99,8 @@ Level fracture_once(const MeshClipper& clipper, const FractureOptions& o, const 
   if (timing.exact_tiling_checked) {
     const MeshClipper::ExactTally t = clipper.exact_tally();
     timing.exact_tiling = timing.exact_tiling && t.holds;
-    if (std::abs(t.difference) > std::abs(timing.exact_tiling_difference)) timing.exact_tiling_difference = t.difference;
+    if (std::abs(t.difference) > std::abs(timing.exact_tiling_difference))
+      timing.exact_tiling_difference = t.difference;
   }
   Level level;
   for (const auto& g : geometry)

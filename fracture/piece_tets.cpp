@@ -77,9 +77,11 @@ PieceTets tetrahedralize_piece(const TriangleMesh& surface, const TetgenRunOptio
   const ChildResult c = run_child({options.binary, "-pYzJFQ", in}, ChildLimits::of(options.timeout_s, dir.file("log")));
   switch (c.status) {
     case ChildStatus::not_started: throw std::runtime_error("tetgen: " + c.message);
-    case ChildStatus::timed_out: throw std::runtime_error("tetgen timed out after " + shortest(options.timeout_s) + " s");
+    case ChildStatus::timed_out:
+      throw std::runtime_error("tetgen timed out after " + shortest(options.timeout_s) + " s");
     case ChildStatus::signaled:
-      throw std::runtime_error("tetgen killed by signal " + std::to_string(c.signal) + ": " + last_line_of(dir.file("log")));
+      throw std::runtime_error("tetgen killed by signal " + std::to_string(c.signal) + ": " +
+                               last_line_of(dir.file("log")));
     case ChildStatus::exited:
       if (c.exit_code != 0)
         throw std::runtime_error("tetgen exited with status " + std::to_string(c.exit_code) + ": " +

@@ -7,9 +7,9 @@
 namespace dtlab {
 
 struct VolumeIdentity {
-  double float_difference = 0;     // sum of the pieces' double volumes - the mesh's
-  double exact_difference = 0;     // the same difference computed exactly, then rounded
-  bool exact = false;              // the exact difference is zero
+  double float_difference = 0;  // sum of the pieces' double volumes - the mesh's
+  double exact_difference = 0;  // the same difference computed exactly, then rounded
+  bool exact = false;           // the exact difference is zero
   double relative(double d, double mesh_volume) const { return mesh_volume != 0 ? d / mesh_volume : d; }
 };
 
