@@ -4,10 +4,10 @@
 #include <map>
 #include <sstream>
 
+#include "experiments/csv_writer.hpp"
 #include "experiments/report.hpp"
 #include "experiments/voronoi_campaign.hpp"
 #include "experiments/wilson_interval.hpp"
-#include "kernel/output_file.hpp"
 #include "voronoi/voronoi.hpp"
 
 namespace dtlab::experiments {
@@ -106,32 +106,54 @@ std::vector<SpeedRow> run_speed(const VoronoiBoardOptions& o) {
   return rows;
 }
 
+// A number as the other data files print it (ostream's default: 6 significant digits).
+template <class T>
+std::string field(T v) {
+  std::ostringstream f;
+  f << v;
+  return f.str();
+}
+
 void write_csvs(const std::vector<VoronoiCase>& all, const std::vector<SpeedRow>& speed, const std::string& dir) {
-  std::ostringstream csv;
-  csv << "peer,source,n,case,seed,verdict,not_judged,defects,largest_wrong_face,largest_small_face,seconds,"
-         "wall_seconds,check_seconds,shrunk_points,minimal,shrunk_verdict_fresh,corpus_file\n";
+  std::vector<std::vector<std::string>> rows;
   for (const auto& c : all) {
     const auto* r = c.run.report ? &*c.run.report : nullptr;
-    std::string counts = r ? voronoi_counts_text(*r) : "";
-    for (auto& ch : counts) ch = ch == ',' ? ';' : ch;
-    csv << c.peer << "," << c.source << "," << c.n << "," << c.index << "," << c.seed << ","
-        << voronoi_verdict_name(c.run.verdict) << "," << (c.not_judged.empty() ? 0 : 1) << "," << counts << ","
-        << (r ? r->largest_wrong_face : 0) << "," << (r ? r->largest_small_face : 0) << "," << c.run.seconds << ","
-        << c.run.wall_seconds << "," << (r ? r->seconds : 0) << ",";
-    if (c.corpus_file.empty())
-      csv << ",,,\n";
-    else
-      csv << c.shrunk_points << "," << (c.shrunk_minimal ? 1 : 0) << "," << voronoi_verdict_name(c.shrunk_verdict)
-          << "," << c.corpus_file << "\n";
+    std::vector<std::string> row = {c.peer,
+                                    c.source,
+                                    field(c.n),
+                                    field(c.index),
+                                    field(c.seed),
+                                    voronoi_verdict_name(c.run.verdict),
+                                    c.not_judged.empty() ? "0" : "1",
+                                    r ? voronoi_counts_text(*r) : "",
+                                    field(r ? r->largest_wrong_face : 0),
+                                    field(r ? r->largest_small_face : 0),
+                                    field(c.run.seconds),
+                                    field(c.run.wall_seconds),
+                                    field(r ? r->seconds : 0)};
+    if (c.corpus_file.empty()) {
+      row.insert(row.end(), {"", "", "", ""});
+    } else {
+      row.insert(row.end(), {field(c.shrunk_points), c.shrunk_minimal ? "1" : "0",
+                             voronoi_verdict_name(c.shrunk_verdict), c.corpus_file});
+    }
+    rows.push_back(std::move(row));
   }
-  write_text_file(dir + "/data/voronoi.csv", csv.str());
-  std::ostringstream sp;
-  sp << "peer,source,n,verdict,seconds,wall_seconds,check_seconds,check_dt_seconds,peak_rss_bytes\n";
-  for (const auto& s : speed)
-    sp << s.run.name << "," << s.source << "," << s.n << "," << voronoi_verdict_name(s.run.verdict) << ","
-       << s.run.seconds << "," << s.run.wall_seconds << "," << (s.run.report ? s.run.report->seconds : 0) << ","
-       << (s.run.report ? s.run.report->seconds_dt : 0) << "," << s.run.peak_rss_bytes << "\n";
-  write_text_file(dir + "/data/voronoi_speed.csv", sp.str());
+  write_csv(dir + "/data/voronoi.csv",
+            {"peer", "source", "n", "case", "seed", "verdict", "not_judged", "defects", "largest_wrong_face",
+             "largest_small_face", "seconds", "wall_seconds", "check_seconds", "shrunk_points", "minimal",
+             "shrunk_verdict_fresh", "corpus_file"},
+            rows);
+  std::vector<std::vector<std::string>> speed_rows;
+  for (const auto& sr : speed)
+    speed_rows.push_back({sr.run.name, sr.source, field(sr.n), voronoi_verdict_name(sr.run.verdict),
+                          field(sr.run.seconds), field(sr.run.wall_seconds),
+                          field(sr.run.report ? sr.run.report->seconds : 0),
+                          field(sr.run.report ? sr.run.report->seconds_dt : 0), field(sr.run.peak_rss_bytes)});
+  write_csv(dir + "/data/voronoi_speed.csv",
+            {"peer", "source", "n", "verdict", "seconds", "wall_seconds", "check_seconds", "check_dt_seconds",
+             "peak_rss_bytes"},
+            speed_rows);
 }
 
 std::string verdicts_text(const std::map<std::string, std::size_t>& v) {
