@@ -19,8 +19,10 @@ Tet canonical_tet(const Tet& t) {
     std::swap(r[a], r[b]);
   }
   // Cyclic rotations of the last three are even: the smallest of them to position 1.
-  if (r[2] < r[1] && r[2] < r[3]) r = {r[0], r[2], r[3], r[1]};
-  else if (r[3] < r[1] && r[3] < r[2]) r = {r[0], r[3], r[1], r[2]};
+  if (r[2] < r[1] && r[2] < r[3])
+    r = {r[0], r[2], r[3], r[1]};
+  else if (r[3] < r[1] && r[3] < r[2])
+    r = {r[0], r[3], r[1], r[2]};
   return r;
 }
 
@@ -43,8 +45,7 @@ void canonical_order(std::vector<Tet>& tets, std::size_t points, unsigned thread
     }
   std::vector<std::uint32_t>().swap(next);
   parallel_chunks(points, threads, kChunk, [&](std::size_t b, std::size_t e, unsigned) {
-    for (std::size_t v = b; v < e; ++v)
-      std::sort(tets.begin() + start[v], tets.begin() + start[v + 1]);
+    for (std::size_t v = b; v < e; ++v) std::sort(tets.begin() + start[v], tets.begin() + start[v + 1]);
   });
 }
 

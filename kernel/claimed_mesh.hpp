@@ -182,10 +182,10 @@ class ClaimedMesh {
   TetRecord* rec_ = nullptr;
   std::uint8_t* own_ = nullptr;
   std::uint8_t me_;
-  IdStack pool_;                                     // dead slots this thread owns
-  std::uint32_t fresh_ = 0, fresh_end_ = 0;          // the current block of fresh slots
-  IdStack claimed_, created_, destroyed_;            // this insertion's tets
-  std::vector<TetRecord> saved_;                     // claimed_[k]'s record before the insertion
+  IdStack pool_;                             // dead slots this thread owns
+  std::uint32_t fresh_ = 0, fresh_end_ = 0;  // the current block of fresh slots
+  IdStack claimed_, created_, destroyed_;    // this insertion's tets
+  std::vector<TetRecord> saved_;             // claimed_[k]'s record before the insertion
 };
 
 }  // namespace dtlab

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "kernel/claimed_mesh.hpp"
-#include "kernel/insertion_log.hpp"
 #include "kernel/inserter.hpp"
+#include "kernel/insertion_log.hpp"
 #include "kernel/parallel_for.hpp"
 #include "kernel/shared_tets.hpp"
 #include "predicates/adaptive.hpp"
@@ -33,9 +33,12 @@ namespace detail {
 // The adaptive backend's stage counter, if B has one (each thread gets its own).
 template <class B>
 AdaptiveStats** stage_counter(B& b) {
-  if constexpr (std::is_same_v<B, AdaptivePredicates>) return &b.stats;
-  else if constexpr (std::is_same_v<B, Perturbed<AdaptivePredicates>>) return &b.base.stats;
-  else return nullptr;
+  if constexpr (std::is_same_v<B, AdaptivePredicates>)
+    return &b.stats;
+  else if constexpr (std::is_same_v<B, Perturbed<AdaptivePredicates>>)
+    return &b.base.stats;
+  else
+    return nullptr;
 }
 
 inline void add_stages(AdaptiveStats& to, const AdaptiveStats& from) {
@@ -152,8 +155,8 @@ class ParallelInsertion {
           w.mesh().attach();
           continue;  // the same point again
         case Outcome::conflict:
-          log.failure = InsertionLog::Failure{k, FailureKind::inconsistent_adjacency,
-                                              "the adjacency leads to a freed tet"};
+          log.failure =
+              InsertionLog::Failure{k, FailureKind::inconsistent_adjacency, "the adjacency leads to a freed tet"};
           log.skipped.insert(log.skipped.end(), list.begin() + static_cast<std::ptrdiff_t>(i), list.end());
           return false;
         case Outcome::failed:

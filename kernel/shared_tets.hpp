@@ -45,7 +45,8 @@ class SharedTets {
       if (got == 0) return 0;
     } while (!size_.compare_exchange_weak(s, s + got, std::memory_order_relaxed));
     first = s;
-    for (std::uint32_t t = s; t < s + got; ++t) std::atomic_ref<std::uint8_t>(owners_[t]).store(owner, std::memory_order_relaxed);
+    for (std::uint32_t t = s; t < s + got; ++t)
+      std::atomic_ref<std::uint8_t>(owners_[t]).store(owner, std::memory_order_relaxed);
     return got;
   }
 

@@ -118,8 +118,7 @@ TEST_CASE("parallel build: lattice points (sos), input order, bigtet, duplicates
   require_same_as_serial(copies, PredicateSpec{"exact", 0, false, true}, {}, 1);
 }
 
-TEST_CASE("parallel build without perturbation: a valid Delaunay tetrahedralization of degenerate input",
-          "[threads]") {
+TEST_CASE("parallel build without perturbation: a valid Delaunay tetrahedralization of degenerate input", "[threads]") {
   for (unsigned threads : {2u, 4u, 8u}) {
     INFO("threads " << threads);
     const BuildResult r = build_delaunay(lattice(12, threads), kAdaptiveRaw, threaded(threads));
