@@ -5,7 +5,7 @@
 #include <numeric>
 #include <unordered_map>
 
-#include "sampling/vec3.hpp"
+#include "predicates/vec3.hpp"
 
 namespace dtlab {
 
