@@ -30,9 +30,14 @@ enum KernelOption : unsigned {
 
 struct KernelArgs : KernelOptions {
   unsigned threads = 0;  // 0: all hardware threads
+  // The --threads option once registered: the build is threaded only when it was given
+  // (on 2 cores the threaded build is not yet faster, kernel/README.md); the exact check
+  // and the writers use `threads` either way.
+  const CLI::Option* threads_option = nullptr;
 
   void add_to(CLI::App& app, unsigned which = kAllKernelOptions);
   BuildOptions build_options() const;  // throws CLI::ValidationError on a bad --boundary
+  unsigned build_threads() const { return threads_option && threads_option->count() > 0 ? threads : 1; }
 };
 
 }  // namespace dtlab::cli

@@ -440,7 +440,6 @@ void add_fuzz_command(CLI::App& app, int& rc) {
                                "comma list of naive, epsilon, adaptive, exact, plugin:PATH.so")
                    ->capture_default_str();
   sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();
-  args->kernel.threads = 1;  // one build per job by default (--jobs runs the cases in parallel)
   args->kernel.add_to(*sub, kEpsOption | kBoundaryOption | kOrderOption | kThreadsOption);
   sub->add_flag_callback(
       "--relative-eps", [args] { args->kernel.eps_mode = "relative"; }, "the old spelling of --eps-mode relative");

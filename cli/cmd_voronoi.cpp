@@ -33,6 +33,7 @@ struct VoronoiArgs {
   std::vector<double> box;
   double margin = 0.1;
   unsigned threads = 0;
+  const CLI::Option* threads_option = nullptr;
   bool no_obj = false, vtu = false, json = false, check = false;
   std::string vtu_format = "binary", png;
   double png_shrink = 0.8;
@@ -95,7 +96,8 @@ int run_voronoi(const VoronoiArgs& a) {
   o.predicates = a.kernel.predicate_spec();
   o.build = a.kernel.build_options();
   o.threads = a.threads;
-  o.build.threads = a.threads;  // the Delaunay build too
+  // The Delaunay build too, when --threads is given (as in tetra: kernel/README.md).
+  o.build.threads = a.threads_option && a.threads_option->count() > 0 ? a.threads : 1;
   if (!a.box.empty()) {
     if (a.box.size() != 6 || !(a.box[0] < a.box[3] && a.box[1] < a.box[4] && a.box[2] < a.box[5]))
       throw UsageError("--box needs xmin ymin zmin xmax ymax zmax with min < max");
@@ -183,7 +185,10 @@ void add_voronoi_command(CLI::App& app, int& rc) {
       ->expected(6)
       ->check(number_in(-1e101, 1e101));
   sub->add_option("--margin", args->margin, "default box growth per side, relative to the extent")->check(number_in(0, 1e6))->capture_default_str();
-  sub->add_option("--threads", args->threads, "threads for the Delaunay build and the cells (0: all)")->transform(count_in(0, 1024))->capture_default_str();
+  args->threads_option = sub->add_option("--threads", args->threads,
+                                         "threads for the cells, and for the Delaunay build when given (0: all)")
+                             ->transform(count_in(0, 1024))
+                             ->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
       ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
