@@ -41,12 +41,13 @@ void KernelArgs::add_to(CLI::App& app, unsigned which) {
   if (which & kSeedOption)
     app.add_option("--seed", seed, "seed of the insertion order and of the walk")->check(seed_value())->capture_default_str();
   if (which & kThreadsOption)
-    threads_option = app.add_option("--threads", threads,
-                                    "threads of the exact check, the file writers and the parallel peers, 0: all; the build "
-                                    "runs threaded only when --threads is given (with --perturb sos the tets are the same "
-                                    "for any count)")
-                         ->transform(count_in(0, 1024))
-                         ->capture_default_str();
+    threads_option =
+        app.add_option("--threads", threads,
+                       "threads of the exact check, the file writers and the parallel peers, 0: all; the build "
+                       "runs threaded only when --threads is given (with --perturb sos the tets are the same "
+                       "for any count)")
+            ->transform(count_in(0, 1024))
+            ->capture_default_str();
 }
 
 BuildOptions KernelArgs::build_options() const {
