@@ -118,7 +118,9 @@ TEST_CASE("parallel build: lattice points (sos), input order, bigtet, duplicates
   require_same_as_serial(copies, PredicateSpec{"exact", 0, false, true}, {}, 1);
 }
 
-TEST_CASE("without perturbation --threads builds on one thread: a valid Delaunay tetrahedralization of degenerate input", "[threads]") {
+TEST_CASE(
+    "without perturbation --threads builds on one thread: a valid Delaunay tetrahedralization of degenerate input",
+    "[threads]") {
   for (unsigned threads : {2u, 4u, 8u}) {
     INFO("threads " << threads);
     const BuildResult r = build_delaunay(lattice(12, threads), kAdaptiveRaw, threaded(threads));
