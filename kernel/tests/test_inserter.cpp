@@ -8,17 +8,13 @@
 #include "kernel/build.hpp"
 #include "predicates/exact.hpp"
 
+#include "random_points.hpp"
+
 using namespace dtlab;
 
 namespace {
 
-std::vector<Point3> uniform(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<Point3> pts(n);
-  for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
-  return pts;
-}
+using test::uniform;
 
 std::vector<Point3> lattice(int k) {
   std::vector<Point3> pts;
