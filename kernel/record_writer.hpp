@@ -4,6 +4,7 @@
 // records are formatted in parallel and written in order, so the bytes are the same
 // for every thread count. Doubles are written in the shortest form that reads back
 // to the same double (std::to_chars without a precision).
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -25,8 +26,12 @@ inline char* put_chars(char* out, double v) { return std::to_chars(out, out + kM
 template <class Format>
 void write_records(OutputFile& f, std::size_t count, std::size_t max_bytes, unsigned threads, Format&& format) {
   constexpr std::size_t kBlock = 1 << 15;  // records per block: a few MB of text
-  const unsigned workers = thread_count(threads);
-  std::vector<std::vector<char>> buffers(workers, std::vector<char>(kBlock * max_bytes));
+  // One buffer per block in flight: no more workers than blocks, nor than the machine
+  // runs at once (the bytes do not depend on the count), and no block larger than the file.
+  const std::size_t block_count = std::max<std::size_t>((count + kBlock - 1) / kBlock, 1);
+  const unsigned workers = static_cast<unsigned>(
+      std::min<std::size_t>({thread_count(threads), thread_count(0), block_count}));
+  std::vector<std::vector<char>> buffers(workers, std::vector<char>(std::min(kBlock, count) * max_bytes));
   std::vector<std::size_t> used(workers);
   for (std::size_t round = 0; round < count; round += kBlock * workers) {
     // One block per worker: formatted in parallel, then written in block order.

@@ -53,6 +53,27 @@ TriangleMesh read_off(const std::string& path) {
   return mesh;
 }
 
+namespace {
+
+// OBJ statements other than v and f. Attributes and grouping (texture coordinates,
+// normals, groups, smoothing, materials, display settings) do not change the surface:
+// skipped. Lines, points and free-form curves or surfaces are geometry a triangle mesh
+// cannot hold, and anything else is not OBJ: both refused rather than dropped.
+void check_obj_statement(LineReader& r, std::string_view keyword) {
+  static constexpr std::string_view kSkipped[] = {"vt",      "vn",     "g",      "o",      "s",       "mg",
+                                                  "usemtl",  "mtllib", "usemap", "maplib", "lod",     "bevel",
+                                                  "c_interp", "d_interp", "shadow_obj", "trace_obj", "ctech", "stech"};
+  static constexpr std::string_view kUnsupported[] = {"l",    "p",     "vp",   "cstype", "deg", "bmat",
+                                                      "step", "curv",  "curv2", "surf",  "parm", "trim",
+                                                      "hole", "scrv",  "sp",    "end",   "con",  "call", "csh"};
+  if (std::find(std::begin(kSkipped), std::end(kSkipped), keyword) != std::end(kSkipped)) return;
+  if (std::find(std::begin(kUnsupported), std::end(kUnsupported), keyword) != std::end(kUnsupported))
+    r.fail("OBJ '" + std::string(keyword) + "' elements (lines, points, free-form geometry) are not a triangle surface");
+  r.fail("unknown OBJ statement '" + std::string(keyword) + "'");
+}
+
+}  // namespace
+
 TriangleMesh read_obj(const std::string& path) {
   LineReader r(path);
   std::vector<std::string_view> tok;
@@ -80,8 +101,9 @@ TriangleMesh read_obj(const std::string& path) {
         poly.push_back(i > 0 ? i - 1 : static_cast<long>(mesh.vertices.size()) + i);
       }
       detail::add_polygon(mesh, poly, path, r.line());
+    } else {
+      check_obj_statement(r, tok[0]);
     }
-    // vt, vn, g, o, s, usemtl, mtllib, l, ...: not geometry we sample.
   }
   return mesh;
 }

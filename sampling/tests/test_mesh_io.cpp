@@ -69,7 +69,7 @@ TEST_CASE("OFF reader: tetrahedron, polygons split into fans, errors with line n
         "6:face with 2 corner(s), need 3");
 }
 
-TEST_CASE("OBJ reader: slashes, negative indices, other records ignored, errors") {
+TEST_CASE("OBJ reader: slashes, negative indices, attributes skipped, other statements refused, errors") {
   check_tet(read_mesh(write_file("tet.obj",
                                  "# tet\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nvt 0 0\n"
                                  "f 1/1/1 3/1/1 2/1/1\nf 1//1 2//1 4//1\nf -4 -1 -2\ng x\nf 2 3 4\n")));
@@ -85,6 +85,14 @@ TEST_CASE("OBJ reader: slashes, negative indices, other records ignored, errors"
           read_obj(write_file("bad2s.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/2 7/3\n"));
         }).rfind("4:vertex index 7 out of range", 0) == 0);
   CHECK(input_error([] { read_obj(write_file("bad3.obj", "v 0 0\n")); }) == "1:vertex needs 3 coordinates");
+  // Attribute and grouping statements are skipped; geometry a triangle surface cannot
+  // hold, and statements OBJ does not have, are refused rather than dropped.
+  check_tet(read_mesh(write_file("tet_attr.obj", "mtllib a.mtl\no t\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\ns off\n"
+                                                 "usemtl m\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")));
+  CHECK(input_error([] { read_obj(write_file("bad4.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n")); })
+            .rfind("3:OBJ 'l' elements", 0) == 0);
+  CHECK(input_error([] { read_obj(write_file("bad5.obj", "v 0 0 0\nbogus line\n")); }) ==
+        "2:unknown OBJ statement 'bogus'");
 }
 
 TEST_CASE("PLY reader: ASCII and binary little/big endian, extra properties and elements") {
