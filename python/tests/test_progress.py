@@ -274,3 +274,16 @@ def test_fuzz_campaign_callback_that_raises_stops_it():
                             progress=stop)
     assert calls == [(1, "uniform"), (2, "uniform"), (1, "cospherical")]
     assert no_child_left(before)
+
+
+def test_overhead_benchmark_runs(capsys):
+    """python/benchmarks/progress_overhead.py works (its numbers are for python/README.md, not asserted)."""
+    import importlib.util
+    path = os.path.join(os.path.dirname(__file__), "..", "benchmarks", "progress_overhead.py")
+    spec = importlib.util.spec_from_file_location("progress_overhead", path)
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    assert bench.main(["--sizes", "2000", "--rounds", "1"]) == 0
+    rows = [line for line in capsys.readouterr().out.splitlines() if line.startswith("| 2000 |")]
+    assert [r.split("|")[2].strip() for r in rows] == ["None", "no-op callable", "True"]
+    assert rows[1].split("|")[-2].strip() == "1001"  # every 2 points, and the end
