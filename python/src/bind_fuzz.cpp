@@ -67,8 +67,8 @@ py::dict case_dict(experiments::PeerCase& c, bool keep_files) {
 // progress(done, total, FAMILY) after each case: the family's cases done, of `cases`
 // (the campaign runs one case at a time, on the calling thread).
 void report_cases(experiments::PeerCampaignOptions& o, std::function<void(const ProgressEvent&)> emit) {
-  o.on_case = [emit = std::move(emit), total = o.cases, done = std::map<std::string, std::size_t>()](
-                  const experiments::PeerCase& c) mutable {
+  o.on_case = [emit = std::move(emit), total = o.cases,
+               done = std::map<std::string, std::size_t>()](const experiments::PeerCase& c) mutable {
     emit(ProgressEvent{c.source, ++done[c.source], total});
   };
 }

@@ -148,8 +148,10 @@ OracleSession run_on_worker(std::span<const Point3> pts, OracleSessionOptions o,
       const py::gil_scoped_release nogil;
       ended = done.wait_for(std::chrono::milliseconds(500)) == std::future_status::ready;
     }
-    if (ended) worker.join();
-    else worker.detach();
+    if (ended)
+      worker.join();
+    else
+      worker.detach();
     throw py::error_already_set();
   }
   worker.join();
@@ -194,9 +196,9 @@ OracleSession run_here(std::span<const Point3> pts, OracleSessionOptions o, cons
 py::dict session_dict(const OracleSession& s);
 
 py::dict oracle(py::handle points, const std::vector<std::string>& against, const std::string& predicates,
-                const std::string& perturb, const std::string& boundary, const std::string& order,
-                std::uint64_t seed, double eps, const std::string& eps_mode, const std::string& tetgen,
-                double timeout, double memory_mb, const py::dict& functions, const py::object& progress) {
+                const std::string& perturb, const std::string& boundary, const std::string& order, std::uint64_t seed,
+                double eps, const std::string& eps_mode, const std::string& tetgen, double timeout, double memory_mb,
+                const py::dict& functions, const py::object& progress) {
   // The same kernel options as `dtlab oracle` (and tetrahedralize()).
   const KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
   if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("--timeout: must be a number in [0.001, 1e6]");
@@ -240,8 +242,8 @@ py::dict session_dict(const OracleSession& s) {
 void bind_oracle(py::module_& m) {
   set_interrupt_check(&host_interrupt_requested);
   m.def("oracle", &oracle, py::arg("points"), py::arg("against"), py::arg("predicates"), py::arg("perturb"),
-        py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"),
-        py::arg("tetgen"), py::arg("timeout"), py::arg("memory_mb"), py::arg("functions") = py::dict(), py::arg("progress") = py::none(),
+        py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"), py::arg("tetgen"),
+        py::arg("timeout"), py::arg("memory_mb"), py::arg("functions") = py::dict(), py::arg("progress") = py::none(),
         "`dtlab oracle` on an array (see dtlab.oracle).");
 }
 
