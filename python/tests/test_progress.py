@@ -184,20 +184,33 @@ def test_oracle_progress_true_writes_a_line_per_stage(capsys, monkeypatch):
         assert line in err
 
 
-def test_oracle_callback_that_raises_ends_the_running_peer():
-    pytest.importorskip("scipy")
-    before = children()
-    seen = []
+def sleeper(tmp_path):
+    """A 'tetgen' that never answers (dtlab.oracle(tetgen=...)): it would outlive the
+    call unless the call ends it."""
+    path = tmp_path / "tetgen"
+    path.write_text("#!/bin/sh\nexec sleep 1000\n")
+    path.chmod(0o755)
+    return str(path)
 
-    def stop_while_scipy_runs(done, total, stage):
+
+def test_oracle_callback_that_raises_ends_the_running_peer(tmp_path):
+    before = children()
+    seen, running = [], []
+
+    def stop_while_tetgen_runs(done, total, stage):
         seen.append(stage)
-        if stage == "scipy: running":
-            time.sleep(0.2)  # the peer's process is started meanwhile (a fresh python3)
+        if stage == "tetgen: running":
+            deadline = time.monotonic() + 10  # the peer's process starts meanwhile
+            while not running and time.monotonic() < deadline:
+                running.extend(set(children()) - set(before))
+                time.sleep(0.005)
             raise Stop("stop")
 
     with pytest.raises(Stop):
-        dtlab.oracle(points(2000), against=["scipy", "cgal"], progress=stop_while_scipy_runs)
-    assert seen[-1] == "scipy: running" and "cgal: running" not in seen
+        dtlab.oracle(points(2000), against=["tetgen", "cgal"], tetgen=sleeper(tmp_path), timeout=600,
+                     progress=stop_while_tetgen_runs)
+    assert seen[-1] == "tetgen: running" and "cgal: running" not in seen
+    assert running  # the callable raised while the peer's process ran (for 1000 s unless ended)
     assert no_child_left(before)
     assert dtlab.oracle(points(500), against=["cgal"]).peers["cgal"].verdict == "delaunay"  # still works
 
@@ -216,12 +229,11 @@ def test_oracle_callback_that_raises_stops_our_build_or_check(stage):
 
 
 def test_ctrl_c_with_a_progress_callback_answers_at_once(tmp_path):
-    pytest.importorskip("scipy")
     marker = tmp_path / "running"
     script = textwrap.dedent(f"""
         import numpy as np, os, subprocess, sys, time, dtlab
         def mark(done, total, stage):
-            if stage == "scipy: running":
+            if stage == "tetgen: running":
                 open({str(marker)!r}, "w").write("x")
         def children():
             out = subprocess.run(["ps", "-o", "pid=,stat=,comm=", "--ppid", str(os.getpid())],
@@ -229,7 +241,8 @@ def test_ctrl_c_with_a_progress_callback_answers_at_once(tmp_path):
             return [l for l in out if l.strip() and "dtlab-watchdog" not in l and " ps" not in l
                     and not l.split()[1].startswith("Z")]
         try:
-            dtlab.oracle(np.random.default_rng(3).random((2000, 3)), against=["scipy"], timeout=600, progress=mark)
+            dtlab.oracle(np.random.default_rng(3).random((2000, 3)), against=["tetgen"],
+                         tetgen={sleeper(tmp_path)!r}, timeout=600, progress=mark)
         except KeyboardInterrupt:
             print("KeyboardInterrupt", flush=True)
             deadline = time.monotonic() + 3
@@ -243,10 +256,11 @@ def test_ctrl_c_with_a_progress_callback_answers_at_once(tmp_path):
     while not marker.exists():
         assert time.monotonic() < deadline and proc.poll() is None
         time.sleep(0.01)
+    time.sleep(0.1)  # the sleeper has started
     t0 = time.monotonic()
     proc.send_signal(signal.SIGINT)
     line = proc.stdout.readline()
-    assert time.monotonic() - t0 < 5  # a 50 ms poll (and half a second for the peer to end), not the peer's end
+    assert time.monotonic() - t0 < 5  # a 50 ms poll (and half a second for the peer to end), not the peer's 1000 s
     out, _ = proc.communicate(timeout=30)
     assert proc.returncode == 7 and line.strip() == "KeyboardInterrupt" and out.strip() == "children: []"
 
