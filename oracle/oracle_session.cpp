@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "kernel/progress.hpp"
 #include "oracle/check.hpp"
 #include "oracle/child_process.hpp"
 #include "oracle/peer_json.hpp"
@@ -59,7 +60,11 @@ OracleSession run_oracle_session(std::span<const Point3> pts, const OracleSessio
   for (const auto& name : names) {
     stop_if_interrupted();
     if (opt.progress) opt.progress(name, s.peers.size(), names.size());
-    s.peers.push_back(run_peer(name, pts, opt.peers));
+    {
+      const ProgressScope quiet(nullptr);
+      s.peers.push_back(run_peer(name, pts, opt.peers));
+    }
+    if (opt.on_peer) opt.on_peer(s.peers.back(), s.peers.size(), names.size());
   }
   bool incomplete = false;
   for (std::size_t i = 0; i < s.peers.size(); ++i) {

@@ -29,6 +29,8 @@ struct OracleSessionOptions {
   PeerOptions peers;
   // Called before each peer runs (name, peers done, peers in all): progress of long runs.
   std::function<void(const std::string&, std::size_t, std::size_t)> progress;
+  // Called after each peer's run is judged (the run, peers done, peers in all).
+  std::function<void(const PeerRun&, std::size_t, std::size_t)> on_peer;
 };
 
 struct OracleSession {
@@ -46,7 +48,9 @@ struct OracleSession {
 };
 
 // Throws std::invalid_argument for an unknown peer name and for input that spans no
-// volume (fewer than 4 points, all coplanar: the CLI's exit 2).
+// volume (fewer than 4 points, all coplanar: the CLI's exit 2). This thread's progress
+// listener (kernel/progress.hpp) hears our build ("insert") and our check ("check"),
+// not the checks of the peers' answers.
 OracleSession run_oracle_session(std::span<const Point3> points, const OracleSessionOptions& options);
 
 // {ok, exit, problems, not_compared, dtlab: {verdict, seconds, tets, duplicates,

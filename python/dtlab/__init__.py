@@ -145,7 +145,8 @@ def compare(points: Any, tets_a: Any, tets_b: Any, orientation: str = "any") -> 
 def oracle(points: Any, against: Sequence[str] | str = ("cgal", "tetgen"), *, predicates: str = "adaptive",
            perturb: str = "sos", boundary: str = "infinite", order: str = "brio", seed: int = 1,
            eps: float = 1e-12, eps_mode: str = "absolute", tetgen: str = "tetgen", timeout: float = 600.0,
-           memory_mb: float = 0.0, peers: Mapping[str, Callable[[np.ndarray], Any]] | None = None) -> OracleReport:
+           memory_mb: float = 0.0, peers: Mapping[str, Callable[[np.ndarray], Any]] | None = None,
+           progress: ProgressArg = None) -> OracleReport:
     """`dtlab oracle` on an array: builds ours (the kernel options of tetrahedralize()),
     runs every peer in `against` ("all", or names such as cgal, cgal-inexact, tetgen,
     tetgen-flip, qhull, qhull-qj, scipy, gmsh, gmsh-hxt, dtlab:naive) in its own
@@ -158,12 +159,19 @@ def oracle(points: Any, against: Sequence[str] | str = ("cgal", "tetgen"), *, pr
     the (n, 3) float64 points and returns an (m, 4) integer array of tets (0-based, any
     orientation). It runs in a forked child under the same limits, so its segfault,
     exception, hang or allocation is a verdict (crashed, refused, hung, ...), never the
-    interpreter's end; see dtlab._function_peer."""
+    interpreter's end; see dtlab._function_peer.
+
+    progress: None, True (a tqdm bar) or a callable progress(done, total, stage), called
+    on the calling thread: our build ("insert", about every n/1000 points), our check
+    ("check", done of 8), then each peer as it starts ("NAME: running") and once judged
+    ("NAME: VERDICT", e.g. "cgal: delaunay"), done = peers finished, total = peers. What
+    it raises (KeyboardInterrupt too) ends the running peer's process and propagates."""
     if isinstance(against, str):
         against = [a for a in against.split(",") if a]
     against = list(against) + [name for name in (peers or {}) if name not in against]
-    raw = _core.oracle(points, against, predicates, perturb, boundary, order, int(seed), float(eps), eps_mode,
-                       tetgen, float(timeout), float(memory_mb), _function_peer.runners(peers))
+    with StageBar(progress, "oracle") as bar:
+        raw = _core.oracle(points, against, predicates, perturb, boundary, order, int(seed), float(eps), eps_mode,
+                           tetgen, float(timeout), float(memory_mb), _function_peer.runners(peers), bar.callback)
     checks = raw["peer_checks"]
 
     def run(name: str, r: dict[str, Any], tets: Any, check: dict[str, Any] | None) -> OracleRun:

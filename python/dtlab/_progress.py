@@ -1,10 +1,11 @@
 """Progress of long calls: `progress=` takes None/False (silent), True (a tqdm bar when
 tqdm is installed, else one line per stage on stderr) or a callable
 progress(done, total, stage). `Progress` counts the stages of a Python-side call
-(dtlab.spatial); `StageBar` is handed to the C++ loops (tetrahedralize, check,
-fracture, fuzz campaigns), which call it about every total/1000 items of each stage
-and at its end, from the calling thread (or a worker, one at a time) with the GIL
-held. Whatever it raises (KeyboardInterrupt included) stops the call and propagates."""
+(dtlab.spatial); `StageBar` is handed to the C++ calls (tetrahedralize, check,
+fracture, oracle, fuzz campaigns), which call it about every total/1000 items of each
+stage and at its end, from the calling thread (fracture: or a worker, one at a time)
+with the GIL held. Whatever it raises (KeyboardInterrupt included) stops the call and
+propagates."""
 from __future__ import annotations
 
 import sys
@@ -80,8 +81,9 @@ class StageBar:
         self.callback: Callable[[int, int, str], Any] | None = None if how is None else self
 
     def _line(self, done: int, total: int, stage: str) -> None:
-        if done == 0 or done >= total:
+        if stage != self._stage or done >= total:
             print(f"{self.label}: {stage} {done}/{total}", file=sys.stderr)
+        self._stage = stage
 
     def __call__(self, done: int, total: int, stage: str) -> None:
         if self._bar is not None:

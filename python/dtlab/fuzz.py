@@ -16,6 +16,7 @@ from typing import Any, Union
 import numpy as np
 
 from . import _core, _function_peer
+from ._progress import ProgressArg, StageBar
 
 
 def _uint(value: int, name: str, bits: int = 64) -> int:
@@ -114,7 +115,7 @@ def _peer_name(target: PeerTarget, name: str | None) -> str:
 def campaign(target: PeerTarget, families: Sequence[str] | str = "all", cases: int = 100, points: int = 64, seed: int = 1,
              out: str | os.PathLike[str] | None = None, *, min_points: int | None = None, shrink: bool = True,
              shrink_budget: int = 500, timeout: float = 600.0, memory_mb: float = 0.0,
-             name: str | None = None) -> Campaign:
+             name: str | None = None, progress: ProgressArg = None) -> Campaign:
     """`dtlab fuzz --target PEER` from Python: case i of each family (the CLI's generators
     and case seeds, n drawn in [min_points, points]; min_points defaults to min(8, points)) goes to the peer, each run in its own
     process under `timeout` seconds and `memory_mb` MB (0: half the machine's) and judged
@@ -128,7 +129,11 @@ def campaign(target: PeerTarget, families: Sequence[str] | str = "all", cases: i
     for the corpus (<out>/corpus/*.node with a .json sidecar each, the CLI's files);
     None keeps the shrunk inputs in the result only. Returns a Campaign: per-family
     failure counts with Wilson intervals, and every case with its shrunk input. Cases
-    run one at a time; Ctrl-C ends the running child and raises KeyboardInterrupt."""
+    run one at a time; Ctrl-C ends the running child and raises KeyboardInterrupt.
+
+    progress: None, True (a tqdm bar) or a callable progress(done, total, family) after
+    each case (and its shrink): the family's cases done, total = cases. What it raises
+    (KeyboardInterrupt too) stops the campaign and propagates."""
     lo = min(8, _uint(points, "points")) if min_points is None else _uint(min_points, "min_points")  # the CLI's
     peer = _peer_name(target, name)
     functions = {} if isinstance(target, str) else _function_peer.runners({peer: target})
@@ -138,10 +143,11 @@ def campaign(target: PeerTarget, families: Sequence[str] | str = "all", cases: i
     if len(names) < len(families):
         names = [n for n, _ in _core.fuzz_families()] + names
     names = list(dict.fromkeys(names))
-    raw = _core.fuzz_peer_campaign(peer, functions, names, _uint(cases, "cases"), lo,
-                                   _uint(points, "points"), _uint(seed, "seed"), "" if out is None else os.fspath(out),
-                                   bool(shrink), _uint(shrink_budget, "shrink_budget"), float(timeout),
-                                   float(memory_mb))
+    with StageBar(progress, "fuzz") as bar:
+        raw = _core.fuzz_peer_campaign(peer, functions, names, _uint(cases, "cases"), lo, _uint(points, "points"),
+                                       _uint(seed, "seed"), "" if out is None else os.fspath(out), bool(shrink),
+                                       _uint(shrink_budget, "shrink_budget"), float(timeout), float(memory_mb),
+                                       bar.callback)
     results = [CaseResult(**c) for c in raw]
     per_family: dict[str, FamilyResult] = {}
     for f in names:

@@ -1,8 +1,12 @@
 // _core.fuzz_families, _core.fuzz_generate, _core.fuzz_case_seed, _core.fuzz_case_points:
 // the fuzz module's point-set registry, bit for bit what `dtlab fuzz` generates.
 // _core.fuzz_peer_campaign: `dtlab fuzz --target PEER` (experiments/peer_campaign.hpp)
-// on a peer name or a Python callable; _core.wilson_interval: its rates' intervals.
+// on a peer name or a Python callable, with progress= per family; _core.wilson_interval: its rates' intervals.
+#include <functional>
+#include <map>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include <pybind11/stl.h>
 #include "experiments/peer_campaign.hpp"
@@ -15,6 +19,7 @@
 #include "python/src/function_peers.hpp"
 #include "python/src/interrupt_check.hpp"
 #include "python/src/numpy_io.hpp"
+#include "python/src/progress_callback.hpp"
 
 namespace py = pybind11;
 
@@ -59,12 +64,21 @@ py::dict case_dict(experiments::PeerCase& c, bool keep_files) {
   return d;
 }
 
+// progress(done, total, FAMILY) after each case: the family's cases done, of `cases`
+// (the campaign runs one case at a time, on the calling thread).
+void report_cases(experiments::PeerCampaignOptions& o, std::function<void(const ProgressEvent&)> emit) {
+  o.on_case = [emit = std::move(emit), total = o.cases,
+               done = std::map<std::string, std::size_t>()](const experiments::PeerCase& c) mutable {
+    emit(ProgressEvent{c.source, ++done[c.source], total});
+  };
+}
+
 // The CLI's run_target (cli/cmd_fuzz.cpp) without its table: the same cases, seeds,
 // verdicts and shrinking. Without an out folder the corpus goes to a temporary one.
 py::list peer_campaign(const std::string& target, const py::dict& functions, const std::vector<std::string>& families,
                        std::size_t cases, std::size_t min_points, std::size_t max_points, std::uint64_t seed,
                        const std::string& out_dir, bool shrink, std::size_t shrink_budget, double timeout,
-                       double memory_mb) {
+                       double memory_mb, const py::object& progress) {
   if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("--timeout: must be a number in [0.001, 1e6]");
   if (!(memory_mb >= 0 && memory_mb <= 1e9)) throw py::value_error("--memory: must be a number in [0, 1e9]");
   if (min_points > max_points)
@@ -90,6 +104,7 @@ py::list peer_campaign(const std::string& target, const py::dict& functions, con
   std::optional<TempDir> scratch;
   if (out_dir.empty()) scratch.emplace("dtlab-campaign");
   o.out_dir = out_dir.empty() ? scratch->path().string() : out_dir;
+  if (!progress.is_none()) report_cases(o, pending_callback(progress));
   std::vector<experiments::PeerCase> results;
   bool interrupted = false;
   {
@@ -98,7 +113,7 @@ py::list peer_campaign(const std::string& target, const py::dict& functions, con
     try {
       results = experiments::run_peer_campaign(o);
     } catch (const ChildInterrupted&) {
-      interrupted = true;  // the KeyboardInterrupt (or the runner's error) is pending, raised below
+      interrupted = true;  // the KeyboardInterrupt (or the runner's or progress's error) is pending, raised below
     } catch (const std::exception& e) {
       py::gil_scoped_acquire gil;
       throw py::value_error(e.what());
@@ -124,6 +139,7 @@ void bind_fuzz(py::module_& m) {
   m.def("fuzz_peer_campaign", &peer_campaign, py::arg("target"), py::arg("functions"), py::arg("families"),
         py::arg("cases"), py::arg("min_points"), py::arg("max_points"), py::arg("seed"), py::arg("out_dir"),
         py::arg("shrink"), py::arg("shrink_budget"), py::arg("timeout"), py::arg("memory_mb"),
+        py::arg("progress") = py::none(),
         "`dtlab fuzz --target PEER` on a peer name or a callable (see dtlab.fuzz.campaign).");
   m.def(
       "wilson_interval",

@@ -1,16 +1,22 @@
 // _core.oracle: `dtlab oracle` on a numpy array, through the same library call as
 // the CLI (oracle/oracle_session.hpp): the same peers, verdicts, comparisons and
-// exit code. `functions`: {name: runner} of Python callables as peers (function_peers.hpp).
+// exit code. `functions`: {name: runner} of Python callables as peers (function_peers.hpp);
+// `progress`: None or progress(done, total, stage), called on the calling thread.
 #include <pthread.h>
 #include <signal.h>
 
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <functional>
 #include <future>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "oracle/child_process.hpp"
@@ -24,23 +30,63 @@
 #include "python/src/json_to_python.hpp"
 #include "python/src/kernel_options.hpp"
 #include "python/src/numpy_io.hpp"
+#include "python/src/progress_callback.hpp"
 
 namespace py = pybind11;
 
 namespace dtlab::python {
 namespace {
 
+// Progress events of a call on a worker thread, queued for the Python thread that waits
+// for it: the callable runs there, with the GIL.
+class ProgressQueue {
+ public:
+  struct Event {
+    std::size_t done, total;
+    std::string stage;
+  };
+  void push(const ProgressEvent& e) {
+    const std::lock_guard<std::mutex> g(lock_);
+    events_.push_back({e.done, e.total, std::string(e.stage)});
+  }
+  std::vector<Event> take() {
+    const std::lock_guard<std::mutex> g(lock_);
+    return std::exchange(events_, {});
+  }
+
+ private:
+  std::mutex lock_;
+  std::vector<Event> events_;
+};
+
+// The session's peer hooks as progress events: "NAME: running" as a peer starts and
+// "NAME: VERDICT" once it is judged, done = the peers finished, of all. (Our build,
+// "insert", and our check, "check", reach the thread's listener by themselves.)
+void report_peers(OracleSessionOptions& o, const std::function<void(const ProgressEvent&)>& emit) {
+  o.progress = [emit](const std::string& name, std::size_t done, std::size_t total) {
+    const std::string stage = name + ": running";
+    emit(ProgressEvent{stage, done, total});
+  };
+  o.on_peer = [emit](const PeerRun& run, std::size_t done, std::size_t total) {
+    const std::string stage = run.name + ": " + verdict_name(run.verdict);
+    emit(ProgressEvent{stage, done, total});
+  };
+}
+
 // One oracle() call, shared by the caller and the worker thread that runs it. The
-// caller waits without the GIL and checks Python's signals every 50 ms; on Ctrl-C it
-// raises KeyboardInterrupt at once and leaves the worker to end alone. The build and
-// the exact checks cannot stop midway: the worker finishes the stage it is in, its
-// result discarded; a running peer is killed and no further stage starts.
+// caller waits without the GIL and, every 50 ms, checks Python's signals and hands the
+// queued progress to the callable; on Ctrl-C (or an exception of the callable) it
+// cancels the worker, gives it half a second to end (a running peer is killed, the
+// build stops at its next progress step) and raises, leaving a worker still in a
+// check to end alone, its result discarded.
 struct OracleCall {
   std::vector<Point3> points;
   OracleSessionOptions options;
   OracleSession session;
   std::exception_ptr error;
   std::atomic<bool> cancelled{false};
+  bool report = false;  // queue progress events
+  ProgressQueue events;
   std::promise<void> done;
 };
 
@@ -51,27 +97,93 @@ void run_call(const std::shared_ptr<OracleCall>& call) {
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&block, sig);
   pthread_sigmask(SIG_BLOCK, &block, nullptr);
   t_cancelled = &call->cancelled;
+  OracleCall& c = *call;
+  const std::function<void(const ProgressEvent&)> emit = [&c](const ProgressEvent& e) {
+    if (c.cancelled) throw ChildInterrupted();
+    if (c.report) c.events.push(e);
+  };
+  Progress listener(emit);
+  const ProgressScope scope(&listener);
+  report_peers(c.options, emit);
   try {
-    call->session = run_oracle_session(call->points, call->options);
+    c.session = run_oracle_session(c.points, c.options);
   } catch (...) {
-    call->error = std::current_exception();
+    c.error = std::current_exception();
   }
-  call->done.set_value();
+  c.done.set_value();
 }
 
-py::dict session_dict(const OracleSession& s);
+// Waits for the worker (see OracleCall). False when the caller gives up: Ctrl-C, or
+// the callable raised; the exception is then pending.
+bool wait_for_worker(OracleCall& call, std::future<void>& done, const py::object& progress) {
+  std::function<void(const ProgressEvent&)> callback;
+  if (!progress.is_none()) callback = python_callback(progress);
+  const py::gil_scoped_release nogil;
+  for (;;) {
+    const bool ready = done.wait_for(std::chrono::milliseconds(50)) == std::future_status::ready;
+    const py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) return false;
+    try {
+      for (const ProgressQueue::Event& e : call.events.take())
+        if (callback) callback(ProgressEvent{e.stage, e.done, e.total});
+    } catch (py::error_already_set& e) {
+      e.restore();
+      return false;
+    }
+    if (ready) return true;
+  }
+}
 
-// The session on the calling thread, the GIL released; Ctrl-C through InterruptCheck.
-OracleSession run_here(std::span<const Point3> pts, const OracleSessionOptions& o) {
+OracleSession run_on_worker(std::span<const Point3> pts, OracleSessionOptions o, const py::object& progress) {
+  auto call = std::make_shared<OracleCall>();
+  call->points.assign(pts.begin(), pts.end());
+  call->options = std::move(o);
+  call->report = !progress.is_none();
+  std::future<void> done = call->done.get_future();
+  std::thread worker(run_call, call);
+  if (!wait_for_worker(*call, done, progress)) {
+    call->cancelled = true;
+    bool ended = false;
+    {
+      const py::gil_scoped_release nogil;
+      ended = done.wait_for(std::chrono::milliseconds(500)) == std::future_status::ready;
+    }
+    if (ended)
+      worker.join();
+    else
+      worker.detach();
+    throw py::error_already_set();
+  }
+  worker.join();
+  if (call->error) {
+    try {
+      std::rethrow_exception(call->error);
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(e.what());
+    }
+  }
+  return std::move(call->session);
+}
+
+// The session on the calling thread, the GIL released; Ctrl-C through InterruptCheck,
+// progress straight to the callable (which takes the GIL).
+OracleSession run_here(std::span<const Point3> pts, OracleSessionOptions o, const py::object& progress) {
+  std::optional<Progress> listener;
+  if (!progress.is_none()) {
+    const auto emit = pending_callback(progress);
+    listener.emplace(emit);
+    report_peers(o, emit);
+  }
   OracleSession s;
   bool interrupted = false;
   {
     const InterruptCheck check;
-    py::gil_scoped_release nogil;
+    const py::gil_scoped_release nogil;
+    const ProgressScope scope(progress_pointer(listener));
     try {
       s = run_oracle_session(pts, o);
     } catch (const ChildInterrupted&) {
-      interrupted = true;  // the KeyboardInterrupt is pending, raised below
+      interrupted = true;  // the KeyboardInterrupt (or the callable's exception) is pending, raised below
     } catch (const std::invalid_argument& e) {
       py::gil_scoped_acquire gil;
       throw py::value_error(e.what());
@@ -81,10 +193,12 @@ OracleSession run_here(std::span<const Point3> pts, const OracleSessionOptions& 
   return s;
 }
 
+py::dict session_dict(const OracleSession& s);
+
 py::dict oracle(py::handle points, const std::vector<std::string>& against, const std::string& predicates,
-                const std::string& perturb, const std::string& boundary, const std::string& order,
-                std::uint64_t seed, double eps, const std::string& eps_mode, const std::string& tetgen,
-                double timeout, double memory_mb, const py::dict& functions) {
+                const std::string& perturb, const std::string& boundary, const std::string& order, std::uint64_t seed,
+                double eps, const std::string& eps_mode, const std::string& tetgen, double timeout, double memory_mb,
+                const py::dict& functions, const py::object& progress) {
   // The same kernel options as `dtlab oracle` (and tetrahedralize()).
   const KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
   if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("--timeout: must be a number in [0.001, 1e6]");
@@ -106,37 +220,8 @@ py::dict oracle(py::handle points, const std::vector<std::string>& against, cons
   o.peers.tetgen = tetgen;
   // Python callables fork from the interpreter's own thread: the session runs here and
   // Ctrl-C is answered by the peer runner's polls (between stages and during peers).
-  if (!function_peers.names().empty()) return session_dict(run_here(pts, o));
-  auto call = std::make_shared<OracleCall>();
-  call->points.assign(pts.begin(), pts.end());
-  call->options = std::move(o);
-  std::future<void> done = call->done.get_future();
-  std::thread worker(run_call, call);
-  bool interrupted = false;
-  {
-    py::gil_scoped_release nogil;
-    while (done.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
-      py::gil_scoped_acquire gil;
-      if (PyErr_CheckSignals() != 0) {
-        interrupted = true;  // the KeyboardInterrupt is pending, raised below
-        break;
-      }
-    }
-  }
-  if (interrupted) {
-    call->cancelled = true;
-    worker.detach();
-    throw py::error_already_set();
-  }
-  worker.join();
-  if (call->error) {
-    try {
-      std::rethrow_exception(call->error);
-    } catch (const std::invalid_argument& e) {
-      throw py::value_error(e.what());
-    }
-  }
-  return session_dict(call->session);
+  if (!function_peers.names().empty()) return session_dict(run_here(pts, std::move(o), progress));
+  return session_dict(run_on_worker(pts, std::move(o), progress));
 }
 
 py::dict session_dict(const OracleSession& s) {
@@ -157,8 +242,8 @@ py::dict session_dict(const OracleSession& s) {
 void bind_oracle(py::module_& m) {
   set_interrupt_check(&host_interrupt_requested);
   m.def("oracle", &oracle, py::arg("points"), py::arg("against"), py::arg("predicates"), py::arg("perturb"),
-        py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"),
-        py::arg("tetgen"), py::arg("timeout"), py::arg("memory_mb"), py::arg("functions") = py::dict(),
+        py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"), py::arg("tetgen"),
+        py::arg("timeout"), py::arg("memory_mb"), py::arg("functions") = py::dict(), py::arg("progress") = py::none(),
         "`dtlab oracle` on an array (see dtlab.oracle).");
 }
 

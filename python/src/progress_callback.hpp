@@ -10,6 +10,7 @@
 #include <pybind11/pybind11.h>
 
 #include "kernel/progress.hpp"
+#include "oracle/child_process.hpp"
 
 namespace dtlab::python {
 
@@ -22,6 +23,21 @@ inline std::function<void(const ProgressEvent&)> python_callback(const pybind11:
     pybind11::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw pybind11::error_already_set();
     f(e.done, e.total, pybind11::str(e.stage.data(), e.stage.size()));
+  };
+}
+
+// python_callback for calls that stop on ChildInterrupted (oracle(), fuzz campaigns,
+// whose peer runners end that way): what the callable raises is left pending, and the
+// binding raises it once the call has unwound (`throw pybind11::error_already_set()`).
+inline std::function<void(const ProgressEvent&)> pending_callback(const pybind11::object& callback) {
+  return [call = python_callback(callback)](const ProgressEvent& e) {
+    try {
+      call(e);
+    } catch (pybind11::error_already_set& error) {
+      const pybind11::gil_scoped_acquire gil;
+      error.restore();
+      throw ChildInterrupted();
+    }
   };
 }
 

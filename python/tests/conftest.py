@@ -7,6 +7,10 @@ import numpy as np
 import pytest
 
 
+def pytest_configure(config):
+    config.addinivalue_line("markers", "slow: left out of `make test` (the ctest entry python:FILE:slow runs them)")
+
+
 @pytest.fixture(scope="session")
 def cli():
     """Runs the `dtlab` binary (DTLAB_CLI, set by CTest) and returns its CompletedProcess."""

@@ -40,8 +40,13 @@ def ended(pid):
         return True
 
 
-def test_same_verdicts_as_the_builtin_scipy_peer_on_every_family():
-    for family in dtlab.fuzz.families():
+# The fast core runs in `make test`; every family (the README's numbers) is behind the
+# ctest label `slow` (python:test_function_peers:slow, pytest -m slow).
+FAST_FAMILIES = ["uniform", "cospherical", "lattice", "near_degenerate"]
+
+
+def same_oracle_verdicts(families):
+    for family in families:
         pts = dtlab.fuzz.case(family, 0)
         try:
             r = dtlab.oracle(pts, against=["scipy"], peers={"mine": scipy_fn})
@@ -54,6 +59,15 @@ def test_same_verdicts_as_the_builtin_scipy_peer_on_every_family():
         assert mine.defects == builtin.defects, family
         if mine.tets is not None:
             assert sorted(map(sorted, mine.tets.tolist())) == sorted(map(sorted, builtin.tets.tolist())), family
+
+
+def test_same_verdicts_as_the_builtin_scipy_peer():
+    same_oracle_verdicts(FAST_FAMILIES)
+
+
+@pytest.mark.slow
+def test_same_verdicts_as_the_builtin_scipy_peer_on_every_family():
+    same_oracle_verdicts(dtlab.fuzz.families())
 
 
 def test_each_misbehaviour_is_its_verdict(tmp_path):
@@ -192,11 +206,14 @@ def test_names_and_callables_are_checked():
     assert dtlab.oracle(pts, against=[], peers={"mine": scipy_fn}).peers["mine"].verdict == "delaunay"
 
 
-def test_campaign_on_a_callable_matches_the_builtin_peer():
-    families = "all"  # flat ones included
-    a = dtlab.fuzz.campaign(scipy_fn, families=families, cases=2, shrink=False)
-    b = dtlab.fuzz.campaign("scipy", families=families, cases=2, shrink=False)
-    assert len(a.families) == len(dtlab.fuzz.families())
+def same_campaign(families, cases):
+    """The function peer's and the built-in scipy peer's campaigns, case by case; both
+    timed (the fork of a warm interpreter against a fresh python3 per case)."""
+    t0 = time.monotonic()
+    a = dtlab.fuzz.campaign(scipy_fn, families=families, cases=cases, shrink=False)
+    t1 = time.monotonic()
+    b = dtlab.fuzz.campaign("scipy", families=families, cases=cases, shrink=False)
+    t2 = time.monotonic()
     assert a.peer == "scipy_fn" and b.peer == "scipy"
     assert [(c.family, c.index, c.n, c.verdict, c.failed) for c in a.cases] == \
            [(c.family, c.index, c.n, c.verdict, c.failed) for c in b.cases]
@@ -205,6 +222,25 @@ def test_campaign_on_a_callable_matches_the_builtin_peer():
     for c in a.cases:
         assert c.case_seed == dtlab.fuzz.case_seed(1, c.family, c.index)
         assert c.n == len(dtlab.fuzz.case(c.family, c.index))
+    return a, t1 - t0, t2 - t1
+
+
+def test_campaign_on_a_callable_matches_the_builtin_peer():
+    a, _, _ = same_campaign(",".join(FAST_FAMILIES), cases=1)
+    assert list(a.families) == FAST_FAMILIES
+
+
+@pytest.mark.slow
+def test_campaign_on_a_callable_matches_the_builtin_peer_on_every_family():
+    a, fn_seconds, builtin_seconds = same_campaign("all", cases=5)  # flat families included
+    assert len(a.families) == len(dtlab.fuzz.families())
+    verdicts = {}
+    for c in a.cases:
+        verdicts[c.verdict] = verdicts.get(c.verdict, 0) + 1
+    # the README's numbers (printed; `pytest -s -m slow` shows them)
+    print(f"\n{len(a.cases)} cases, {len(a.failures)} failing, verdicts {verdicts}; "
+          f"function peer {fn_seconds:.1f} s, built-in scipy peer {builtin_seconds:.1f} s, "
+          f"load average {os.getloadavg()[0]:.1f}")
 
 
 def drops_a_tet_above_nine(points):

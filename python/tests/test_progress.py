@@ -1,7 +1,14 @@
-"""progress= of tetrahedralize, check and fracture: the C++ loops call back from the
-calling thread with the GIL, a raised exception stops the call and propagates, and the
-result is the same with and without a listener."""
+"""progress= of tetrahedralize, check, fracture, oracle and fuzz campaigns: the C++
+loops call back from the calling thread with the GIL, a raised exception stops the call
+and propagates (ending any peer process it ran), and the result is the same with and
+without a listener."""
+import os
+import signal
+import subprocess
+import sys
+import textwrap
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -106,3 +113,191 @@ def test_tqdm_bar_reaches_the_total():
         assert isinstance(bar._bar, tqdm.tqdm)
         dtlab.tetrahedralize(points(5000), progress=bar)
         assert bar._bar.n == bar._bar.total == 5000
+
+
+def children():
+    """This process's children but the exit watchdog (kernel/exit_guard.hpp)."""
+    out = subprocess.run(["ps", "-o", "pid=,stat=,comm=", "--ppid", str(os.getpid())], capture_output=True,
+                         text=True).stdout.split("\n")
+    rows = [line.split(None, 2) for line in out if line.strip()]
+    return {int(r[0]): r[2] for r in rows if r[2] != "dtlab-watchdog" and r[2] != "ps" and not r[1].startswith("Z")}
+
+
+def no_child_left(before, seconds=3.0):
+    """True once no child of ours but those in `before` is left (a killed peer's reaping
+    may lag a little on a loaded machine)."""
+    deadline = time.monotonic() + seconds
+    while set(children()) - set(before):
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.02)
+    return True
+
+
+def split_stages(calls):
+    """(insert calls, check calls, peer calls) of an oracle() progress record."""
+    insert = [c for c in calls if c[2] == "insert"]
+    check = [c for c in calls if c[2] == "check"]
+    peers = [c for c in calls if c[2] not in ("insert", "check")]
+    assert calls == insert + check + peers  # in that order
+    return insert, check, peers
+
+
+def assert_peer_stages(peer_calls, report, names):
+    expected = []
+    for i, name in enumerate(names):
+        expected += [(i, len(names), f"{name}: running"), (i + 1, len(names), f"{name}: {report.peers[name].verdict}")]
+    assert peer_calls == expected
+
+
+@pytest.mark.parametrize("function_peer", [False, True])
+def test_oracle_reports_build_check_and_each_peer(function_peer):
+    scipy = pytest.importorskip("scipy.spatial")
+    pts = points(3000)
+    caller = threading.get_ident()
+    calls, threads = [], set()
+
+    def record(done, total, stage):
+        calls.append((done, total, stage))
+        threads.add(threading.get_ident())
+
+    # With a function peer the session runs on this thread, else on a worker.
+    fns = {"mine": lambda p: scipy.Delaunay(p).simplices} if function_peer else {}
+    r = dtlab.oracle(pts, against=["cgal", "dtlab:naive"], peers=fns, progress=record)
+    assert threads == {caller}
+    insert, check, peer_calls = split_stages(calls)
+    assert insert[0] == (0, len(pts), "insert") and insert[-1] == (len(pts), len(pts), "insert")
+    assert [c[0] for c in insert] == sorted(c[0] for c in insert)
+    assert check[0] == (0, 8, "check") and check[-1] == (8, 8, "check")
+    assert [c[0] for c in check] == sorted(c[0] for c in check)
+    assert_peer_stages(peer_calls, r, ["cgal", "dtlab:naive", *fns])
+    quiet = dtlab.oracle(pts, against=["cgal", "dtlab:naive"], peers=fns)
+    assert {n: p.verdict for n, p in quiet.peers.items()} == {n: p.verdict for n, p in r.peers.items()}
+
+
+def test_oracle_progress_true_writes_a_line_per_stage(capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "tqdm", None)  # the stderr lines, tqdm or not
+    dtlab.oracle(points(500), against=["dtlab:exact"], progress=True)
+    err = capsys.readouterr().err
+    for line in ("oracle: insert 0/500", "oracle: insert 500/500", "oracle: check 8/8",
+                 "oracle: dtlab:exact: running 0/1", "oracle: dtlab:exact: delaunay 1/1"):
+        assert line in err
+
+
+def sleeper(tmp_path):
+    """A 'tetgen' that never answers (dtlab.oracle(tetgen=...)): it would outlive the
+    call unless the call ends it."""
+    path = tmp_path / "tetgen"
+    path.write_text("#!/bin/sh\nexec sleep 1000\n")
+    path.chmod(0o755)
+    return str(path)
+
+
+def test_oracle_callback_that_raises_ends_the_running_peer(tmp_path):
+    before = children()
+    seen, running = [], []
+
+    def stop_while_tetgen_runs(done, total, stage):
+        seen.append(stage)
+        if stage == "tetgen: running":
+            deadline = time.monotonic() + 10  # the peer's process starts meanwhile
+            while not running and time.monotonic() < deadline:
+                running.extend(set(children()) - set(before))
+                time.sleep(0.005)
+            raise Stop("stop")
+
+    with pytest.raises(Stop):
+        dtlab.oracle(points(2000), against=["tetgen", "cgal"], tetgen=sleeper(tmp_path), timeout=600,
+                     progress=stop_while_tetgen_runs)
+    assert seen[-1] == "tetgen: running" and "cgal: running" not in seen
+    assert running  # the callable raised while the peer's process ran (for 1000 s unless ended)
+    assert no_child_left(before)
+    assert dtlab.oracle(points(500), against=["cgal"]).peers["cgal"].verdict == "delaunay"  # still works
+
+
+@pytest.mark.parametrize("stage", ["insert", "check"])
+def test_oracle_callback_that_raises_stops_our_build_or_check(stage):
+    def stop(done, total, s):
+        if s == stage and done > 0:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        dtlab.oracle(points(), against=["cgal"], progress=stop)
+    with pytest.raises(Stop):  # the function peers' path: the session on this thread
+        dtlab.oracle(points(), against=[], peers={"mine": lambda p: []},
+                     progress=lambda d, t, s: (_ for _ in ()).throw(Stop()) if s == stage else None)
+
+
+def test_ctrl_c_with_a_progress_callback_answers_at_once(tmp_path):
+    marker = tmp_path / "running"
+    script = textwrap.dedent(f"""
+        import numpy as np, os, subprocess, sys, time, dtlab
+        def mark(done, total, stage):
+            if stage == "tetgen: running":
+                open({str(marker)!r}, "w").write("x")
+        def children():
+            out = subprocess.run(["ps", "-o", "pid=,stat=,comm=", "--ppid", str(os.getpid())],
+                                 capture_output=True, text=True).stdout.split("\\n")
+            return [l for l in out if l.strip() and "dtlab-watchdog" not in l and " ps" not in l
+                    and not l.split()[1].startswith("Z")]
+        try:
+            dtlab.oracle(np.random.default_rng(3).random((2000, 3)), against=["tetgen"],
+                         tetgen={sleeper(tmp_path)!r}, timeout=600, progress=mark)
+        except KeyboardInterrupt:
+            print("KeyboardInterrupt", flush=True)
+            deadline = time.monotonic() + 3
+            while children() and time.monotonic() < deadline:
+                time.sleep(0.02)
+            print("children:", children(), flush=True)
+            sys.exit(7)
+    """)
+    proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 60
+    while not marker.exists():
+        assert time.monotonic() < deadline and proc.poll() is None
+        time.sleep(0.01)
+    time.sleep(0.1)  # the sleeper has started
+    t0 = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    line = proc.stdout.readline()
+    assert time.monotonic() - t0 < 5  # a 50 ms poll (and half a second for the peer to end), not the peer's 1000 s
+    out, _ = proc.communicate(timeout=30)
+    assert proc.returncode == 7 and line.strip() == "KeyboardInterrupt" and out.strip() == "children: []"
+
+
+def test_fuzz_campaign_reports_cases_per_family():
+    calls = []
+    families = ["uniform", "cospherical", "lattice"]
+    c = dtlab.fuzz.campaign("dtlab:exact", families=families, cases=3, points=16, shrink=False,
+                            progress=lambda *a: calls.append(a))
+    assert calls == [(i, 3, f) for f in families for i in (1, 2, 3)]
+    assert len(c.cases) == 9
+
+
+def test_fuzz_campaign_callback_that_raises_stops_it():
+    before = children()
+    calls = []
+
+    def stop(done, total, family):
+        calls.append((done, family))
+        if family == "cospherical":
+            raise Stop(family)
+
+    with pytest.raises(Stop, match="cospherical"):
+        dtlab.fuzz.campaign(lambda p: [], families="uniform,cospherical,lattice", cases=2, points=16, shrink=False,
+                            progress=stop)
+    assert calls == [(1, "uniform"), (2, "uniform"), (1, "cospherical")]
+    assert no_child_left(before)
+
+
+def test_overhead_benchmark_runs(capsys):
+    """python/benchmarks/progress_overhead.py works (its numbers are for python/README.md, not asserted)."""
+    import importlib.util
+    path = os.path.join(os.path.dirname(__file__), "..", "benchmarks", "progress_overhead.py")
+    spec = importlib.util.spec_from_file_location("progress_overhead", path)
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    assert bench.main(["--sizes", "2000", "--rounds", "1"]) == 0
+    rows = [line for line in capsys.readouterr().out.splitlines() if line.startswith("| 2000 |")]
+    assert [r.split("|")[2].strip() for r in rows] == ["None", "no-op callable", "True"]
+    assert rows[1].split("|")[-2].strip() == "1001"  # every 2 points, and the end
