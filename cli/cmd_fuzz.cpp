@@ -16,25 +16,24 @@
 #include "cli/build_options.hpp"
 #include "cli/cli_error.hpp"
 #include "cli/command.hpp"
-#include "cli/fuzz_voronoi_target.hpp"
+#include "cli/fuzz_target.hpp"
 #include "cli/number_options.hpp"
 #include "cli/peer_definitions.hpp"
 #include "cli/progress.hpp"
-#include "experiments/peer_campaign.hpp"
-#include "oracle/check.hpp"
-#include "oracle/compare.hpp"
-#include "oracle/peer_command.hpp"
-#include "oracle/peers.hpp"
 #include "fuzz/campaign.hpp"
 #include "fuzz/campaign_report.hpp"
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/summary.hpp"
 #include "kernel/canonical_order.hpp"
-#include "voronoi_check/voronoi_peers.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
+#include "oracle/check.hpp"
+#include "oracle/compare.hpp"
+#include "oracle/peer_command.hpp"
+#include "oracle/peers.hpp"
+#include "voronoi_check/voronoi_peers.hpp"
 
 namespace dtlab::cli {
 
@@ -157,75 +156,34 @@ void check_min_points(const FuzzArgs& a) {
     usage_error("--min-points " + std::to_string(a.min_points) + " is above --points " + std::to_string(a.max_points));
 }
 
-// `--target PEER`: the campaign judges the peer; its failures are shrunk into the corpus.
-int run_target(const FuzzArgs& a, const std::vector<std::string>& families) {
-  if (!is_peer_name(a.target)) usage_error("unknown peer '" + a.target + "' (see dtlab oracle --help)");
+// `--target PEER` (cli/fuzz_target.hpp): the campaign's arguments from the command's.
+TargetArgs target_args(const FuzzArgs& a, const std::string& target, const std::vector<std::string>& families) {
   check_min_points(a);
-  experiments::PeerCampaignOptions o;
-  o.peer = a.target;
-  o.sources = experiments::fuzz_family_sources(families);
-  o.cases = a.cases;
-  if (a.only_case >= 0) {
-    o.only_case = static_cast<std::size_t>(a.only_case);
-    o.cases = std::max(o.cases, *o.only_case + 1);
-  }
-  o.max_points = a.max_points;
-  o.min_points = std::min(a.min_points, a.max_points);
-  o.seed = a.seed;
-  o.out_dir = a.out;
-  o.shrink = !a.no_shrink;
-  o.shrink_budget = a.shrink_budget;
-  o.jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t total = o.only_case ? o.sources.size() : o.cases * o.sources.size();
-  Progress progress("fuzz", a.quiet);
-  std::size_t done = 0, failed = 0;
-  o.on_case = [&](const experiments::PeerCase& c) {
-    failed += c.failed();
-    progress.update("cases", ++done, total, std::to_string(failed) + " failing");
-  };
-  const auto cases = experiments::run_peer_campaign(o);
-  struct Row {
-    std::size_t cases = 0, failing = 0;
-    std::map<std::string, std::size_t> verdicts;
-  };
-  std::map<std::string, Row> rows;
-  nlohmann::json failures = nlohmann::json::array();
-  std::size_t failing = 0, not_installed = 0;
-  for (const auto& c : cases) {
-    Row& r = rows[c.source];
-    ++r.cases;
-    ++r.verdicts[verdict_name(c.run.verdict)];
-    not_installed += c.run.verdict == Verdict::not_installed;
-    if (!c.failed()) continue;
-    ++r.failing, ++failing;
-    failures.push_back({{"source", c.source}, {"case", c.index}, {"n", c.n}, {"verdict", verdict_name(c.run.verdict)},
-                        {"message", c.run.message}, {"corpus_file", c.corpus_file}, {"shrunk_points", c.shrunk_points}});
-  }
-  if (a.json) {
-    nlohmann::json j = {{"target", a.target}, {"cases", cases.size()}, {"failing", failing},
-                        {"not_installed", not_installed}, {"failures", failures}};
-    for (const auto& [src, r] : rows) j["families"][src] = {{"cases", r.cases}, {"failing", r.failing}, {"verdicts", r.verdicts}};
-    std::cout << j.dump(2) << "\n";
-  } else {
-    std::printf("%-18s %6s %8s  %s\n", "family", "cases", "failing", "verdicts");
-    for (const auto& [src, r] : rows) {
-      std::string v;
-      for (const auto& [name, k] : r.verdicts) v += (v.empty() ? "" : ", ") + name + " " + std::to_string(k);
-      std::printf("%-18s %6zu %8zu  %s\n", src.c_str(), r.cases, r.failing, v.c_str());
-    }
-    for (const auto& f : failures)
-      if (!f["corpus_file"].get<std::string>().empty())
-        std::printf("  %s case %zu: %s, shrunk to %zu points: %s/%s (dtlab oracle %s/%s --against %s%s)\n",
-                    f["source"].get<std::string>().c_str(), f["case"].get<std::size_t>(),
-                    f["verdict"].get<std::string>().c_str(), f["shrunk_points"].get<std::size_t>(), a.out.c_str(),
-                    f["corpus_file"].get<std::string>().c_str(), a.out.c_str(),
-                    f["corpus_file"].get<std::string>().c_str(), a.target.c_str(),
-                    peer_definition_arguments(a.target).c_str());
-    std::printf("%s: %zu cases, %zu failing%s\n", a.target.c_str(), cases.size(), failing,
-                not_installed ? " (not installed)" : "");
-  }
-  if (not_installed == cases.size() && !cases.empty()) return 3;
-  return failing ? kDefect : kOk;
+  TargetArgs t;
+  t.target = target;
+  t.families = families;
+  t.cases = a.cases;
+  if (a.only_case >= 0) t.only_case = static_cast<std::size_t>(a.only_case);
+  t.seed = a.seed;
+  t.min_points = a.min_points;
+  t.max_points = a.max_points;
+  t.out = a.out;
+  t.shrink = !a.no_shrink;
+  t.shrink_budget = a.shrink_budget;
+  t.jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+  t.json = a.json;
+  t.quiet = a.quiet;
+  return t;
+}
+
+// A Voronoi peer by its name, or by voronoi:NAME where the name is a DT peer's too
+// (dtlab:B); else a DT peer. Its failures are shrunk into the corpus.
+int run_target(const FuzzArgs& a, const std::vector<std::string>& families) {
+  const std::string voronoi_target = a.target.rfind("voronoi:", 0) == 0 ? a.target.substr(8) : a.target;
+  if (is_voronoi_peer_name(voronoi_target) && (voronoi_target != a.target || !is_peer_name(a.target)))
+    return run_voronoi_target(target_args(a, voronoi_target, families));
+  if (!is_peer_name(a.target)) usage_error("unknown peer '" + a.target + "' (see dtlab oracle --help)");
+  return run_peer_target(target_args(a, a.target, families));
 }
 
 std::string point_text(const Point3& p) {
@@ -364,27 +322,6 @@ int run_fuzz(const FuzzArgs& a) {
     o.families = split(a.families);
     for (const auto& name : o.families)
       if (!fuzz::find_family(name)) usage_error("unknown family '" + name + "' (see dtlab fuzz --list)");
-  }
-  // A Voronoi peer by its name, or by voronoi:NAME where the name is a DT peer's too (dtlab:B).
-  const std::string voronoi_target = a.target.rfind("voronoi:", 0) == 0 ? a.target.substr(8) : a.target;
-  if (!a.target.empty() && is_voronoi_peer_name(voronoi_target) &&
-      (voronoi_target != a.target || !is_peer_name(a.target))) {
-    check_min_points(a);
-    VoronoiTargetArgs v{voronoi_target,
-                        o.families,
-                        a.cases,
-                        std::nullopt,
-                        a.seed,
-                        a.min_points,
-                        a.max_points,
-                        a.out,
-                        !a.no_shrink,
-                        a.shrink_budget,
-                        a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency()),
-                        a.json,
-                        a.quiet};
-    if (a.only_case >= 0) v.only_case = static_cast<std::size_t>(a.only_case);
-    return run_voronoi_target(v);
   }
   if (!a.target.empty()) return run_target(a, o.families);
   o.cases = a.cases;

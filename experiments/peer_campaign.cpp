@@ -1,42 +1,19 @@
 #include "experiments/peer_campaign.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <filesystem>
-#include <fstream>
-#include <mutex>
-#include <stdexcept>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 
-#include "fuzz/work_queue.hpp"
-#include "kernel/output_file.hpp"
+#include "experiments/report.hpp"
 #include "fuzz/campaign.hpp"
-#include "fuzz/case_seed.hpp"
-#include "fuzz/families.hpp"
 #include "fuzz/outcome.hpp"
 #include "fuzz/shrink.hpp"
-#include "kernel/point_io.hpp"
 #include "oracle/peer_command.hpp"
 #include "oracle/peer_json.hpp"
-#include "experiments/report.hpp"
 #include "oracle/served_child.hpp"
 
 namespace dtlab::experiments {
-
-namespace fs = std::filesystem;
-
-std::vector<PointSource> fuzz_family_sources(const std::vector<std::string>& names) {
-  std::vector<PointSource> out;
-  for (const auto& name : names) {
-    const fuzz::Family* f = fuzz::find_family(name);
-    if (!f) throw std::invalid_argument("unknown family '" + name + "'");
-    out.push_back({f->name, f->generate});
-  }
-  return out;
-}
 
 bool peer_failed(Verdict v, bool lower_dimensional) {
   if (v == Verdict::not_installed || v == Verdict::delaunay) return false;
@@ -95,7 +72,7 @@ void shrink_pass(PeerCase& c, const std::vector<Point3>& original, const PeerOpt
   PeerOptions tries = options;
   tries.servers = servers ? servers : &own;
   tries.timeout_s = hung ? std::min(budget.hung_try_seconds, options.timeout_s)
-                         : std::clamp(10 * c.run.wall_seconds, std::min(2.0, options.timeout_s), options.timeout_s);
+                         : shrink_try_limit(c.run.wall_seconds, options.timeout_s);
   if (hung) c.hung_try_seconds = tries.timeout_s;
   // A failure on a 3D input must stay 3D (else any peer "fails" a flat subset by
   // refusing it); one on a flat input may shrink within flat inputs.
@@ -183,35 +160,19 @@ void confirm_hang(PeerCase& c, const std::vector<Point3>& original, const PeerOp
 
 void save_shrunk(PeerCase& c, std::size_t original_points, const std::string& out_dir,
                  const std::string& original_command) {
-  const fs::path dir = fs::path(out_dir) / "corpus";
-  fs::create_directories(dir);
-  std::string stem = c.peer + "-" + c.source + "-n" + std::to_string(c.n) + "-" + std::to_string(c.index);
-  std::replace(stem.begin(), stem.end(), ':', '_');
-  write_node((dir / (stem + ".node")).string(), c.shrunk_input);
-  c.corpus_file = "corpus/" + stem + ".node";
-  nlohmann::json j = {
-      {"peer", c.peer},
-      {"file", c.corpus_file},
-      {"source", c.source},
-      {"case", c.index},
-      {"case_seed", c.seed},
-      {"points_original", original_points},
-      {"points", c.shrunk_input.size()},
-      {"verdict", verdict_name(c.run.verdict)},
-      {"shrink_tests", c.shrink_tests},
-      {"shrink_runs", c.shrink_runs},
-      {"shrink_passes", c.shrink_passes},
-      {"shrink_seconds", c.shrink_seconds},
-      {"minimal", c.shrunk_minimal},
-      {"shrink_stopped_by", c.shrink_stop},
-      {"served_shrink_not_reproduced", c.served_not_reproduced},  // points of a served shrink a fresh run disagreed with
-      {"shrunk_run", to_json(c.shrunk_run)},
-      {"command", "dtlab oracle " + c.corpus_file + " --against " + c.peer + peer_definition_arguments(c.peer)},
-      {"original_command", original_command},
-  };
+  const std::string stem = corpus_stem(c.peer, c.source, c.n, c.index);
+  c.corpus_file = save_corpus_points(out_dir, stem, c.shrunk_input);
+  nlohmann::json j = case_sidecar(
+      c, original_points, c.shrunk_input.size(),
+      "dtlab oracle " + c.corpus_file + " --against " + c.peer + peer_definition_arguments(c.peer), original_command);
+  j["verdict"] = verdict_name(c.run.verdict);
+  j["shrink_tests"] = c.shrink_tests;
+  j["shrink_passes"] = c.shrink_passes;
+  j["served_shrink_not_reproduced"] = c.served_not_reproduced;  // points of a served shrink a fresh run disagreed with
+  j["shrunk_run"] = to_json(c.shrunk_run);
   if (c.hung_try_seconds > 0) j["hung_try_seconds"] = c.hung_try_seconds;  // the short limit of a hang's tries
   if (!c.shrink_note.empty()) j["shrink_note"] = c.shrink_note;
-  write_text_file((dir / (stem + ".json")).string(), j.dump(2) + "\n");
+  save_corpus_sidecar(out_dir, stem, j);
 }
 
 void shrink_and_save(PeerCase& c, const std::vector<Point3>& points, const PeerOptions& options,
@@ -225,46 +186,19 @@ void shrink_and_save(PeerCase& c, const std::vector<Point3>& points, const PeerO
 }
 
 std::vector<PeerCase> run_peer_campaign(const PeerCampaignOptions& o) {
-  struct Work {
-    const std::string* peer;
-    const PointSource* source;
-    std::size_t index;
-  };
   const std::vector<std::string> peers = o.peers.empty() ? std::vector<std::string>{o.peer} : o.peers;
-  std::vector<Work> work;
-  for (const std::string& p : peers)
-    for (const PointSource& s : o.sources)
-      for (std::size_t i = 0; i < o.cases; ++i)
-        if (!o.only_case || *o.only_case == i) work.push_back({&p, &s, i});
-  std::vector<PeerCase> results(work.size());
-  std::mutex lock;
-  const auto run_one = [&](std::size_t w) {
-    PeerCase c;
-    c.peer = *work[w].peer;
-    c.source = work[w].source->name;
-    c.index = work[w].index;
-    c.seed = fuzz::case_seed(o.seed, c.source, c.index);
-    const std::size_t n = fuzz::case_points(c.seed, o.min_points, o.max_points);
-    const std::vector<Point3> points = work[w].source->generate(n, c.seed);
-    c.n = points.size();
-    c.lower_dimensional = fuzz::is_lower_dimensional(points);
-    c.run = run_peer(c.peer, points, o.peer_options);
-    c.run.mesh.reset();
-    if (c.failed() && o.shrink && !o.out_dir.empty() && c.run.verdict != Verdict::hung) {
-      const std::string cmd = "dtlab fuzz --target " + c.peer + peer_definition_arguments(c.peer) + " --family " + c.source + " --case " +
-                              std::to_string(c.index) + " --seed " + std::to_string(o.seed) + " --min-points " +
-                              std::to_string(o.min_points) + " --points " + std::to_string(o.max_points) +
-                              " --out DIR";
-      shrink_and_save(c, points, o.peer_options, {o.shrink_budget, 0}, o.out_dir, cmd);
-    }
-    std::lock_guard<std::mutex> g(lock);
-    if (o.on_case) o.on_case(c);
-    results[w] = std::move(c);
-  };
-  // The first exception (a folder that cannot be written) stops the queue and is
-  // rethrown here.
-  fuzz::run_work_queue(work.size(), o.jobs, run_one);
-  return results;
+  return run_grid<PeerCase>(
+      peers, o,
+      [&](PeerCase& c, const std::vector<Point3>& points) {
+        c.lower_dimensional = fuzz::is_lower_dimensional(points);
+        c.run = run_peer(c.peer, points, o.peer_options);
+        c.run.mesh.reset();
+        if (c.failed() && o.shrink && !o.out_dir.empty() && c.run.verdict != Verdict::hung) {
+          const std::string cmd = grid_case_command(c.peer + peer_definition_arguments(c.peer), o, c.source, c.index);
+          shrink_and_save(c, points, o.peer_options, {o.shrink_budget, 0}, o.out_dir, cmd);
+        }
+      },
+      o.on_case);
 }
 
 }  // namespace dtlab::experiments

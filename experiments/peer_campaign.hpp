@@ -10,20 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "experiments/case_grid.hpp"
 #include "fuzz/shrink.hpp"
 #include "oracle/peers.hpp"
 
 namespace dtlab::experiments {
-
-using PointGenerator = std::function<std::vector<Point3>(std::size_t n, std::uint64_t seed)>;
-
-struct PointSource {
-  std::string name;
-  PointGenerator generate;
-};
-
-// Every fuzz family as a point source.
-std::vector<PointSource> fuzz_family_sources(const std::vector<std::string>& names);
 
 struct PeerCase {
   std::string peer, source;
@@ -57,20 +48,11 @@ struct PeerCase {
 // refusal or an empty answer is right too. not-installed is no failure (no run).
 bool peer_failed(Verdict v, bool lower_dimensional);
 
-struct PeerCampaignOptions {
+struct PeerCampaignOptions : CaseGrid {
   std::string peer;
   std::vector<std::string> peers;  // when not empty: each of these instead of `peer`,
                                    // peers x sources x cases in one work queue
-  std::vector<PointSource> sources;
-  std::size_t cases = 10;
-  std::optional<std::size_t> only_case;          // run just this case index
-  std::size_t min_points = 8, max_points = 64;  // n per case, from the case seed
-  std::uint64_t seed = 1;
-  std::string out_dir;          // corpus/ goes here; "" writes nothing
-  bool shrink = true;
-  std::size_t shrink_budget = 200;  // peer runs per shrunk case
   PeerOptions peer_options;
-  unsigned jobs = 1;
   std::function<void(const PeerCase&)> on_case;  // after each case, under a lock
 };
 

@@ -3,25 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
-#include <mutex>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-#include "fuzz/campaign.hpp"
-#include "fuzz/case_seed.hpp"
 #include "fuzz/outcome.hpp"
 #include "fuzz/shrink.hpp"
-#include "fuzz/work_queue.hpp"
-#include "kernel/output_file.hpp"
-#include "kernel/point_io.hpp"
 #include "voronoi/voronoi.hpp"
 #include "voronoi_check/check_json.hpp"
 
 namespace dtlab::experiments {
-
-namespace fs = std::filesystem;
 
 bool voronoi_failed(VoronoiVerdict v) {
   return v != VoronoiVerdict::exact_topology && v != VoronoiVerdict::rounded_topology &&
@@ -80,7 +71,7 @@ void shrink_and_save_voronoi(VoronoiCase& c, const std::vector<Point3>& points, 
     c.shrunk_verdict = target;
   } else {
     VoronoiPeerOptions tries = options;
-    tries.timeout_s = std::clamp(10 * c.run.wall_seconds, std::min(2.0, options.timeout_s), options.timeout_s);
+    tries.timeout_s = shrink_try_limit(c.run.wall_seconds, options.timeout_s);
     const auto fails = [&](const std::vector<Point3>& candidate) {
       ++c.shrink_runs;
       std::string why;
@@ -97,68 +88,30 @@ void shrink_and_save_voronoi(VoronoiCase& c, const std::vector<Point3>& points, 
   }
   c.shrunk_points = shrunk.size();
   c.shrink_seconds = seconds_since(t0);
-  const fs::path dir = fs::path(out_dir) / "corpus";
-  fs::create_directories(dir);
-  std::string stem = c.peer + "-" + c.source + "-n" + std::to_string(c.n) + "-" + std::to_string(c.index);
-  std::replace(stem.begin(), stem.end(), ':', '_');
+  std::string stem = corpus_stem(c.peer, c.source, c.n, c.index);
   std::replace(stem.begin(), stem.end(), '+', 'p');
-  write_node((dir / (stem + ".node")).string(), shrunk);
-  c.corpus_file = "corpus/" + stem + ".node";
-  nlohmann::json j = {
-      {"peer", c.peer},
-      {"file", c.corpus_file},
-      {"source", c.source},
-      {"case", c.index},
-      {"case_seed", c.seed},
-      {"points_original", points.size()},
-      {"points", shrunk.size()},
-      {"verdict", voronoi_verdict_name(target)},
-      {"message", c.run.message},
-      {"shrink_runs", c.shrink_runs},
-      {"shrink_seconds", c.shrink_seconds},
-      {"minimal", c.shrunk_minimal},
-      {"shrink_stopped_by", c.shrink_stop},
-      {"shrunk_verdict_fresh", voronoi_verdict_name(c.shrunk_verdict)},
-      {"command", "dtlab voronoi " + c.corpus_file + " --against " + c.peer + " --json"},
-      {"original_command", original_command},
-  };
+  c.corpus_file = save_corpus_points(out_dir, stem, shrunk);
+  nlohmann::json j =
+      case_sidecar(c, points.size(), shrunk.size(),
+                   "dtlab voronoi " + c.corpus_file + " --against " + c.peer + " --json", original_command);
+  j["verdict"] = voronoi_verdict_name(target);
+  j["message"] = c.run.message;
+  j["shrunk_verdict_fresh"] = voronoi_verdict_name(c.shrunk_verdict);
   if (c.run.report) j["original_report"] = to_json(*c.run.report);
-  write_text_file((dir / (stem + ".json")).string(), j.dump(2) + "\n");
+  save_corpus_sidecar(out_dir, stem, j);
 }
 
 std::vector<VoronoiCase> run_voronoi_campaign(const VoronoiCampaignOptions& o) {
-  struct Work {
-    const std::string* peer;
-    const PointSource* source;
-    std::size_t index;
-  };
-  std::vector<Work> work;
-  for (const std::string& p : o.peers)
-    for (const PointSource& s : o.sources)
-      for (std::size_t i = 0; i < o.cases; ++i)
-        if (!o.only_case || *o.only_case == i) work.push_back({&p, &s, i});
-  std::vector<VoronoiCase> results(work.size());
-  std::mutex lock;
-  fuzz::run_work_queue(work.size(), o.jobs, [&](std::size_t w) {
-    const std::uint64_t seed = fuzz::case_seed(o.seed, work[w].source->name, work[w].index);
-    const std::size_t n = fuzz::case_points(seed, o.min_points, o.max_points);
-    const std::vector<Point3> points = work[w].source->generate(n, seed);
-    VoronoiCase c = run_voronoi_case(*work[w].peer, points, o.peer_options);
-    c.source = work[w].source->name;
-    c.index = work[w].index;
-    c.seed = seed;
-    if (c.failed() && o.shrink && !o.out_dir.empty()) {
-      const std::string cmd = "dtlab fuzz --target " + c.peer + " --family " + c.source + " --case " +
-                              std::to_string(c.index) + " --seed " + std::to_string(o.seed) + " --min-points " +
-                              std::to_string(o.min_points) + " --points " + std::to_string(o.max_points) + " --out DIR";
-      shrink_and_save_voronoi(c, points, o.peer_options, o.shrink_budget, o.out_dir, cmd);
-    }
-    if (c.run.report) c.run.report->witnesses.clear();  // counts and largest faces kept
-    std::lock_guard<std::mutex> g(lock);
-    if (o.on_case) o.on_case(c);
-    results[w] = std::move(c);
-  });
-  return results;
+  return run_grid<VoronoiCase>(
+      o.peers, o,
+      [&](VoronoiCase& c, const std::vector<Point3>& points) {
+        c.run = judged_run(c.peer, points, o.peer_options, c.not_judged);
+        if (c.failed() && o.shrink && !o.out_dir.empty())
+          shrink_and_save_voronoi(c, points, o.peer_options, o.shrink_budget, o.out_dir,
+                                  grid_case_command(c.peer, o, c.source, c.index));
+        if (c.run.report) c.run.report->witnesses.clear();  // counts and largest faces kept
+      },
+      o.on_case);
 }
 
 }  // namespace dtlab::experiments

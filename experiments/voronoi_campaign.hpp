@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/peer_campaign.hpp"
+#include "experiments/case_grid.hpp"
 #include "voronoi_check/voronoi_peers.hpp"
 
 namespace dtlab::experiments {
@@ -51,18 +51,10 @@ VoronoiCase run_voronoi_case(const std::string& peer, const std::vector<Point3>&
 void shrink_and_save_voronoi(VoronoiCase& c, const std::vector<Point3>& points, const VoronoiPeerOptions& options,
                              std::size_t runs, const std::string& out_dir, const std::string& original_command);
 
-struct VoronoiCampaignOptions {
+// shrink: every failing case (false: none; the leaderboard shrinks one per pair).
+struct VoronoiCampaignOptions : CaseGrid {
   std::vector<std::string> peers;
-  std::vector<PointSource> sources;
-  std::size_t cases = 10;
-  std::optional<std::size_t> only_case;
-  std::size_t min_points = 8, max_points = 64;  // n per case, from the case seed
-  std::uint64_t seed = 1;
-  std::string out_dir;  // corpus/ goes here; "" writes nothing
-  bool shrink = true;   // every failing case (false: none; the leaderboard shrinks one per pair)
-  std::size_t shrink_budget = 200;
   VoronoiPeerOptions peer_options;
-  unsigned jobs = 1;
   std::function<void(const VoronoiCase&)> on_case;  // after each case, under a lock
 };
 

@@ -95,4 +95,10 @@ void judge_answer(PeerRun& run, unsigned threads) {
   run.verdict = run.extra_tets ? Verdict::extra_points : verdict_of(*run.report);
 }
 
+void adapt_and_judge(std::span<const Point3> points, const PeerAnswer& answer, PeerOrientation orientation, bool check,
+                     unsigned threads, PeerRun& run) {
+  normalise_answer(points, answer, orientation, run);
+  if (check) judge_answer(run, threads);
+}
+
 }  // namespace dtlab

@@ -32,4 +32,10 @@ void normalise_answer(std::span<const Point3> points, const PeerAnswer& answer, 
 // sets run.report and run.verdict (extra-points when extra tets were left out).
 void judge_answer(PeerRun& run, unsigned threads = 1);
 
+// The step every peer run ends with, whoever ran the peer (a helper, TetGen, a
+// command, a host function): its answer adapted (normalise_answer) and, when `check`,
+// judged on `threads` threads (judge_answer).
+void adapt_and_judge(std::span<const Point3> points, const PeerAnswer& answer, PeerOrientation orientation, bool check,
+                     unsigned threads, PeerRun& run);
+
 }  // namespace dtlab

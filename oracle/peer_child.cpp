@@ -12,6 +12,17 @@ std::uint64_t default_peer_memory() {
   return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 2;
 }
 
+ChildLimits peer_limits(const PeerOptions& options, const std::string& log, bool may_be_instrumented) {
+  ChildLimits limits =
+      ChildLimits::of(options.timeout_s, log, options.memory_bytes ? options.memory_bytes : default_peer_memory());
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  if (may_be_instrumented) limits.memory_bytes = 0;
+#else
+  (void)may_be_instrumented;
+#endif
+  return limits;
+}
+
 namespace {
 
 std::string signal_text(int signal) {

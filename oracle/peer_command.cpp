@@ -210,14 +210,8 @@ PeerRun run_command_peer(const CommandPeer& peer, std::span<const Point3> points
   write_node(in, std::vector<Point3>(points.begin(), points.end()));
   std::vector<std::string> argv;
   for (const std::string& a : peer.argv) argv.push_back(replace_all(replace_all(a, "{in}", in), "{out}", out));
-  ChildLimits limits = ChildLimits::of(options.timeout_s, log,
-                                       options.memory_bytes ? options.memory_bytes : default_peer_memory());
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  // In sanitizer builds the command is typically our own instrumented binary, whose
-  // shadow memory reservation RLIMIT_AS would kill at start (see oracle/peers.cpp):
-  // there command peers run under the time limit only.
-  limits.memory_bytes = 0;
-#endif
+  // In sanitizer builds the command is typically our own instrumented binary.
+  const ChildLimits limits = peer_limits(options, log, true);
   const ChildResult c = run_child(argv, limits);
   const auto failure = child_failure(c, log, run, false);
   run.message = replace_all(run.message, dir.path().string() + "/", "");  // the temp folder says nothing
@@ -240,8 +234,7 @@ PeerRun run_command_peer(const CommandPeer& peer, std::span<const Point3> points
     return run;
   }
   a.seconds = c.seconds;
-  normalise_answer(points, a, PeerOrientation::by_sign, run);
-  if (options.check) judge_answer(run);
+  adapt_and_judge(points, a, PeerOrientation::by_sign, options.check, 1, run);
   return run;
 }
 

@@ -69,11 +69,8 @@ PeerRun run_function_peer(const std::string& name, std::span<const Point3> point
   run.name = name;
   TempDir dir("dtlab-peer");
   const std::string log = dir.file("log.txt");
-  ChildLimits limits =
-      ChildLimits::of(options.timeout_s, log, options.memory_bytes ? options.memory_bytes : default_peer_memory());
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  limits.memory_bytes = 0;  // the forked interpreter holds the sanitizer's shadow reservation (oracle/peers.cpp)
-#endif
+  // A sanitizer build's forked interpreter holds the sanitizer's shadow reservation.
+  const ChildLimits limits = peer_limits(options, log, true);
   // Started before the host forks: its fork handler gives the child PR_SET_PDEATHSIG,
   // so the child dies with the host even when the host is killed with SIGKILL.
   prepare_exit_guard();
@@ -100,8 +97,7 @@ PeerRun run_function_peer(const std::string& name, std::span<const Point3> point
   for (const auto& t : a.tets)
     answer.tets.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
                            static_cast<std::uint32_t>(t[2]), static_cast<std::uint32_t>(t[3])});
-  normalise_answer(points, answer, PeerOrientation::by_sign, run);
-  if (options.check) judge_answer(run, options.threads);
+  adapt_and_judge(points, answer, PeerOrientation::by_sign, options.check, options.threads, run);
   return run;
 }
 

@@ -180,16 +180,7 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
   run.name = name;
   TempDir dir("dtlab-peer");
   const std::string log = dir.file("log.txt");
-  ChildLimits limits;
-  limits.timeout_s = options.timeout_s;
-  limits.memory_bytes = options.memory_bytes ? options.memory_bytes : default_peer_memory();
-  limits.log_path = log;
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  // An AddressSanitizer or ThreadSanitizer build of our own helpers reserves terabytes
-  // of shadow address space as it starts, so RLIMIT_AS would kill them before they run:
-  // in sanitizer builds only, they run without the memory limit (the time limit stays).
-  if (spec->runner == Runner::helper) limits.memory_bytes = 0;
-#endif
+  const ChildLimits limits = peer_limits(options, log, spec->runner == Runner::helper);
   const std::vector<Point3> pts(points.begin(), points.end());
 
   if (spec->runner == Runner::tetgen) {
@@ -213,8 +204,7 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
     PeerAnswer a;
     a.seconds = t.child.seconds;
     a.tets = std::move(t.tets);
-    normalise_answer(points, a, spec->orientation, run);
-    if (options.check) judge_answer(run, options.threads);
+    adapt_and_judge(points, a, spec->orientation, options.check, options.threads, run);
     return run;
   }
 
@@ -250,8 +240,7 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
     return run;
   }
   run.seconds = a.seconds;
-  normalise_answer(points, a, spec->orientation, run);
-  if (options.check) judge_answer(run, options.threads);
+  adapt_and_judge(points, a, spec->orientation, options.check, options.threads, run);
   return run;
 }
 

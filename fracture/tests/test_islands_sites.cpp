@@ -6,9 +6,10 @@
 
 #include "fracture/fracture.hpp"
 #include "fracture/islands.hpp"
-#include "sampling/bumpy_torus.hpp"
+#include "fracture/tests/meshes.hpp"
 
 using namespace dtlab;
+using test::small_torus;
 
 namespace {
 
@@ -38,13 +39,6 @@ PieceMesh as_piece(TriangleMesh m) {
 std::size_t components(const TriangleMesh& m) {
   PieceMesh p = as_piece(m);
   return split_islands(p).size();
-}
-
-TriangleMesh small_torus() {
-  BumpyTorusParams bp;
-  bp.nu = 48;
-  bp.nv = 24;
-  return make_bumpy_torus(bp);
 }
 
 double volume_sum(const FractureResult& r) {

@@ -5,29 +5,14 @@
 
 #include "fracture/fracture.hpp"
 #include "fracture/piece_tets.hpp"
+#include "fracture/tests/meshes.hpp"
 #include "fracture/volume_identity.hpp"
-#include "sampling/bumpy_torus.hpp"
 
 using namespace dtlab;
+using test::small_torus;
+using test::unit_cube;
 
 namespace {
-TriangleMesh unit_cube() {
-  TriangleMesh m;
-  for (int k = 0; k < 8; ++k) m.vertices.push_back({double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)});
-  const std::uint32_t q[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-  for (auto& f : q) {
-    m.triangles.push_back({f[0], f[1], f[2]});
-    m.triangles.push_back({f[0], f[2], f[3]});
-  }
-  return m;
-}
-
-TriangleMesh small_torus() {
-  BumpyTorusParams bp;
-  bp.nu = 48;
-  bp.nv = 24;
-  return make_bumpy_torus(bp);
-}
 
 bool have_tetgen() { return std::system("command -v tetgen >/dev/null 2>&1") == 0; }
 

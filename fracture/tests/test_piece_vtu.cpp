@@ -5,22 +5,11 @@
 
 #include "fracture/fracture.hpp"
 #include "fracture/piece_io.hpp"
+#include "fracture/tests/meshes.hpp"
 #include "kernel/tests/vtu_reader.hpp"
 
 using namespace dtlab;
-
-namespace {
-TriangleMesh unit_cube() {
-  TriangleMesh m;
-  for (int k = 0; k < 8; ++k) m.vertices.push_back({double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)});
-  const std::uint32_t q[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-  for (auto& f : q) {
-    m.triangles.push_back({f[0], f[1], f[2]});
-    m.triangles.push_back({f[0], f[2], f[3]});
-  }
-  return m;
-}
-}  // namespace
+using test::unit_cube;
 
 TEST_CASE("pieces VTU: binary decodes to the ASCII values; one polyhedron per piece") {
   FractureOptions o;

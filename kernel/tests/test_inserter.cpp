@@ -7,8 +7,7 @@
 #include "delaunay_check.hpp"
 #include "kernel/build.hpp"
 #include "predicates/exact.hpp"
-
-#include "random_points.hpp"
+#include "tests/support/random_points.hpp"
 
 using namespace dtlab;
 

@@ -10,8 +10,7 @@
 #include "delaunay_check.hpp"
 #include "kernel/build.hpp"
 #include "kernel/canonical_order.hpp"
-
-#include "random_points.hpp"
+#include "tests/support/random_points.hpp"
 
 using namespace dtlab;
 

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "kernel/spatial_order.hpp"
+#include "tests/support/random_points.hpp"
 
 using namespace dtlab;
 
@@ -39,10 +40,7 @@ TEST_CASE("hilbert index is a bijection on a small grid with unit steps") {
 }
 
 TEST_CASE("brio order is a permutation and deterministic per seed") {
-  std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Point3> pts(5000);
-  for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
+  const std::vector<Point3> pts = test::uniform(5000, 3, 0, 1);
   auto a = brio_order(pts, 7), b = brio_order(pts, 7), c = brio_order(pts, 8);
   CHECK(a == b);
   CHECK(a != c);

@@ -1,19 +1,16 @@
 #pragma once
 // Small inputs for the oracle tests: uniform, lattice (many cospherical and
 // coplanar points), integer points on one sphere (exactly cospherical).
-#include <random>
 #include <vector>
 
 #include "predicates/point.hpp"
+#include "tests/support/random_points.hpp"
 
 namespace dtlab::test {
 
+// In the unit cube (tests/support/random_points.hpp).
 inline std::vector<Point3> uniform_points(int n, unsigned seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Point3> p(static_cast<std::size_t>(n));
-  for (auto& q : p) q = {u(rng), u(rng), u(rng)};
-  return p;
+  return uniform(static_cast<std::size_t>(n), seed, 0.0, 1.0);
 }
 
 inline std::vector<Point3> lattice_points(int m) {

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <numeric>
-#include <random>
 #include <utility>
 
+#include "tests/support/random_points.hpp"
 #include "voronoi/cell_arena.hpp"
 #include "voronoi/voronoi.hpp"
 
@@ -37,10 +37,7 @@ TEST_CASE("cell arena: copies stay in place across blocks, large arrays and move
 }
 
 TEST_CASE("cell views stay valid in moved and copied diagrams") {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Point3> pts(300);
-  for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
+  const std::vector<Point3> pts = test::uniform(300, 5, 0, 1);
   VoronoiOptions o;
   o.threads = 2;
   VoronoiDiagram copy;

@@ -2,20 +2,17 @@
 #include <catch2/catch.hpp>
 
 #ifdef DTLAB_HAVE_VORO
-#include <random>
 
 #include <voro++/voro++.hh>
 
+#include "tests/support/random_points.hpp"
 #include "voronoi/voronoi.hpp"
 
 using namespace dtlab;
 
 TEST_CASE("per-cell volumes and neighbours agree with voro++") {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0, 1);
-    std::vector<Point3> pts(500);
-    for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
+    const std::vector<Point3> pts = test::uniform(500, seed, 0, 1);
     VoronoiOptions o;
     o.predicates = {"exact", 0, false, true};
     o.box = vor::Box{{-0.1, -0.1, -0.1}, {1.1, 1.1, 1.1}};

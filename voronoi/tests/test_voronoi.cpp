@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <random>
 
+#include "tests/support/random_points.hpp"
 #include "voronoi/cell_check.hpp"
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/voronoi.hpp"
@@ -13,13 +14,7 @@ using namespace dtlab::vor;
 
 namespace {
 
-std::vector<Point3> uniform(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<Point3> pts(n);
-  for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
-  return pts;
-}
+using test::uniform;
 
 std::vector<Point3> lattice(int k, double h = 1) {
   std::vector<Point3> pts;

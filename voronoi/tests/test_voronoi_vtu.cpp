@@ -2,19 +2,16 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <random>
 
 #include "kernel/tests/vtu_reader.hpp"
+#include "tests/support/random_points.hpp"
 #include "voronoi/voronoi.hpp"
 #include "voronoi/voronoi_io.hpp"
 
 using namespace dtlab;
 
 TEST_CASE("voronoi VTU: binary decodes to the ASCII values; cell data per cell") {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<Point3> sites;
-  for (int i = 0; i < 30; ++i) sites.push_back({u(rng), u(rng), u(rng)});
+  std::vector<Point3> sites = test::uniform(30, 5);
   sites.push_back(sites[3]);  // a repeated site: its empty cell is left out
   VoronoiOptions o;
   o.predicates = PredicateSpec{"exact", 0, false, true};
