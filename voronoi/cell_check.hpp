@@ -5,6 +5,7 @@
 // (absolute length). The first two parts are also used alone by the Voronoi checker
 // (voronoi_check/), which judges other tools' cells.
 #include <algorithm>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,26 +16,40 @@ namespace dtlab {
 
 // Closed and consistently oriented: at least 4 faces of 3+ corners, every directed
 // edge once and its reverse once, no edge from a vertex to itself, every vertex used,
-// V - E + F = 2. Exact (no tolerance).
+// V - E + F = 2. Exact (no tolerance). The directed edges are kept per tail vertex
+// (a few each), in arrays reused by the thread: no allocation per cell.
 inline std::string check_cell_closed(const VoronoiCell& c) {
-  const std::size_t nf = c.face_count();
+  const std::size_t nf = c.face_count(), nv = c.vertices.size();
   if (nf < 4) return "fewer than 4 faces";
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  thread_local std::vector<std::uint32_t> off, head, fill;
+  off.assign(nv + 1, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (c.face_offsets[f + 1] - c.face_offsets[f] < 3) return "face with fewer than 3 vertices";
+    for (auto k = c.face_offsets[f]; k < c.face_offsets[f + 1]; ++k) ++off[c.face_vertices[k] + 1];
+  }
+  for (std::size_t v = 0; v < nv; ++v) off[v + 1] += off[v];
+  head.resize(c.face_vertices.size());
+  fill.assign(off.begin(), off.end() - 1);
   for (std::size_t f = 0; f < nf; ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
-    if (e - b < 3) return "face with fewer than 3 vertices";
-    for (auto k = b; k < e; ++k) edges.push_back({c.face_vertices[k], c.face_vertices[k + 1 < e ? k + 1 : b]});
+    for (auto k = b; k < e; ++k) head[fill[c.face_vertices[k]]++] = c.face_vertices[k + 1 < e ? k + 1 : b];
   }
-  std::sort(edges.begin(), edges.end());
-  if (std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return "directed edge used twice";
-  for (auto [a, b] : edges) {
-    if (a == b) return "edge from a vertex to itself";
-    if (!std::binary_search(edges.begin(), edges.end(), std::pair{b, a})) return "edge without its reverse";
+  const auto out_of = [&](std::uint32_t v) { return std::span<const std::uint32_t>(head).subspan(off[v], off[v + 1] - off[v]); };
+  for (std::uint32_t u = 0; u < nv; ++u) {
+    const auto out = out_of(u);
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (std::find(out.begin() + static_cast<std::ptrdiff_t>(i) + 1, out.end(), out[i]) != out.end())
+        return "directed edge used twice";
   }
-  std::vector<char> used(c.vertices.size(), 0);
-  for (auto v : c.face_vertices) used[v] = 1;
-  if (std::count(used.begin(), used.end(), 1) != static_cast<long>(c.vertices.size())) return "unused vertex";
-  const long euler = long(c.vertices.size()) - long(edges.size() / 2) + long(nf);
+  for (std::uint32_t u = 0; u < nv; ++u)
+    for (auto v : out_of(u)) {
+      if (u == v) return "edge from a vertex to itself";
+      const auto back = out_of(v);
+      if (std::find(back.begin(), back.end(), u) == back.end()) return "edge without its reverse";
+    }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (off[v + 1] == off[v]) return "unused vertex";
+  const long euler = long(nv) - long(c.face_vertices.size() / 2) + long(nf);
   if (euler != 2) return "Euler characteristic " + std::to_string(euler);
   return {};
 }

@@ -423,6 +423,8 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   if (r.failure) {
     all_pairs_cells(sites, dup, o, vd);
   } else {
+    const bool exact = o.predicates.perturb && (o.predicates.backend == "adaptive" || o.predicates.backend == "exact");
+    if (o.keep_dt && exact) vd.dt = std::make_shared<const Tetrahedralization>(r.mesh);  // ranking consumes the tets
     const RankedDelaunay dt = rank_by_first_cell(r.mesh.tets, sites, dup);
     const StarsAndCentres sc = stars_and_centres(dt, threads);
     dual_cells(sites, dup, dt, sc, o, threads, vd);

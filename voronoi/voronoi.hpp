@@ -30,6 +30,10 @@ struct VoronoiOptions {
   PredicateSpec predicates{"adaptive", 1e-12, false, true};
   BuildOptions build;               // insertion order and seed of the Delaunay build
   unsigned threads = 0;             // cells in parallel; 0: all hardware threads
+  // Keep the Delaunay tetrahedralization in VoronoiDiagram::dt when the predicates are
+  // exact with symbolic perturbation (adaptive or exact, perturb): the exact Voronoi
+  // checker (voronoi_check/) then reads the relation from it instead of building it.
+  bool keep_dt = false;
 };
 
 // One cell: views into arrays owned by its diagram (VoronoiDiagram::storage), valid
@@ -54,6 +58,7 @@ struct VoronoiDiagram {
   std::vector<Point3> sites;
   std::vector<VoronoiCell> cells;
   std::shared_ptr<const std::vector<vor::CellArena>> storage;  // owns the cells' arrays
+  std::shared_ptr<const Tetrahedralization> dt;  // with VoronoiOptions::keep_dt (exact predicates only)
   std::size_t tets = 0;
   std::size_t clipped = 0;          // cells built by clipping (hull sites, doubtful duals, shrink)
   std::size_t box_clipped = 0;      // dual cells then clipped by the box walls

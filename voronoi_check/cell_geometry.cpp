@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace dtlab {
@@ -52,46 +53,71 @@ bool plane_of(std::int32_t tag, std::span<const Point3> sites, const Point3& s, 
   return true;
 }
 
+// The per-cell arrays of vertex_errors, kept per thread (no allocation per cell).
+struct VertexScratch {
+  std::vector<std::uint32_t> off, inc, fill;
+  std::vector<Plane> face_plane;
+  std::vector<L> face_norm;
+  std::vector<char> face_ok;
+  std::vector<std::size_t> planes;  // the faces at one vertex with a plane
+};
+
+// Faces at each vertex in compressed rows: faces of v are inc[off[v] .. off[v+1]).
+void faces_by_vertex(const VoronoiCell& c, VertexScratch& s) {
+  const std::size_t nv = c.vertices.size();
+  s.off.assign(nv + 1, 0);
+  s.inc.resize(c.face_vertices.size());
+  for (auto v : c.face_vertices) ++s.off[v + 1];
+  for (std::size_t v = 0; v < nv; ++v) s.off[v + 1] += s.off[v];
+  s.fill.assign(s.off.begin(), s.off.end() - 1);
+  for (std::size_t f = 0; f < c.face_count(); ++f)
+    for (auto k = c.face_offsets[f]; k < c.face_offsets[f + 1]; ++k) s.inc[s.fill[c.face_vertices[k]]++] = f;
+}
+
+// The distance of vertex p (relative to the site) to the point where the three
+// best-conditioned planes of s.planes meet; nullopt when they do not fix a point.
+std::optional<L> vertex_error(const Point3& p, const Point3& site, const VertexScratch& s) {
+  L best = 0;
+  std::array<std::size_t, 3> pick{};
+  const auto& pl = s.planes;
+  for (std::size_t i = 0; i < pl.size(); ++i)
+    for (std::size_t j = i + 1; j < pl.size(); ++j)
+      for (std::size_t k = j + 1; k < pl.size(); ++k) {
+        const L d = std::abs(ldot(s.face_plane[pl[i]].n, lcross(s.face_plane[pl[j]].n, s.face_plane[pl[k]].n))) /
+                    (s.face_norm[pl[i]] * s.face_norm[pl[j]] * s.face_norm[pl[k]]);
+        if (d > best) best = d, pick = {pl[i], pl[j], pl[k]};
+      }
+  if (!(best > 1e-9L)) return std::nullopt;
+  const Plane &a = s.face_plane[pick[0]], &b = s.face_plane[pick[1]], &d = s.face_plane[pick[2]];
+  const L det = ldot(a.n, lcross(b.n, d.n));
+  const auto bd = lcross(b.n, d.n), da = lcross(d.n, a.n), ab = lcross(a.n, b.n);
+  const L x[3] = {(a.c * bd[0] + b.c * da[0] + d.c * ab[0]) / det, (a.c * bd[1] + b.c * da[1] + d.c * ab[1]) / det,
+                  (a.c * bd[2] + b.c * da[2] + d.c * ab[2]) / det};
+  return std::max({std::abs(L(p.x) - L(site.x) - x[0]), std::abs(L(p.y) - L(site.y) - x[1]),
+                   std::abs(L(p.z) - L(site.z) - x[2])});
+}
+
 }  // namespace
 
 void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uint32_t site, const Box& box,
                    std::span<VertexError> out) {
-  const Point3 s = sites[site];
-  const std::size_t nv = c.vertices.size();
-  std::vector<std::uint32_t> off(nv + 1, 0), inc(c.face_vertices.size());
-  for (auto v : c.face_vertices) ++off[v + 1];
-  for (std::size_t v = 0; v < nv; ++v) off[v + 1] += off[v];
-  std::vector<std::uint32_t> fill(off.begin(), off.end() - 1);
-  for (std::size_t f = 0; f < c.face_count(); ++f)
-    for (auto k = c.face_offsets[f]; k < c.face_offsets[f + 1]; ++k) inc[fill[c.face_vertices[k]]++] = f;
-  std::vector<Plane> planes;
-  for (std::size_t v = 0; v < nv; ++v) {
-    planes.clear();
-    for (auto k = off[v]; k < off[v + 1] && planes.size() < 8; ++k) {
-      Plane p;
-      if (plane_of(c.face_neighbor[inc[k]], sites, s, box, p)) planes.push_back(p);
-    }
-    // The best-conditioned triple of planes decides the point.
-    L best = 0;
-    std::array<std::size_t, 3> pick{};
-    for (std::size_t i = 0; i < planes.size(); ++i)
-      for (std::size_t j = i + 1; j < planes.size(); ++j)
-        for (std::size_t k = j + 1; k < planes.size(); ++k) {
-          const L d = std::abs(ldot(planes[i].n, lcross(planes[j].n, planes[k].n))) /
-                      (lnorm(planes[i].n) * lnorm(planes[j].n) * lnorm(planes[k].n));
-          if (d > best) best = d, pick = {i, j, k};
-        }
-    out[v] = {};
-    if (!(best > 1e-9L)) continue;
-    const Plane &a = planes[pick[0]], &b = planes[pick[1]], &d = planes[pick[2]];
-    const L det = ldot(a.n, lcross(b.n, d.n));
-    const auto bd = lcross(b.n, d.n), da = lcross(d.n, a.n), ab = lcross(a.n, b.n);
-    const Point3& p = c.vertices[v];
-    const L x[3] = {(a.c * bd[0] + b.c * da[0] + d.c * ab[0]) / det, (a.c * bd[1] + b.c * da[1] + d.c * ab[1]) / det,
-                    (a.c * bd[2] + b.c * da[2] + d.c * ab[2]) / det};
-    const L e = std::max({std::abs(L(p.x) - L(s.x) - x[0]), std::abs(L(p.y) - L(s.y) - x[1]),
-                          std::abs(L(p.z) - L(s.z) - x[2])});
-    out[v] = {static_cast<double>(e), true};
+  thread_local VertexScratch s;
+  const Point3 st = sites[site];
+  faces_by_vertex(c, s);
+  const std::size_t nf = c.face_count();
+  s.face_plane.resize(nf);
+  s.face_norm.resize(nf);
+  s.face_ok.resize(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    s.face_ok[f] = plane_of(c.face_neighbor[f], sites, st, box, s.face_plane[f]);
+    if (s.face_ok[f]) s.face_norm[f] = lnorm(s.face_plane[f].n);
+  }
+  for (std::size_t v = 0; v < c.vertices.size(); ++v) {
+    s.planes.clear();
+    for (auto k = s.off[v]; k < s.off[v + 1] && s.planes.size() < 8; ++k)
+      if (s.face_ok[s.inc[k]]) s.planes.push_back(s.inc[k]);
+    const auto e = vertex_error(c.vertices[v], st, s);
+    out[v] = e ? VertexError{static_cast<double>(*e), true} : VertexError{};
   }
 }
 

@@ -35,12 +35,17 @@ void ToolCells::add_cell(std::int64_t site, std::span<const Point3> vertices,
 }
 
 VoronoiCell ToolCells::cell(std::size_t c) const {
+  VoronoiCell out = view(c);
+  out.volume = cell_volume(out);
+  return out;
+}
+
+VoronoiCell ToolCells::view(std::size_t c) const {
   VoronoiCell out;
   out.vertices = {v_.data() + v_off_[c], v_off_[c + 1] - v_off_[c]};
   out.face_offsets = {fo_.data() + fo_off_[c], fo_off_[c + 1] - fo_off_[c]};
   out.face_vertices = {fv_.data() + fv_off_[c], fv_off_[c + 1] - fv_off_[c]};
   out.face_neighbor = {fn_.data() + fn_off_[c], fn_off_[c + 1] - fn_off_[c]};
-  out.volume = cell_volume(out);
   return out;
 }
 

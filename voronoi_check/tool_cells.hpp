@@ -24,6 +24,9 @@ class ToolCells {
   // Views valid while this object lives and no cell is added; volume and centroid
   // are measured from the vertices (a tool's own volume is not trusted).
   VoronoiCell cell(std::size_t c) const;
+  // The same view without the volume (the checker measures it once).
+  VoronoiCell view(std::size_t c) const;
+  std::size_t face_count(std::size_t c) const { return fn_off_[c + 1] - fn_off_[c]; }
   // Removes cell c (mutation tests); later cells shift down.
   void erase(std::size_t c);
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "kernel/parallel_for.hpp"
 #include "voronoi/cell_check.hpp"
 #include "voronoi/convex_cell.hpp"
 #include "voronoi_check/cell_geometry.hpp"
@@ -69,56 +70,124 @@ struct ToolFace {
   double area;
 };
 
+// What one chunk of sites or cells found: merged in chunk order, so the report does
+// not depend on the thread count (the chunks are fixed, the threads only run them).
+struct Partial {
+  std::array<std::uint64_t, kVoronoiDefects> counts{};
+  std::vector<VoronoiWitness> witnesses;
+  double largest_wrong_face = 0, largest_small_face = 0, max_vertex_ulps = 0, max_vertex_error = 0;
+  double volume_sum = 0;
+  std::uint64_t faces = 0, vertices = 0, voronoi_edges = 0, degenerate_edges = 0;
+};
+
+// One thread's scratch (no allocation per site or cell once warm).
+struct Scratch {
+  std::vector<std::uint32_t> pos, deg, all;
+  std::vector<ToolFace> tf;
+  std::vector<VertexError> errors;
+  std::vector<Point3> centres;
+  NeighborScratch ring;
+  ConvexCell clipped;
+  std::uint32_t clipped_site = 0xFFFFFFFFu;
+};
+
+constexpr std::size_t kChunk = 256;  // sites or cells per chunk
+
+VoronoiNeighbors relation(std::span<const Point3> sites, const VoronoiCheckOptions& o) {
+  return o.dt ? VoronoiNeighbors(sites, o.dt, o.threads) : VoronoiNeighbors(sites, o.threads);
+}
+
 // The state of one check: the exact relation, the tool's cells by site, the report.
 class Judge {
  public:
   Judge(std::span<const Point3> sites, const Box& box, const ToolCells& cells, const VoronoiCheckOptions& o,
         VoronoiCheckReport& r)
-      : sites_(sites), box_(box), cells_(cells), o_(o), r_(r), nb_(sites) {
+      : sites_(sites), box_(box), cells_(cells), o_(o), r_(r), nb_(relation(sites, o)) {
     extent2_ = sites_extent(sites, box);
     extent2_ *= extent2_;
+    for (double v : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z})
+      coord_max_ = std::max(coord_max_, std::abs(v));
   }
 
   void run() {
-    assign_cells();
-    for (std::uint32_t a = 0; a < sites_.size(); ++a)
-      if (nb_.rep(a) == a) judge_site(a);
-    for (std::size_t c = 0; c < cells_.size(); ++c) judge_geometry(c);
+    Partial cells;
+    assign_cells(cells);
+    merge(cells);
+    const unsigned threads = thread_count(o_.threads);
+    scratch_.resize(threads);
+    auto t = Clock::now();
+    stage(sites_.size(), threads, [&](std::size_t a, Partial& p, Scratch& s) {
+      if (nb_.rep(static_cast<std::uint32_t>(a)) == a) judge_site(static_cast<std::uint32_t>(a), p, s);
+    });
+    r_.seconds_relation = since(t);
+    t = Clock::now();
+    stage(cells_.size(), threads, [&](std::size_t c, Partial& p, Scratch& s) { judge_geometry(c, p, s); });
+    r_.seconds_geometry = since(t);
     r_.seconds_dt = nb_.seconds_dt;
+    r_.seconds_tables = nb_.seconds_tables;
   }
 
  private:
-  void add(VoronoiDefect k, std::int64_t site, std::int64_t neighbor, double size, std::string detail = {}) {
-    if (r_.counts[static_cast<int>(k)]++ < o_.witnesses_per_kind)
-      r_.witnesses.push_back({k, site, neighbor, size, std::move(detail)});
+  // f(i, partial, scratch) for i in [0, n), in fixed chunks on `threads` threads; the
+  // chunks' findings merged in order.
+  template <class F>
+  void stage(std::size_t n, unsigned threads, F&& f) {
+    std::vector<Partial> parts((n + kChunk - 1) / kChunk);
+    parallel_chunks(n, threads, kChunk, [&](std::size_t b, std::size_t e, unsigned w) {
+      Partial& p = parts[b / kChunk];
+      for (std::size_t i = b; i < e; ++i) f(i, p, scratch_[w]);
+    });
+    for (auto& p : parts) merge(p);
+  }
+
+  void merge(Partial& p) {
+    for (auto& w : p.witnesses)
+      if (std::count_if(r_.witnesses.begin(), r_.witnesses.end(), [&](const VoronoiWitness& x) {
+            return x.kind == w.kind;
+          }) < static_cast<std::ptrdiff_t>(o_.witnesses_per_kind))
+        r_.witnesses.push_back(std::move(w));
+    for (int k = 0; k < kVoronoiDefects; ++k) r_.counts[k] += p.counts[k];
+    r_.largest_wrong_face = std::max(r_.largest_wrong_face, p.largest_wrong_face);
+    r_.largest_small_face = std::max(r_.largest_small_face, p.largest_small_face);
+    r_.max_vertex_ulps = std::max(r_.max_vertex_ulps, p.max_vertex_ulps);
+    r_.max_vertex_error = std::max(r_.max_vertex_error, p.max_vertex_error);
+    r_.volume_sum += p.volume_sum;
+    r_.faces += p.faces, r_.vertices += p.vertices;
+    r_.voronoi_edges += p.voronoi_edges, r_.degenerate_edges += p.degenerate_edges;
+  }
+
+  void add(Partial& p, VoronoiDefect k, std::int64_t site, std::int64_t neighbor, double size,
+           std::string detail = {}) const {
+    if (p.counts[static_cast<int>(k)]++ < o_.witnesses_per_kind)
+      p.witnesses.push_back({k, site, neighbor, size, std::move(detail)});
   }
 
   // Stage 1: one non-empty cell per set of copies of a site.
-  void assign_cells() {
+  void assign_cells(Partial& p) {
     cell_of_.assign(sites_.size(), -1);
     for (std::size_t c = 0; c < cells_.size(); ++c) {
       const std::int64_t s = cells_.site(c);
-      if (cells_.cell(c).face_count() == 0) continue;
+      if (cells_.face_count(c) == 0) continue;
       ++r_.cells;
       if (s < 0 || static_cast<std::size_t>(s) >= sites_.size()) {
-        add(VoronoiDefect::extra_cell, s, -1, 0, "a cell of no site");
+        add(p, VoronoiDefect::extra_cell, s, -1, 0, "a cell of no site");
         continue;
       }
       auto& slot = cell_of_[nb_.rep(static_cast<std::uint32_t>(s))];
       if (slot >= 0)
-        add(VoronoiDefect::extra_cell, s, cells_.site(slot), 0, "a second cell for this site or a copy of it");
+        add(p, VoronoiDefect::extra_cell, s, cells_.site(slot), 0, "a second cell for this site or a copy of it");
       else
         slot = static_cast<std::int64_t>(c);
     }
   }
 
-  void tool_faces(const VoronoiCell& c, std::uint32_t a, std::vector<ToolFace>& out) {
+  void tool_faces(const VoronoiCell& c, std::uint32_t a, std::vector<ToolFace>& out, Partial& p) const {
     out.clear();
     for (std::size_t f = 0; f < c.face_count(); ++f) {
       const std::int32_t id = c.face_neighbor[f];
       if (id < 0) continue;
       if (static_cast<std::size_t>(id) >= sites_.size()) {
-        add(VoronoiDefect::bad_neighbor, a, id, 0, "neighbour id is no site");
+        add(p, VoronoiDefect::bad_neighbor, a, id, 0, "neighbour id is no site");
         continue;
       }
       out.push_back({nb_.rep(static_cast<std::uint32_t>(id)), id, face_area(c, f)});
@@ -134,128 +203,143 @@ class Judge {
     out.resize(k);
   }
 
+  // A bounded exact face (an interior DT edge) whose every vertex (the ring's
+  // centres, in doubles) lies beyond one wall by more than 1e-9 of the diagonal
+  // cannot meet the box: the clip below is not needed.
+  bool beyond_a_wall(const std::vector<Point3>& centres) const {
+    const double m = 1e-9 * box_.diagonal();
+    const double lo[3] = {box_.lo.x, box_.lo.y, box_.lo.z}, hi[3] = {box_.hi.x, box_.hi.y, box_.hi.z};
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto coord = [axis](const Point3& c) { return axis == 0 ? c.x : axis == 1 ? c.y : c.z; };
+      if (std::all_of(centres.begin(), centres.end(), [&](const Point3& c) { return coord(c) < lo[axis] - m; }) ||
+          std::all_of(centres.begin(), centres.end(), [&](const Point3& c) { return coord(c) > hi[axis] + m; }))
+        return true;
+    }
+    return false;
+  }
+
   // The exact face of (a, b) clipped to the box, in doubles: its area, or nullopt when
   // it does not meet the box interior.
-  std::optional<double> true_area(std::uint32_t a, std::uint32_t b) {
-    if (clipped_site_ != a) {
-      std::vector<std::uint32_t> all(pos_);
-      all.insert(all.end(), deg_.begin(), deg_.end());
-      compute_cell(clipped_, sites_, a, all, box_, 1e-15);
-      clipped_site_ = a;
+  std::optional<double> true_area(std::uint32_t a, std::uint32_t b, Scratch& s) const {
+    nb_.ring_centres(a, b, s.centres);
+    const bool bounded = !nb_.hull_edge(a, b) && !s.centres.empty();
+    if (bounded && beyond_a_wall(s.centres)) return std::nullopt;
+    if (s.clipped_site != a) {
+      s.all.assign(s.pos.begin(), s.pos.end());
+      s.all.insert(s.all.end(), s.deg.begin(), s.deg.end());
+      compute_cell(s.clipped, sites_, a, s.all, box_, 1e-15);
+      s.clipped_site = a;
     }
     double area = 0;
-    for (std::size_t f = 0; f < clipped_.face_count(); ++f)
-      if (clipped_.face_tag(f) == static_cast<std::int32_t>(b)) {
-        const auto fv = clipped_.face(f);
-        const Point3 o = clipped_.vertices()[fv[0]];
+    const ConvexCell& cc = s.clipped;
+    for (std::size_t f = 0; f < cc.face_count(); ++f)
+      if (cc.face_tag(f) == static_cast<std::int32_t>(b)) {
+        const auto fv = cc.face(f);
+        const Point3 o = cc.vertices()[fv[0]];
         Point3 n{0, 0, 0};
         for (std::size_t k = 1; k + 1 < fv.size(); ++k)
-          n = n + cross(clipped_.vertices()[fv[k]] - o, clipped_.vertices()[fv[k + 1]] - o);
+          n = n + cross(cc.vertices()[fv[k]] - o, cc.vertices()[fv[k + 1]] - o);
         area += 0.5 * norm(n);
       }
     if (area > 0) return area;
     // Rounded away by the clip: required when a vertex of the exact face is inside the box.
-    nb_.ring_centres(a, b, centres_);
-    for (const auto& c : centres_)
+    for (const auto& c : s.centres)
       if (c.x > box_.lo.x && c.x < box_.hi.x && c.y > box_.lo.y && c.y < box_.hi.y && c.z > box_.lo.z &&
           c.z < box_.hi.z)
         return 0.0;
     return std::nullopt;
   }
 
-  void face_defect(bool missing, std::uint32_t a, std::int64_t b, double area) {
+  void face_defect(Partial& p, bool missing, std::uint32_t a, std::int64_t b, double area) const {
     const double rel = area / extent2_;
     if (rel <= o_.small_face) {
-      add(missing ? VoronoiDefect::small_missing_face : VoronoiDefect::small_spurious_face, a, b, rel);
-      r_.largest_small_face = std::max(r_.largest_small_face, rel);
+      add(p, missing ? VoronoiDefect::small_missing_face : VoronoiDefect::small_spurious_face, a, b, rel);
+      p.largest_small_face = std::max(p.largest_small_face, rel);
     } else {
-      add(missing ? VoronoiDefect::missing_face : VoronoiDefect::spurious_face, a, b, rel);
-      r_.largest_wrong_face = std::max(r_.largest_wrong_face, rel);
+      add(p, missing ? VoronoiDefect::missing_face : VoronoiDefect::spurious_face, a, b, rel);
+      p.largest_wrong_face = std::max(p.largest_wrong_face, rel);
     }
+  }
+
+  // A site without a cell: missing when inside the box, or when its exact cell meets it.
+  void judge_cellless(std::uint32_t a, Partial& p, Scratch& s) const {
+    if (box_.contains(sites_[a])) {
+      add(p, VoronoiDefect::missing_cell, a, -1, 0);
+      return;
+    }
+    for (auto b : s.pos)
+      if (true_area(a, b, s)) {
+        add(p, VoronoiDefect::missing_cell, a, -1, 0, "site outside the box, its cell meets it");
+        return;
+      }
   }
 
   // Stage 2: the neighbour set of one site against the exact one.
-  void judge_site(std::uint32_t a) {
-    nb_.neighbors(a, pos_, deg_);
-    r_.voronoi_edges += pos_.size();
-    r_.degenerate_edges += deg_.size();
+  void judge_site(std::uint32_t a, Partial& p, Scratch& s) const {
+    nb_.neighbors(a, s.pos, s.deg, s.ring);
+    p.voronoi_edges += s.pos.size();
+    p.degenerate_edges += s.deg.size();
     const std::int64_t c = cell_of_[a];
     if (c < 0) {
-      if (box_.contains(sites_[a])) add(VoronoiDefect::missing_cell, a, -1, 0);
-      else if (!pos_.empty()) {
-        for (auto b : pos_)
-          if (true_area(a, b)) {
-            add(VoronoiDefect::missing_cell, a, -1, 0, "site outside the box, its cell meets it");
-            break;
-          }
-      }
+      judge_cellless(a, p, s);
       return;
     }
-    tool_faces(cells_.cell(static_cast<std::size_t>(c)), a, tf_);
+    tool_faces(cells_.view(static_cast<std::size_t>(c)), a, s.tf, p);
     std::size_t i = 0;
-    for (auto b : pos_) {
-      while (i < tf_.size() && tf_[i].neighbor < b) unexpected(a, tf_[i++]);
-      if (i < tf_.size() && tf_[i].neighbor == b) {
+    for (auto b : s.pos) {
+      while (i < s.tf.size() && s.tf[i].neighbor < b) unexpected(a, s.tf[i++], p, s);
+      if (i < s.tf.size() && s.tf[i].neighbor == b) {
         ++i;
         continue;
       }
-      if (const auto area = true_area(a, b)) face_defect(true, a, b, *area);
+      if (const auto area = true_area(a, b, s)) face_defect(p, true, a, b, *area);
     }
-    while (i < tf_.size()) unexpected(a, tf_[i++]);
+    while (i < s.tf.size()) unexpected(a, s.tf[i++], p, s);
   }
 
   // A tool face towards a site that is no Voronoi neighbour of a.
-  void unexpected(std::uint32_t a, const ToolFace& f) {
-    const bool dt_edge = std::binary_search(deg_.begin(), deg_.end(), f.neighbor);
+  void unexpected(std::uint32_t a, const ToolFace& f, Partial& p, const Scratch& s) const {
+    const bool dt_edge = std::binary_search(s.deg.begin(), s.deg.end(), f.neighbor);
     if (dt_edge && f.area / extent2_ <= o_.small_face) {
-      add(VoronoiDefect::degenerate_face, a, f.id, f.area / extent2_, "exact face has zero area");
+      add(p, VoronoiDefect::degenerate_face, a, f.id, f.area / extent2_, "exact face has zero area");
       return;
     }
-    face_defect(false, a, f.id, f.area);
+    face_defect(p, false, a, f.id, f.area);
   }
 
   // Stage 3: one cell's shape, vertices and volume.
-  void judge_geometry(std::size_t k) {
-    const VoronoiCell c = cells_.cell(k);
+  void judge_geometry(std::size_t k, Partial& p, Scratch& s) const {
+    const VoronoiCell c = cells_.view(k);
     if (c.face_count() == 0) return;
-    const std::int64_t s = cells_.site(k);
-    r_.faces += c.face_count();
-    r_.vertices += c.vertices.size();
-    r_.volume_sum += c.volume;
+    const std::int64_t site = cells_.site(k);
+    p.faces += c.face_count();
+    p.vertices += c.vertices.size();
+    p.volume_sum += cell_volume(c);
     const double diag = box_.diagonal();
     std::string why = check_cell_closed(c);
     if (why.empty()) why = check_cell_convex(c, o_.convex_tolerance * diag, true);
-    if (!why.empty()) add(VoronoiDefect::not_convex, s, -1, 0, why);
-    if (s < 0 || static_cast<std::size_t>(s) >= sites_.size()) return;
-    errors_.resize(c.vertices.size());
-    vertex_errors(c, sites_, static_cast<std::uint32_t>(s), box_, errors_);
+    if (!why.empty()) add(p, VoronoiDefect::not_convex, site, -1, 0, why);
+    if (site < 0 || static_cast<std::size_t>(site) >= sites_.size()) return;
+    s.errors.resize(c.vertices.size());
+    vertex_errors(c, sites_, static_cast<std::uint32_t>(site), box_, s.errors);
     const double ulp = std::nextafter(coord_max_, INFINITY) - coord_max_;
-    for (const auto& e : errors_) {
+    for (const auto& e : s.errors) {
       if (!e.decided) continue;
-      r_.max_vertex_ulps = std::max(r_.max_vertex_ulps, e.distance / ulp);
-      r_.max_vertex_error = std::max(r_.max_vertex_error, e.distance / diag);
-      if (e.distance > o_.vertex_tolerance * diag) add(VoronoiDefect::vertex_off, s, -1, e.distance / diag);
+      p.max_vertex_ulps = std::max(p.max_vertex_ulps, e.distance / ulp);
+      p.max_vertex_error = std::max(p.max_vertex_error, e.distance / diag);
+      if (e.distance > o_.vertex_tolerance * diag) add(p, VoronoiDefect::vertex_off, site, -1, e.distance / diag);
     }
   }
 
- public:
-  double coord_max_ = 0;
-
- private:
   std::span<const Point3> sites_;
   const Box& box_;
   const ToolCells& cells_;
   const VoronoiCheckOptions& o_;
   VoronoiCheckReport& r_;
   VoronoiNeighbors nb_;
-  double extent2_ = 1;
+  double extent2_ = 1, coord_max_ = 0;
   std::vector<std::int64_t> cell_of_;
-  std::vector<std::uint32_t> pos_, deg_;
-  std::vector<ToolFace> tf_;
-  std::vector<VertexError> errors_;
-  std::vector<Point3> centres_;
-  ConvexCell clipped_;
-  std::uint32_t clipped_site_ = 0xFFFFFFFFu;
+  std::vector<Scratch> scratch_;
 };
 
 void decide(VoronoiCheckReport& r, const VoronoiCheckOptions& o) {
@@ -289,8 +373,6 @@ VoronoiCheckReport check_voronoi(std::span<const Point3> sites, const Box& box, 
   r.sites = sites.size();
   r.box_volume = box.volume();
   Judge judge(sites, box, cells, options, r);
-  for (double v : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z})
-    judge.coord_max_ = std::max(judge.coord_max_, std::abs(v));
   judge.run();
   std::vector<Point3> distinct(sites.begin(), sites.end());
   std::sort(distinct.begin(), distinct.end(), lex_less);

@@ -15,10 +15,12 @@
 // rounded (only small faces wrong), wrong (a larger face, or a cell, wrong).
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "kernel/tetrahedralization.hpp"
 #include "voronoi/box.hpp"
 #include "voronoi_check/tool_cells.hpp"
 
@@ -73,6 +75,11 @@ struct VoronoiCheckOptions {
   double convex_tolerance = 1e-9;   // of the box diagonal
   double volume_tolerance = 1e-9;   // relative to the box volume
   std::size_t witnesses_per_kind = 16;
+  unsigned threads = 1;  // sites judged in parallel (0: all hardware threads); the report is the same for any count
+  // The sites' Delaunay tetrahedralization by exact predicates with symbolic
+  // perturbation (compute_voronoi's with keep_dt), read instead of built: the same
+  // tets (the perturbed DT is unique), so the same report. Null: built here.
+  std::shared_ptr<const Tetrahedralization> dt;
 };
 
 struct VoronoiCheckReport {
@@ -88,7 +95,10 @@ struct VoronoiCheckReport {
   std::uint64_t sites = 0, distinct_sites = 0, cells = 0, faces = 0, vertices = 0;
   std::uint64_t voronoi_edges = 0;   // directed Voronoi neighbour pairs (positive faces)
   std::uint64_t degenerate_edges = 0;  // directed DT edges with a zero-area face
-  double seconds_dt = 0, seconds = 0;  // the DT alone; the whole check
+  // Wall time of the stages: the DT, its tables (flat and cospherical tets, hull
+  // edges), the neighbour sets against the exact ones, the cells' shape and vertices;
+  // and of the whole check.
+  double seconds_dt = 0, seconds_tables = 0, seconds_relation = 0, seconds_geometry = 0, seconds = 0;
   std::uint64_t count(VoronoiDefect d) const { return counts[static_cast<int>(d)]; }
 };
 

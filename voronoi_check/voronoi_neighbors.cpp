@@ -4,10 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
-#include <optional>
 #include <stdexcept>
 
 #include "kernel/build.hpp"
+#include "kernel/parallel_for.hpp"
 #include "oracle/facet_table.hpp"
 #include "oracle/filtered_exact.hpp"
 #include "voronoi/circumcenter.hpp"
@@ -15,10 +15,6 @@
 #include "voronoi_check/exact_centre.hpp"
 
 namespace dtlab {
-
-struct VoronoiNeighbors::Exact {
-  std::vector<std::optional<ExactPoint>> centre;  // per tet, computed on first use
-};
 
 namespace {
 
@@ -40,45 +36,64 @@ std::vector<std::uint32_t> representatives(std::span<const Point3> p) {
 
 }  // namespace
 
-VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites) : exact_(std::make_unique<Exact>()) {
+VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, unsigned threads) {
   for (const auto& p : sites)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw std::invalid_argument("a site is not finite");
   rep_ = representatives(sites);
   const auto t0 = Clock::now();
-  BuildResult r = build_delaunay(sites, PredicateSpec{"adaptive", 0, false, true});
+  BuildOptions bo;
+  bo.threads = threads;
+  bo.count_stages = false;
+  BuildResult r = build_delaunay(sites, PredicateSpec{"adaptive", 0, false, true}, bo);
   if (r.failure) {
     if (r.failure->kind == FailureKind::lower_dimensional)
       throw std::invalid_argument("fewer than 4 distinct sites, or all coplanar: no Delaunay tetrahedralization");
     throw std::runtime_error(std::string("Delaunay build failed: ") + failure_name(r.failure->kind));
   }
-  dt_ = std::move(r.mesh);
+  dt_ = std::make_shared<const Tetrahedralization>(std::move(r.mesh));
   seconds_dt = since(t0);
   const auto t1 = Clock::now();
-  build_tables();
+  build_tables(threads);
   seconds_tables = since(t1);
 }
 
-VoronoiNeighbors::~VoronoiNeighbors() = default;
+VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, std::shared_ptr<const Tetrahedralization> dt,
+                                   unsigned threads)
+    : rep_(representatives(sites)), dt_(std::move(dt)) {
+  if (dt_->points.size() != sites.size()) throw std::invalid_argument("the DT is not of these sites");
+  const auto t1 = Clock::now();
+  build_tables(threads);
+  seconds_tables = since(t1);
+}
 
-// Stars, flat tets, tets with a cospherical facet, hull edges and the degenerate ones.
-void VoronoiNeighbors::build_tables() {
+// Flat tets (exact orient3d 0), then tets with a cospherical facet (exact insphere 0
+// of a facet and its two apexes; a flat tet is degenerate too).
+void VoronoiNeighbors::classify_tets(unsigned threads) {
   const FilteredExact pred;
-  const auto& p = dt_.points;
-  const std::size_t nt = dt_.tets.size();
-  vertex_stars(p.size(), dt_.tets, star_off_, star_);
+  const auto& p = dt_->points;
+  const std::size_t nt = dt_->tets.size();
   flat_.assign(nt, 0);
-  for (std::size_t t = 0; t < nt; ++t) {
-    const Tet& q = dt_.tets[t];
+  parallel_for(nt, threads, 4096, [&](std::size_t t, unsigned) {
+    const Tet& q = dt_->tets[t];
     flat_[t] = pred.orient3d(p[q[0]], p[q[1]], p[q[2]], p[q[3]]) == 0;
-  }
-  degenerate_ = flat_;
-  const FacetTable table = build_facet_table(dt_.tets, first_appearance(dt_.tets, p.size()), [&](const FacetPair& f) {
-    const std::uint32_t t1 = f.r1 / 4, t2 = f.r2 / 4;
-    if (degenerate_[t1] && degenerate_[t2]) return;
-    if (pred.insphere(p[f.v[0]], p[f.v[1]], p[f.v[2]], p[f.apex1], p[f.apex2]) == 0)
-      degenerate_[t1] = degenerate_[t2] = 1;
   });
+  degenerate_ = flat_;
+}
+
+// Stars, flat and degenerate tets, hull edges and the degenerate ones.
+void VoronoiNeighbors::build_tables(unsigned threads) {
+  const FilteredExact pred;
+  const auto& p = dt_->points;
+  vertex_stars(p.size(), dt_->tets, star_off_, star_);
+  classify_tets(threads);
+  const auto cospherical = [&](const FacetPair& f) {
+    if (flat_[f.r1 / 4] && flat_[f.r2 / 4]) return 0;
+    return pred.insphere(p[f.v[0]], p[f.v[1]], p[f.v[2]], p[f.apex1], p[f.apex2]) == 0 ? 1 : 0;
+  };
+  const auto mark = [&](const FacetPair& f, int) { degenerate_[f.r1 / 4] = degenerate_[f.r2 / 4] = 1; };
+  const FacetTable table =
+      build_facet_table(dt_->tets, first_appearance(dt_->tets, p.size()), cospherical, mark, threads);
   // Hull facets by edge: the third vertex and the tet's fourth of both facets at an edge.
   struct Side {
     std::uint64_t key;
@@ -87,7 +102,7 @@ void VoronoiNeighbors::build_tables() {
   std::vector<Side> sides;
   hull_vertex_.assign(p.size(), 0);
   for (auto ref : table.boundary_refs) {
-    const Tet& q = dt_.tets[ref / 4];
+    const Tet& q = dt_->tets[ref / 4];
     const auto v = facet_vertices(q, static_cast<int>(ref % 4));
     for (int k = 0; k < 3; ++k) {
       hull_vertex_[v[k]] = 1;
@@ -104,8 +119,6 @@ void VoronoiNeighbors::build_tables() {
         pred.insphere(a, b, p[s1.third], p[s2.third], p[s1.apex]) == 0)
       flat_hull_edges_.push_back(s1.key);
   }
-  mark_.assign(p.size(), 0);
-  exact_->centre.resize(nt);
 }
 
 std::uint64_t VoronoiNeighbors::degenerate_tets() const {
@@ -114,51 +127,62 @@ std::uint64_t VoronoiNeighbors::degenerate_tets() const {
 
 void VoronoiNeighbors::ring_centres(std::uint32_t a, std::uint32_t b, std::vector<Point3>& out) const {
   out.clear();
-  const auto& p = dt_.points;
+  const auto& p = dt_->points;
   for (auto t : star(a)) {
-    const Tet& q = dt_.tets[t];
+    const Tet& q = dt_->tets[t];
     if (flat_[t] || (q[0] != b && q[1] != b && q[2] != b && q[3] != b)) continue;
     out.push_back(vor::circumcenter(p[q[0]], p[q[1]], p[q[2]], p[q[3]]));
   }
 }
 
-bool VoronoiNeighbors::ring_collinear(std::uint32_t a, std::uint32_t b) {
-  const auto& p = dt_.points;
-  std::vector<const ExactPoint*> centres;
-  for (auto t : star(a)) {
-    const Tet& q = dt_.tets[t];
-    if (flat_[t] || (q[0] != b && q[1] != b && q[2] != b && q[3] != b)) continue;
-    auto& c = exact_->centre[t];
-    if (!c) c = exact_circumcentre(p[q[0]], p[q[1]], p[q[2]], p[q[3]]);
-    centres.push_back(&*c);
-  }
-  return all_collinear(centres);
+bool VoronoiNeighbors::hull_edge(std::uint32_t a, std::uint32_t b) const {
+  return hull_vertex_[a] && hull_vertex_[b] && std::binary_search(hull_edges_.begin(), hull_edges_.end(), edge_key(a, b));
 }
 
-bool VoronoiNeighbors::edge_positive(std::uint32_t a, std::uint32_t b) {
-  const std::uint64_t key = edge_key(a, b);
-  if (hull_vertex_[a] && hull_vertex_[b] && std::binary_search(hull_edges_.begin(), hull_edges_.end(), key))
-    return !std::binary_search(flat_hull_edges_.begin(), flat_hull_edges_.end(), key);
+// The exact centres of the ring's non-flat tets, from the scratch when this site has
+// met them before.
+bool VoronoiNeighbors::ring_collinear(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const {
+  const auto& p = dt_->points;
+  std::vector<std::size_t> at;
   for (auto t : star(a)) {
-    const Tet& q = dt_.tets[t];
-    if (degenerate_[t] && (q[0] == b || q[1] == b || q[2] == b || q[3] == b)) return !ring_collinear(a, b);
+    const Tet& q = dt_->tets[t];
+    if (flat_[t] || (q[0] != b && q[1] != b && q[2] != b && q[3] != b)) continue;
+    std::size_t k = 0;
+    while (k < s.centres.size() && s.centres[k].first != t) ++k;
+    if (k == s.centres.size()) s.centres.emplace_back(t, exact_circumcentre(p[q[0]], p[q[1]], p[q[2]], p[q[3]]));
+    at.push_back(k);
+  }
+  s.ring.clear();
+  for (auto k : at) s.ring.push_back(&s.centres[k].second);
+  return all_collinear(s.ring);
+}
+
+bool VoronoiNeighbors::edge_positive(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const {
+  const std::uint64_t key = edge_key(a, b);
+  if (hull_edge(a, b)) return !std::binary_search(flat_hull_edges_.begin(), flat_hull_edges_.end(), key);
+  for (auto t : star(a)) {
+    const Tet& q = dt_->tets[t];
+    if (degenerate_[t] && (q[0] == b || q[1] == b || q[2] == b || q[3] == b)) return !ring_collinear(a, b, s);
   }
   return true;
 }
 
 void VoronoiNeighbors::neighbors(std::uint32_t a, std::vector<std::uint32_t>& positive,
-                                 std::vector<std::uint32_t>& degenerate) {
+                                 std::vector<std::uint32_t>& degenerate, NeighborScratch& scratch) const {
   positive.clear();
   degenerate.clear();
+  scratch.centres.clear();
   std::vector<std::uint32_t>& all = degenerate;  // collected here first, then split
+  auto& mark = scratch.mark;
+  mark.resize(rep_.size(), 0);
   for (auto t : star(a))
-    for (auto v : dt_.tets[t])
-      if (v != a && !mark_[v]) mark_[v] = 1, all.push_back(v);
-  for (auto v : all) mark_[v] = 0;
+    for (auto v : dt_->tets[t])
+      if (v != a && !mark[v]) mark[v] = 1, all.push_back(v);
+  for (auto v : all) mark[v] = 0;
   std::sort(all.begin(), all.end());
   std::size_t kept = 0;
   for (auto v : all) {
-    if (edge_positive(a, v))
+    if (edge_positive(a, v, scratch))
       positive.push_back(v);
     else
       all[kept++] = v;

@@ -18,50 +18,66 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
+
+#include "voronoi_check/exact_centre.hpp"
 
 #include "kernel/tetrahedralization.hpp"
 
 namespace dtlab {
 
+// One thread's scratch for neighbors(): the exact centres of the rings it has
+// decided for the current site (kept for that site's other edges).
+struct NeighborScratch {
+  std::vector<std::pair<std::uint32_t, ExactPoint>> centres;  // (tet, exact centre)
+  std::vector<const ExactPoint*> ring;
+  std::vector<char> mark;  // per site, all 0 between calls
+};
+
 class VoronoiNeighbors {
  public:
   // Throws std::invalid_argument on a non-finite site, or on fewer than 4 distinct or
-  // coplanar sites (no tetrahedralization to read the relation from).
-  explicit VoronoiNeighbors(std::span<const Point3> sites);
-  ~VoronoiNeighbors();
+  // coplanar sites (no tetrahedralization to read the relation from). `threads`: of
+  // the DT build (symbolic perturbation: the same tets for any count) and the tables.
+  explicit VoronoiNeighbors(std::span<const Point3> sites, unsigned threads = 1);
+  // The same from the sites' DT already built with exact predicates and symbolic
+  // perturbation (its points are the sites); only the tables are built.
+  VoronoiNeighbors(std::span<const Point3> sites, std::shared_ptr<const Tetrahedralization> dt, unsigned threads = 1);
 
   // rep(i): the first site with the coordinates of site i (itself when unique).
   std::uint32_t rep(std::uint32_t i) const { return rep_[i]; }
   std::size_t site_count() const { return rep_.size(); }
-  const Tetrahedralization& dt() const { return dt_; }
+  const Tetrahedralization& dt() const { return *dt_; }
   std::span<const std::uint32_t> star(std::uint32_t v) const {
     return {star_.data() + star_off_[v], star_off_[v + 1] - star_off_[v]};
   }
 
   // The DT neighbours of representative site a, sorted, split by the area of the dual
   // face: `positive` (Voronoi neighbours) and `degenerate` (zero-area faces).
-  // Not thread-safe (exact centres are cached).
-  void neighbors(std::uint32_t a, std::vector<std::uint32_t>& positive, std::vector<std::uint32_t>& degenerate);
+  // Thread-safe with one scratch per thread.
+  void neighbors(std::uint32_t a, std::vector<std::uint32_t>& positive, std::vector<std::uint32_t>& degenerate,
+                 NeighborScratch& scratch) const;
 
   // Circumcentres (in doubles) of the tets around edge (a, b) that are not flat.
   void ring_centres(std::uint32_t a, std::uint32_t b, std::vector<Point3>& out) const;
+  // (a, b) is an edge of the convex hull: its dual face is unbounded.
+  bool hull_edge(std::uint32_t a, std::uint32_t b) const;
 
   std::uint64_t degenerate_tets() const;
   double seconds_dt = 0, seconds_tables = 0;
 
  private:
-  bool edge_positive(std::uint32_t a, std::uint32_t b);
-  bool ring_collinear(std::uint32_t a, std::uint32_t b);
-  void build_tables();
+  bool edge_positive(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const;
+  bool ring_collinear(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const;
+  void build_tables(unsigned threads);
+  void classify_tets(unsigned threads);
 
-  struct Exact;
   std::vector<std::uint32_t> rep_;
-  Tetrahedralization dt_;
+  std::shared_ptr<const Tetrahedralization> dt_;
   std::vector<std::uint32_t> star_off_, star_;
-  std::vector<char> flat_, degenerate_, hull_vertex_, mark_;
+  std::vector<char> flat_, degenerate_, hull_vertex_;
   std::vector<std::uint64_t> hull_edges_, flat_hull_edges_;  // sorted keys (min << 32 | max)
-  std::unique_ptr<Exact> exact_;                              // cached exact centres
 };
 
 }  // namespace dtlab
