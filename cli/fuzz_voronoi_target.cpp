@@ -9,6 +9,7 @@
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 #include "experiments/voronoi_campaign.hpp"
+#include "voronoi_check/voronoi_peer_command.hpp"
 
 namespace dtlab::cli {
 
@@ -75,12 +76,13 @@ int run_voronoi_target(const VoronoiTargetArgs& a) {
     }
     for (const auto& f : failures)
       if (!f["corpus_file"].get<std::string>().empty())
-        std::printf("  %s case %zu: %s, shrunk to %zu points%s: %s/%s (dtlab voronoi %s/%s --against %s)\n",
+        std::printf("  %s case %zu: %s, shrunk to %zu points%s: %s/%s (dtlab voronoi %s/%s --against %s%s)\n",
                     f["source"].get<std::string>().c_str(), f["case"].get<std::size_t>(),
                     f["verdict"].get<std::string>().c_str(), f["shrunk_points"].get<std::size_t>(),
                     f["minimal"].get<bool>() ? " (1-minimal)" : "", a.out.c_str(),
                     f["corpus_file"].get<std::string>().c_str(), a.out.c_str(),
-                    f["corpus_file"].get<std::string>().c_str(), a.target.c_str());
+                    f["corpus_file"].get<std::string>().c_str(), a.target.c_str(),
+                    voronoi_peer_definition_arguments(a.target).c_str());
     std::printf("%s: %zu cases, %zu failing%s\n", a.target.c_str(), cases.size(), failing,
                 not_installed ? " (not installed)" : "");
   }
