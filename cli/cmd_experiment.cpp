@@ -16,6 +16,7 @@
 #include "cli/number_options.hpp"
 #include "cli/peer_definitions.hpp"
 #include "oracle/peer_command.hpp"
+#include "voronoi_check/voronoi_peer_command.hpp"
 #include "cli/stdout_to_stderr.hpp"
 #include "experiments/benchmark.hpp"
 #include "experiments/leaderboard.hpp"
@@ -114,6 +115,14 @@ void add_benchmark_command(CLI::App* sub, int& rc) {
   });
 }
 
+// Every defined Voronoi peer gets its own row in the Voronoi section ("all" has them).
+void add_defined_voronoi_peers(const std::vector<std::string>& defined, std::vector<std::string>& peers) {
+  if (defined.empty() || std::find(peers.begin(), peers.end(), "all") != peers.end()) return;
+  if (peers == std::vector<std::string>{"none"}) peers.clear();
+  for (const auto& name : defined)
+    if (std::find(peers.begin(), peers.end(), name) == peers.end()) peers.push_back(name);
+}
+
 // `experiment leaderboard`: the field's Delaunay codes judged by the exact checker.
 void add_leaderboard_command(CLI::App* sub, int& rc) {
   auto board = std::make_shared<experiments::LeaderboardOptions>();
@@ -126,7 +135,7 @@ void add_leaderboard_command(CLI::App* sub, int& rc) {
   l->add_flag("--quick", board->quick, "2 cases per cell, one size per kind, speed at 10^4, short shrinks");
   l->add_option("--peers", board->peers, "peers to judge, or all")->delimiter(',');
   auto board_defined = std::make_shared<PeerDefinitionArgs>();
-  board_defined->add_to(*l, "--peers-file");
+  board_defined->add_to(*l, "--peers-file", PeerKinds::both);
   l->add_option("--family,--families", board->families,
                 "fuzz families, as fuzz --family (none given: all; --families is the old spelling)")
       ->delimiter(',');
@@ -162,6 +171,7 @@ void add_leaderboard_command(CLI::App* sub, int& rc) {
       if (std::find(board->peers.begin(), board->peers.end(), name) == board->peers.end() &&
           std::find(board->peers.begin(), board->peers.end(), "all") == board->peers.end())
         board->peers.push_back(name);
+    add_defined_voronoi_peers(board_defined->voronoi_names(), board->voronoi_peers);
     board->meshes = !*board_no_meshes;
     board->progress = !*board_quiet;
     std::vector<std::string> args = {"--out", board->out.string(), "--seed", std::to_string(board->seed)};
@@ -189,6 +199,8 @@ void add_leaderboard_command(CLI::App* sub, int& rc) {
     }
     // Each defined peer as a quoted --peer, so the recorded command runs as it is.
     for (const auto& name : defined) args.push_back(peer_definition_arguments(name).substr(1));
+    for (const auto& name : board_defined->voronoi_names())
+      args.push_back(voronoi_peer_definition_arguments(name).substr(1));
     board->command_line = command_line(l->get_name(), args);
     rc = run_experiment(*board_json, board->out, [&] { return experiments::run_leaderboard(*board).exit_code; });
   });

@@ -390,7 +390,7 @@ void add_fuzz_command(CLI::App& app, int& rc) {
       "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...; or a Voronoi peer: voro++, "
       "scipy-voronoi, qvoronoi, cgal-dual, voronoi:dtlab:B); its failures are shrunk into the corpus. Exit 1 "
       "when it failed, 3 when it is not installed");
-  args->defined.add_to(*sub);
+  args->defined.add_to(*sub, "--peers,--peers-file", PeerKinds::both);
   sub->add_option("--jobs", args->jobs, "worker threads (0: one per core)")->transform(count_in(0, 1024))->capture_default_str();
   sub->add_option("--out", args->out, "campaign folder (results*.jsonl, corpus/, summary.md, environment.json)")
       ->type_name("DIR");

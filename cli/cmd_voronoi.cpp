@@ -14,6 +14,7 @@
 #include "cli/command.hpp"
 #include "cli/input_points.hpp"
 #include "cli/number_options.hpp"
+#include "cli/peer_definitions.hpp"
 #include "cli/voronoi_against.hpp"
 #include "fracture/render_png.hpp"
 #include "kernel/build.hpp"
@@ -40,6 +41,7 @@ struct VoronoiArgs {
   std::string against = "none";
   double timeout = 600;
   bool quiet = false;
+  PeerDefinitionArgs defined;  // --voronoi-peer, --peers
 };
 
 // The cells are clipped in doubles: squared distances of coordinates beyond 1e100 or
@@ -89,6 +91,7 @@ void refuse_lost_cells(const std::string& input, const VoronoiDiagram& vd) {
 
 int run_voronoi(const VoronoiArgs& a) {
   const bool obj = !a.no_obj;
+  a.defined.register_all();  // before the cells: a bad definition ends the run at once
   PointFile in = read_input_points(a.input);
   if (in.points.empty()) throw InputError(a.input, 0, "no points");
   VoronoiOptions o;
@@ -200,8 +203,9 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
   sub->add_option("--against", args->against,
                   "Voronoi peers to judge with the exact checker, clipped to the same box: none, all, or a comma list of "
-                  "voro++, scipy-voronoi, qvoronoi, cgal-dual, dtlab:naive|epsilon|adaptive|exact")
+                  "voro++, scipy-voronoi, qvoronoi, cgal-dual, dtlab:naive|epsilon|adaptive|exact, or a --voronoi-peer")
       ->capture_default_str();
+  args->defined.add_to(*sub, "--peers", PeerKinds::voronoi);
   sub->add_option("--timeout", args->timeout, "seconds before a peer counts as hung")->check(number_in(0.001, 1e6))->capture_default_str();
   sub->add_flag("--quiet", args->quiet, "no progress lines");
   sub->add_flag("--json", args->json, "print the manifest on stdout (with --against: also exact_check and peers)");

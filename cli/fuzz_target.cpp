@@ -12,6 +12,7 @@
 #include "experiments/peer_campaign.hpp"
 #include "experiments/voronoi_campaign.hpp"
 #include "oracle/peer_command.hpp"
+#include "voronoi_check/voronoi_peer_command.hpp"
 
 namespace dtlab::cli {
 
@@ -155,7 +156,7 @@ int run_voronoi_target(const TargetArgs& a) {
                      judged && c.run.verdict == VoronoiVerdict::not_installed, c.corpus_file, c.shrunk_points,
                      c.shrunk_minimal});
   }
-  return report(a, cases, {"dtlab voronoi", ""});
+  return report(a, cases, {"dtlab voronoi", voronoi_peer_definition_arguments(a.target)});
 }
 
 }  // namespace dtlab::cli

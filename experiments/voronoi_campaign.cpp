@@ -11,6 +11,7 @@
 #include "fuzz/shrink.hpp"
 #include "voronoi/voronoi.hpp"
 #include "voronoi_check/check_json.hpp"
+#include "voronoi_check/voronoi_peer_command.hpp"
 
 namespace dtlab::experiments {
 
@@ -93,7 +94,9 @@ void shrink_and_save_voronoi(VoronoiCase& c, const std::vector<Point3>& points, 
   c.corpus_file = save_corpus_points(out_dir, stem, shrunk);
   nlohmann::json j =
       case_sidecar(c, points.size(), shrunk.size(),
-                   "dtlab voronoi " + c.corpus_file + " --against " + c.peer + " --json", original_command);
+                   "dtlab voronoi " + c.corpus_file + " --against " + c.peer +
+                       voronoi_peer_definition_arguments(c.peer) + " --json",
+                   original_command);
   j["verdict"] = voronoi_verdict_name(target);
   j["message"] = c.run.message;
   j["shrunk_verdict_fresh"] = voronoi_verdict_name(c.shrunk_verdict);
@@ -108,7 +111,8 @@ std::vector<VoronoiCase> run_voronoi_campaign(const VoronoiCampaignOptions& o) {
         c.run = judged_run(c.peer, points, o.peer_options, c.not_judged);
         if (c.failed() && o.shrink && !o.out_dir.empty())
           shrink_and_save_voronoi(c, points, o.peer_options, o.shrink_budget, o.out_dir,
-                                  grid_case_command(c.peer, o, c.source, c.index));
+                                  grid_case_command(c.peer, o, c.source, c.index) +
+                                      voronoi_peer_definition_arguments(c.peer));
         if (c.run.report) c.run.report->witnesses.clear();  // counts and largest faces kept
       },
       o.on_case);

@@ -19,16 +19,29 @@ namespace {
 // One entry, whatever the format: its command as a string or argv words.
 using CommandField = std::variant<std::string, std::vector<std::string>>;
 
-CommandPeer entry_peer(const std::string& path, long line, std::size_t index, const std::string& name,
-                       const CommandField& command) {
-  const std::string where = "peer " + std::to_string(index + 1) + ": ";
+// One entry of either kind, as the file gives it: where it is, its fields.
+struct Entry {
+  long line = 0;
+  std::size_t index = 0;
+  std::string name, kind;
+  CommandField command;
+};
+
+// Adds the entry's peer to `out`, its template checked for its kind.
+void add_entry(const std::string& path, const Entry& e, const VoronoiPeerCheck& voronoi_check, PeersFile& out) {
+  const std::string where = "peer " + std::to_string(e.index + 1) + ": ";
+  if (e.kind != "delaunay" && e.kind != "voronoi")
+    throw InputError(path, e.line, where + "unknown kind '" + e.kind + "' (delaunay, voronoi)");
   try {
-    std::vector<std::string> argv = std::holds_alternative<std::string>(command)
-                                        ? split_command(std::get<std::string>(command))
-                                        : std::get<std::vector<std::string>>(command);
-    return make_command_peer(name, std::move(argv));
+    std::vector<std::string> argv = std::holds_alternative<std::string>(e.command)
+                                        ? split_command(std::get<std::string>(e.command))
+                                        : std::get<std::vector<std::string>>(e.command);
+    if (e.kind == "voronoi")
+      out.voronoi.push_back(voronoi_check(e.name, std::move(argv)));
+    else
+      out.delaunay.push_back(make_command_peer(e.name, std::move(argv)));
   } catch (const std::invalid_argument& x) {
-    throw InputError(path, line, where + x.what());
+    throw InputError(path, e.line, where + x.what());
   }
 }
 
@@ -42,9 +55,11 @@ std::string read_whole(const std::string& path) {
   return text.str();
 }
 
-const char* const kFields = "(name, command)";
+const char* const kFields = "(name, command, kind)";
 
-std::vector<CommandPeer> read_json(const std::string& path, const std::string& s) {
+bool known_field(const std::string& key) { return key == "name" || key == "command" || key == "kind"; }
+
+PeersFile read_json(const std::string& path, const std::string& s, const VoronoiPeerCheck& voronoi_check) {
   const auto line_of = [&](std::size_t byte) {
     return 1 + static_cast<long>(std::count(s.begin(), s.begin() + static_cast<long>(std::min(byte, s.size())), '\n'));
   };
@@ -57,15 +72,16 @@ std::vector<CommandPeer> read_json(const std::string& path, const std::string& s
   }
   const nlohmann::json list = j.is_object() && j.contains("peers") ? j["peers"] : j;
   if (!list.is_array()) throw InputError(path, 1, "expected {\"peers\": [...]} or an array of peers");
-  std::vector<CommandPeer> peers;
+  PeersFile peers;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const nlohmann::json& e = list[i];
     const std::string where = "peer " + std::to_string(i + 1) + ": ";
     if (!e.is_object() || !e.contains("name") || !e["name"].is_string() || !e.contains("command"))
       throw InputError(path, 0, where + "expected {\"name\": \"...\", \"command\": \"...\" or [...]}");
     for (const auto& [key, value] : e.items())
-      if (key != "name" && key != "command")
-        throw InputError(path, 0, where + "unknown field '" + key + "' " + kFields);
+      if (!known_field(key)) throw InputError(path, 0, where + "unknown field '" + key + "' " + kFields);
+    if (e.contains("kind") && !e["kind"].is_string())
+      throw InputError(path, 0, where + "kind must be \"delaunay\" or \"voronoi\"");
     CommandField command;
     const nlohmann::json& c = e["command"];
     if (c.is_string())
@@ -74,14 +90,15 @@ std::vector<CommandPeer> read_json(const std::string& path, const std::string& s
       command = c.get<std::vector<std::string>>();
     else
       throw InputError(path, 0, where + "command must be a string or an array of strings");
-    peers.push_back(entry_peer(path, 0, i, e["name"].get<std::string>(), command));
+    add_entry(path, {0, i, e["name"].get<std::string>(), e.value("kind", std::string("delaunay")), command},
+              voronoi_check, peers);
   }
   return peers;
 }
 
 long line_of(const toml::node& n) { return static_cast<long>(n.source().begin.line); }
 
-std::vector<CommandPeer> read_toml(const std::string& path, const std::string& s) {
+PeersFile read_toml(const std::string& path, const std::string& s, const VoronoiPeerCheck& voronoi_check) {
   toml::table root;
   try {
     root = toml::parse(s, path);
@@ -96,15 +113,18 @@ std::vector<CommandPeer> read_toml(const std::string& path, const std::string& s
   if (!list)
     throw InputError(path, root.contains("peers") ? line_of(*root.get("peers")) : 1,
                      "expected [[peers]] tables (name = \"...\", command = \"...\" or [...])");
-  std::vector<CommandPeer> peers;
+  PeersFile peers;
   for (std::size_t i = 0; i < list->size(); ++i) {
     const toml::node& e = (*list)[i];
     const std::string where = "peer " + std::to_string(i + 1) + ": ";
     const toml::table* t = e.as_table();
     if (!t) throw InputError(path, line_of(e), where + "expected a table (name = \"...\", command = \"...\")");
     for (const auto& [key, value] : *t)
-      if (key.str() != "name" && key.str() != "command")
+      if (!known_field(std::string(key.str())))
         throw InputError(path, line_of(value), where + "unknown field '" + std::string(key.str()) + "' " + kFields);
+    const toml::node* kind = t->get("kind");
+    if (kind && !kind->is_string())
+      throw InputError(path, line_of(*kind), where + "kind must be \"delaunay\" or \"voronoi\"");
     const toml::node* name = t->get("name");
     const toml::node* command = t->get("command");
     if (!name || !name->is_string())
@@ -120,7 +140,10 @@ std::vector<CommandPeer> read_toml(const std::string& path, const std::string& s
     } else {
       throw InputError(path, line_of(*command), where + "command must be a string or an array of strings");
     }
-    peers.push_back(entry_peer(path, line_of(*command), i, std::string(*name->value<std::string_view>()), field));
+    add_entry(path,
+              {line_of(*command), i, std::string(*name->value<std::string_view>()),
+               kind ? std::string(*kind->value<std::string_view>()) : "delaunay", field},
+              voronoi_check, peers);
   }
   return peers;
 }
@@ -134,9 +157,9 @@ bool is_toml(const std::string& path) {
 
 }  // namespace
 
-std::vector<CommandPeer> read_peers_file(const std::string& path) {
+PeersFile read_peers_file(const std::string& path, const VoronoiPeerCheck& voronoi_check) {
   const std::string text = read_whole(path);
-  return is_toml(path) ? read_toml(path, text) : read_json(path, text);
+  return is_toml(path) ? read_toml(path, text, voronoi_check) : read_json(path, text, voronoi_check);
 }
 
 }  // namespace dtlab

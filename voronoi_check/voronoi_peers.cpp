@@ -14,6 +14,7 @@
 #include "oracle/peer_exchange.hpp"
 #include "oracle/temp_dir.hpp"
 #include "voronoi_check/cell_exchange.hpp"
+#include "voronoi_check/voronoi_peer_command.hpp"
 
 #ifndef DTLAB_VORONOI_PEER_BINARY
 #define DTLAB_VORONOI_PEER_BINARY "dtlab_voronoi_peer"
@@ -98,20 +99,24 @@ const std::vector<std::string>& voronoi_peer_names() {
 
 bool is_voronoi_peer_name(const std::string& name) {
   const auto& k = voronoi_peer_names();
-  return std::find(k.begin(), k.end(), name) != k.end();
+  return std::find(k.begin(), k.end(), name) != k.end() || find_voronoi_command_peer(name).has_value();
 }
 
 std::vector<std::string> expand_voronoi_peer_names(const std::vector<std::string>& names) {
   std::vector<std::string> out;
   for (const auto& n : names) {
-    if (n == "all") {
+    if (n == "all") {  // the built-in peers and the commands (voronoi_peer_command.hpp)
       out.insert(out.end(), voronoi_peer_names().begin(), voronoi_peer_names().end());
+      for (const auto& c : voronoi_command_peer_names()) out.push_back(c);
       continue;
     }
-    bool known = false;
-    for (const auto& k : voronoi_peer_names()) known |= k == n;
-    if (!known) throw std::invalid_argument("unknown Voronoi peer '" + n + "' (known: voro++, scipy-voronoi, "
-                                            "qvoronoi, cgal-dual, dtlab:naive|epsilon|adaptive|exact, all)");
+    if (!is_voronoi_peer_name(n)) {
+      std::string commands;
+      for (const auto& c : voronoi_command_peer_names()) commands += ", " + c;
+      throw std::invalid_argument("unknown Voronoi peer '" + n + "' (known: voro++, scipy-voronoi, qvoronoi, "
+                                  "cgal-dual, dtlab:naive|epsilon|adaptive|exact" + commands +
+                                  ", all; or --voronoi-peer NAME=COMMAND)");
+    }
     out.push_back(n);
   }
   return out;
@@ -120,6 +125,7 @@ std::vector<std::string> expand_voronoi_peer_names(const std::vector<std::string
 VoronoiPeerRun run_voronoi_peer(const std::string& name, std::span<const Point3> sites, const vor::Box& box,
                                 const VoronoiPeerOptions& options) {
   expand_voronoi_peer_names({name});
+  if (const auto c = find_voronoi_command_peer(name)) return run_voronoi_command_peer(*c, sites, box, options);
   VoronoiPeerRun run;
   run.name = name;
   TempDir dir("dtlab-vpeer");
@@ -144,6 +150,7 @@ VoronoiPeerRun run_voronoi_peer(const std::string& name, std::span<const Point3>
 
 std::string voronoi_peer_version(const std::string& name, const VoronoiPeerOptions& options) {
   expand_voronoi_peer_names({name});
+  if (const auto c = find_voronoi_command_peer(name)) return "command: " + command_text(c->argv);
   TempDir dir("dtlab-vpeer");
   const std::string log = dir.file("log.txt");
   std::vector<std::string> argv = command(name, options);
