@@ -1,9 +1,11 @@
 // CGAL lives here only: conversion, input validation and one corefinement per cell.
 #include "fracture/cell_boolean.hpp"
 #include "fracture/deadline_visitor.hpp"
+#include "kernel/parallel_for.hpp"
 
 #include <algorithm>
 #include <future>
+#include <optional>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -14,6 +16,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -135,10 +138,138 @@ bool box_inside(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b) {
   return a.xmin() >= b.xmin() && a.ymin() >= b.ymin() && a.zmin() >= b.zmin() && a.xmax() <= b.xmax() &&
          a.ymax() <= b.ymax() && a.zmax() <= b.zmax();
 }
+
+// --- The band boolean: a cell corefined with only the mesh triangles near its surface.
+using Side = CGAL::Side_of_triangle_mesh<Mesh, K>;
+using Face = Mesh::Face_index;
+using Soup = std::vector<std::array<std::size_t, 3>>;
+
+CGAL::Bbox_3 face_box(const Mesh& m, Face f) {
+  CGAL::Bbox_3 b;
+  for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) b += m.point(v).bbox();
+  return b;
+}
+
+// The mesh triangles that meet the cell's box, parted exactly: `crossing`, whose box
+// meets a cell triangle (a superset of those meeting the cell's surface); `inside`,
+// the others strictly inside the cell. The rest lie strictly outside. Triangles that
+// meet no cell triangle form components that lie wholly on one side: one point test
+// per component, none for a component next to a triangle outside the cell's box.
+struct Band {
+  std::vector<Face> crossing, inside;
+};
+Band band_of(const Mesh& sm, const Tree& tree, const CGAL::Bbox_3& box, const Tree& cell_tree, const Side& cell_side) {
+  std::vector<Face> near;
+  tree.all_intersected_primitives(box, std::back_inserter(near));
+  std::sort(near.begin(), near.end());
+  enum : std::uint8_t { far = 0, crossing, unseen, done };
+  std::vector<std::uint8_t> state(sm.number_of_faces(), far);
+  Band band;
+  for (Face f : near) {
+    const bool cross = cell_tree.do_intersect(face_box(sm, f));
+    if (cross) band.crossing.push_back(f);
+    state[f.idx()] = cross ? crossing : unseen;
+  }
+  for (Face f : near) {
+    if (state[f.idx()] != unseen) continue;
+    std::vector<Face> comp{f};
+    state[f.idx()] = done;
+    bool outside = false;
+    for (std::size_t k = 0; k < comp.size(); ++k) {
+      for (auto h : CGAL::halfedges_around_face(sm.halfedge(comp[k]), sm)) {
+        const Face g = sm.face(sm.opposite(h));
+        if (state[g.idx()] == far) {
+          outside = true;  // g misses the cell's box, so does their shared edge
+        } else if (state[g.idx()] == unseen) {
+          state[g.idx()] = done;
+          comp.push_back(g);
+        }
+      }
+    }
+    if (!outside && cell_side(sm.point(sm.target(sm.halfedge(f)))) == CGAL::ON_BOUNDED_SIDE)
+      band.inside.insert(band.inside.end(), comp.begin(), comp.end());
+  }
+  std::sort(band.inside.begin(), band.inside.end());
+  return band;
+}
+
+// The crossing triangles as a mesh of their own; empty where a vertex would be
+// non-manifold in it (a fan split by the band's edge).
+std::optional<Mesh> band_mesh(const Mesh& sm, const std::vector<Face>& faces) {
+  Mesh s;
+  std::vector<Mesh::Vertex_index> id(sm.number_of_vertices(), Mesh::null_vertex());
+  for (Face f : faces) {
+    std::array<Mesh::Vertex_index, 3> t;
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
+      if (id[v.idx()] == Mesh::null_vertex()) id[v.idx()] = s.add_vertex(sm.point(v));
+      t[k++] = id[v.idx()];
+    }
+    if (s.add_face(t[0], t[1], t[2]) == Mesh::null_face()) return std::nullopt;
+  }
+  return s;
+}
+
+// The faces of m whose patch (bounded by constrained edges) `side` puts inside, judged
+// at one face's centroid per patch; false if a centroid lies on the other surface
+// (a coplanar contact: the caller falls back to CGAL's boolean).
+template <class SideOf>
+bool kept_faces(const Mesh& m, const Mesh::Property_map<Mesh::Edge_index, bool>& constrained, SideOf&& side,
+                std::vector<Face>& keep) {
+  std::vector<std::size_t> patch(m.number_of_faces());
+  const auto fcc = CGAL::make_property_map(patch);
+  const std::size_t n = PMP::connected_components(m, fcc, CGAL::parameters::edge_is_constrained_map(constrained));
+  std::vector<int> inside(n, -1);
+  for (Face f : m.faces()) {
+    int& in = inside[patch[f.idx()]];
+    if (in < 0) {
+      const auto h = m.halfedge(f);
+      const P3 c = CGAL::centroid(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))));
+      const CGAL::Bounded_side s = side(c);
+      if (s == CGAL::ON_BOUNDARY) return false;
+      in = s == CGAL::ON_BOUNDED_SIDE;
+    }
+    if (in) keep.push_back(f);
+  }
+  return true;
+}
+
+void add_faces(const Mesh& m, const std::vector<Face>& faces, std::vector<P3>& points, Soup& soup) {
+  std::vector<std::size_t> id(m.number_of_vertices(), SIZE_MAX);
+  for (Face f : faces) {
+    std::array<std::size_t, 3> t{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) {
+      if (id[v.idx()] == SIZE_MAX) {
+        id[v.idx()] = points.size();
+        points.push_back(m.point(v));
+      }
+      t[k++] = id[v.idx()];
+    }
+    soup.push_back(t);
+  }
+}
+
+// The soup welded by exact point equality; empty if it is not a closed polygon mesh.
+std::optional<Mesh> closed_mesh(std::vector<P3>& points, Soup& soup) {
+  Mesh out;
+  if (soup.empty()) return out;
+  PMP::merge_duplicate_points_in_polygon_soup(points, soup);
+  if (!PMP::is_polygon_soup_a_polygon_mesh(soup)) return std::nullopt;
+  PMP::polygon_soup_to_polygon_mesh(points, soup, out);
+  if (!CGAL::is_closed(out)) return std::nullopt;
+  return out;
+}
 }  // namespace
 
 struct MeshClipper::Impl {
   PieceMesh intersect_with(const Mesh& m, const VoronoiCell& c) const;
+  bool intersect_band(const VoronoiCell& c, PieceMesh& piece) const;
+  std::vector<std::uint32_t> band_pass(const std::vector<std::uint32_t>& ids, const std::vector<VoronoiCell>& cells,
+                                       std::vector<PieceMesh>& out, unsigned threads) const;
+  void finish_piece(const Mesh& out, const VoronoiCell& c, PieceMesh& piece) const;
+  CGAL::Bounded_side side_of_mesh(const P3& p) const;
+  void report_progress() const;
   void split(const Mesh& m, std::vector<std::uint32_t> ids, const std::vector<VoronoiCell>& cells,
              std::vector<PieceMesh>& out, unsigned threads) const;
 
@@ -154,6 +285,8 @@ struct MeshClipper::Impl {
   mutable std::size_t done = 0, total = 0;  // of the running intersect_all, under progress_mutex
   bool tally = false;
   mutable ExactFT tally_sum = 0;  // under progress_mutex
+  bool band_booleans = true;
+  mutable ClipStats stats;  // of the last intersect_all
   ExactFT mesh_volume6 = 0;
 };
 
@@ -212,8 +345,84 @@ std::vector<PieceMesh> MeshClipper::intersect_all(const std::vector<VoronoiCell>
     impl_->total = ids.size();
     impl_->tally_sum = 0;
   }
-  impl_->split(impl_->sm, std::move(ids), cells, out, threads);
+  std::vector<std::uint32_t> rest = impl_->band_booleans ? impl_->band_pass(ids, cells, out, threads) : ids;
+  impl_->stats = {ids.size() - rest.size(), rest.size()};
+  impl_->split(impl_->sm, std::move(rest), cells, out, threads);
   return out;
+}
+
+void MeshClipper::set_band_booleans(bool on) { impl_->band_booleans = on; }
+MeshClipper::ClipStats MeshClipper::last_stats() const { return impl_->stats; }
+
+// Every cell through the band boolean, in parallel (each writes only its own piece);
+// returns the cells it left to the box splits, in order.
+std::vector<std::uint32_t> MeshClipper::Impl::band_pass(const std::vector<std::uint32_t>& ids,
+                                                        const std::vector<VoronoiCell>& cells,
+                                                        std::vector<PieceMesh>& out, unsigned threads) const {
+  std::vector<char> done_here(ids.size(), 0);
+  parallel_for(ids.size(), threads, 1, [&](std::size_t k, unsigned) {
+    try {
+      done_here[k] = intersect_band(cells[ids[k]], out[ids[k]]);
+    } catch (const BooleanTimeout& e) {
+      throw std::runtime_error("cell " + std::to_string(ids[k]) + ": " + e.what());
+    }
+    if (done_here[k]) report_progress();
+  });
+  std::vector<std::uint32_t> rest;
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    if (!done_here[k]) rest.push_back(ids[k]);
+  return rest;
+}
+
+CGAL::Bounded_side MeshClipper::Impl::side_of_mesh(const P3& p) const {
+  std::lock_guard<std::mutex> lock(side_mutex);
+  return (*side)(p);
+}
+
+void MeshClipper::Impl::report_progress() const {
+  if (!progress) return;
+  std::lock_guard<std::mutex> g(progress_mutex);
+  progress(++done, total);
+}
+
+// Mesh ∩ cell from the band: the crossing triangles corefined with the cell, their
+// patches inside the cell, the cell's patches inside the mesh, and the triangles
+// strictly inside the cell as they are. False (piece untouched) where a patch touches
+// the other surface in a face (coplanar) or the result is not a closed polygon mesh.
+bool MeshClipper::Impl::intersect_band(const VoronoiCell& c, PieceMesh& piece) const {
+  const Mesh cell0 = cell_mesh(c);
+  const Tree cell_tree(faces(cell0).first, faces(cell0).second, cell0);
+  const Side cell_side(cell_tree);
+  const Band band = band_of(sm, tree, PMP::bbox(cell0), cell_tree, cell_side);
+  std::vector<P3> points;
+  Soup soup;
+  add_faces(sm, band.inside, points, soup);
+  bool skipped = band.crossing.empty();
+  if (skipped) {
+    // Nothing meets the cell's surface: the cell is inside the mesh or outside it.
+    if (side_of_mesh(cell0.point(*cell0.vertices().begin())) == CGAL::ON_BOUNDED_SIDE) {
+      const std::vector<Face> all(cell0.faces().begin(), cell0.faces().end());
+      add_faces(cell0, all, points, soup);
+    }
+  } else {
+    std::optional<Mesh> s = band_mesh(sm, band.crossing);
+    if (!s) return false;
+    Mesh cell = cell0;
+    const auto ecm_s = s->add_property_map<Mesh::Edge_index, bool>("e:constrained", false).first;
+    const auto ecm_c = cell.add_property_map<Mesh::Edge_index, bool>("e:constrained", false).first;
+    PMP::corefine(*s, cell, CGAL::parameters::edge_is_constrained_map(ecm_s).visitor(DeadlineVisitor<Mesh>(budget)),
+                  CGAL::parameters::edge_is_constrained_map(ecm_c));
+    std::vector<Face> keep_s, keep_c;
+    if (!kept_faces(*s, ecm_s, cell_side, keep_s)) return false;
+    if (!kept_faces(cell, ecm_c, [&](const P3& p) { return side_of_mesh(p); }, keep_c)) return false;
+    add_faces(*s, keep_s, points, soup);
+    add_faces(cell, keep_c, points, soup);
+  }
+  const std::optional<Mesh> out = closed_mesh(points, soup);
+  if (!out) return false;
+  piece.boolean_skipped = skipped && !soup.empty();
+  finish_piece(*out, c, piece);
+  return true;
 }
 
 void MeshClipper::Impl::split(const Mesh& m, std::vector<std::uint32_t> ids, const std::vector<VoronoiCell>& cells,
@@ -225,10 +434,7 @@ void MeshClipper::Impl::split(const Mesh& m, std::vector<std::uint32_t> ids, con
     for (auto i : ids) {
       try {
         out[i] = intersect_with(m, cells[i]);
-        if (progress) {
-          std::lock_guard<std::mutex> g(progress_mutex);
-          progress(++done, total);
-        }
+        report_progress();
       } catch (const BooleanTimeout& e) {
         throw std::runtime_error("cell " + std::to_string(i) + ": " + e.what());
       }
@@ -297,12 +503,7 @@ PieceMesh MeshClipper::Impl::intersect_with(const Mesh& m, const VoronoiCell& c)
   Mesh out;
   if (!tree.do_intersect(box)) {
     // No mesh triangle comes near the cell: it lies wholly inside or wholly outside.
-    CGAL::Bounded_side s;
-    {
-      std::lock_guard<std::mutex> lock(side_mutex);
-      s = (*side)(P3(c.centroid.x, c.centroid.y, c.centroid.z));
-    }
-    if (s != CGAL::ON_BOUNDED_SIDE) return piece;
+    if (side_of_mesh(P3(c.centroid.x, c.centroid.y, c.centroid.z)) != CGAL::ON_BOUNDED_SIDE) return piece;
     out = cell;
     piece.boolean_skipped = true;
   } else if (m.number_of_faces() == 0) {
@@ -312,6 +513,14 @@ PieceMesh MeshClipper::Impl::intersect_with(const Mesh& m, const VoronoiCell& c)
     if (!intersect_within(a, cell, out, budget))
       throw std::runtime_error("corefinement failed for a cell");
   }
+  finish_piece(out, c, piece);
+  return piece;
+}
+
+// The piece's triangles rounded to doubles, its exact volume into the tally, and its
+// cut faces marked.
+void MeshClipper::Impl::finish_piece(const Mesh& out, const VoronoiCell& c, PieceMesh& piece) const {
+  const CGAL::Bbox_3 box = cell_box(c);
   piece.mesh = to_triangles(out);
   if (tally) {
     const ExactFT v = exact_volume6(out);
@@ -349,7 +558,6 @@ PieceMesh MeshClipper::Impl::intersect_with(const Mesh& m, const VoronoiCell& c)
       }
     }
   }
-  return piece;
 }
 
 }  // namespace dtlab

@@ -70,7 +70,19 @@ class MeshClipper {
   // the longest axis of their sites' spread) and each half first cuts the mesh down to
   // the box around its cells, so a cell meets only the mesh near it. Halves run on
   // up to `threads` threads (0: all hardware threads).
+  // Each cell is first tried alone against the band of mesh triangles near its surface
+  // (those strictly inside it copied, the rest left out: a corefinement of a few
+  // thousand triangles instead of the whole mesh), cells on up to `threads` threads;
+  // where a patch touches the other surface in a face (coplanar contact) or the result
+  // is not closed, the cell goes to the box splits above. The pieces do not depend on
+  // the thread count.
   std::vector<PieceMesh> intersect_all(const std::vector<VoronoiCell>& cells, unsigned threads = 0) const;
+  // Off: every cell through the box splits (the comparison of the tests).
+  void set_band_booleans(bool on);
+  struct ClipStats {
+    std::size_t band = 0, boxes = 0;  // cells of the last intersect_all done each way
+  };
+  ClipStats last_stats() const;
 
  private:
   struct Impl;

@@ -79,6 +79,7 @@ PieceTets tetrahedralize_piece(const TriangleMesh& surface, const TetgenRunOptio
     case ChildStatus::not_started: throw std::runtime_error("tetgen: " + c.message);
     case ChildStatus::timed_out:
       throw std::runtime_error("tetgen timed out after " + shortest(options.timeout_s) + " s");
+    case ChildStatus::output_limit: throw std::runtime_error("tetgen wrote past its output limit");
     case ChildStatus::signaled:
       throw std::runtime_error("tetgen killed by signal " + std::to_string(c.signal) + ": " +
                                last_line_of(dir.file("log")));

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "fracture/cell_weld.hpp"
 #include "fracture/fracture.hpp"
 #include "fracture/piece_io.hpp"
 #include "sampling/bumpy_torus.hpp"
@@ -161,13 +162,54 @@ TEST_CASE("open or non-manifold input is refused with a reason") {
   CHECK_THROWS(fracture_mesh(none, o));
 }
 
-TEST_CASE("box-split booleans give the same pieces as whole-mesh booleans") {
-  // 70 cells: the cells are split into boxes (more than 16 per leaf) before the
-  // per-cell corefinements; each piece must match the corefinement with the whole mesh.
+namespace {
+TriangleMesh torus_48x24() {
   BumpyTorusParams bp;
   bp.nu = 48;
   bp.nv = 24;
-  const TriangleMesh torus = make_bumpy_torus(bp);
+  return make_bumpy_torus(bp);
+}
+
+// The Voronoi cells of `count` sampled sites in the mesh's box grown by 5%.
+VoronoiDiagram sampled_cells(const MeshClipper& clipper, std::size_t count, std::uint64_t seed) {
+  MeshSampler sampler(clipper.mesh());
+  SampleRequest req;
+  req.count = count;
+  req.seed = seed;
+  const auto sites = sampler.sample(req).points;
+  VoronoiOptions vo;
+  Box3 mb = bounding_box(clipper.mesh());
+  vo.box = vor::Box{mb.lo - 0.05 * mb.extent(), mb.hi + 0.05 * mb.extent()};
+  return compute_voronoi(sites, vo);
+}
+
+// Cell by cell, `a` and `b` hold the same pieces: both empty or both closed, with
+// volumes within 1e-12 of the mesh's and cut areas within 1e-9. Returns a's volume.
+double same_pieces(const std::vector<PieceMesh>& a, const std::vector<PieceMesh>& b, double mesh_volume) {
+  REQUIRE(a.size() == b.size());
+  double total = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    INFO("cell " << i);
+    Piece p, q;
+    p.geometry = a[i];
+    q.geometry = b[i];
+    CHECK(p.geometry.mesh.triangles.empty() == q.geometry.mesh.triangles.empty());
+    if (q.geometry.mesh.triangles.empty()) continue;
+    CHECK(closed_manifold(p.geometry.mesh));
+    measure_piece(p);
+    measure_piece(q);
+    CHECK(std::abs(p.volume - q.volume) <= 1e-12 * mesh_volume);
+    CHECK(std::abs(p.interior_area - q.interior_area) <= 1e-9 * q.interior_area);
+    total += p.volume;
+  }
+  return total;
+}
+}  // namespace
+
+TEST_CASE("box-split booleans give the same pieces as whole-mesh booleans") {
+  // 70 cells: the cells are split into boxes (more than 16 per leaf) before the
+  // per-cell corefinements; each piece must match the corefinement with the whole mesh.
+  const TriangleMesh torus = torus_48x24();
   FractureOptions o;
   o.pieces = 70;
   o.seed = 4;
@@ -175,32 +217,39 @@ TEST_CASE("box-split booleans give the same pieces as whole-mesh booleans") {
   auto r = fracture_mesh(torus, o);
   check_fracture(r, 40);
   MeshClipper clipper(torus);
-  MeshSampler sampler(clipper.mesh());
-  SampleRequest req;
-  req.count = 70;
-  req.seed = 4;
-  const auto sites = sampler.sample(req).points;
-  VoronoiOptions vo;
-  Box3 mb = bounding_box(clipper.mesh());
-  vo.box = vor::Box{mb.lo - 0.05 * mb.extent(), mb.hi + 0.05 * mb.extent()};
-  const VoronoiDiagram vd = compute_voronoi(sites, vo);
+  const VoronoiDiagram vd = sampled_cells(clipper, 70, 4);
+  clipper.set_band_booleans(false);
   const auto split = clipper.intersect_all(vd.cells, 2);
-  REQUIRE(split.size() == vd.cells.size());
-  double total = 0;
-  for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+  CHECK(clipper.last_stats().band == 0);
+  std::vector<PieceMesh> whole;
+  for (const auto& c : vd.cells) whole.push_back(clipper.intersect(c));
+  const double total = same_pieces(split, whole, clipper.volume());
+  CHECK(std::abs(total - clipper.volume()) <= 1e-9 * clipper.volume());
+}
+
+TEST_CASE("band booleans: the pieces of the box splits, exactly tiling, the same at any thread count") {
+  const TriangleMesh torus = torus_48x24();
+  MeshClipper clipper(torus);
+  ScaledCells welded{sampled_cells(clipper, 40, 5), {}};
+  weld_shared_corners(welded, 1e-12 * norm(bounding_box(torus).extent()));  // as fracture_mesh: an exact tiling
+  const VoronoiDiagram& vd = welded.diagram;
+  clipper.set_exact_tally(true);
+  const auto one = clipper.intersect_all(vd.cells, 1);
+  const MeshClipper::ClipStats stats = clipper.last_stats();
+  CHECK(stats.band + stats.boxes == vd.cells.size());
+  CHECK(stats.band >= vd.cells.size() - 2);  // the organic torus has no coplanar contact
+  CHECK(clipper.exact_tally().holds);
+  const auto three = clipper.intersect_all(vd.cells, 3);
+  for (std::size_t i = 0; i < one.size(); ++i) {
     INFO("cell " << i);
-    Piece a, b;
-    a.geometry = split[i];
-    b.geometry = clipper.intersect(vd.cells[i]);
-    CHECK(a.geometry.mesh.triangles.empty() == b.geometry.mesh.triangles.empty());
-    if (b.geometry.mesh.triangles.empty()) continue;
-    CHECK(closed_manifold(a.geometry.mesh));
-    measure_piece(a);
-    measure_piece(b);
-    CHECK(std::abs(a.volume - b.volume) <= 1e-12 * clipper.volume());
-    CHECK(std::abs(a.interior_area - b.interior_area) <= 1e-9 * b.interior_area);
-    total += a.volume;
+    CHECK(one[i].mesh.triangles == three[i].mesh.triangles);
+    CHECK(one[i].mesh.vertices == three[i].mesh.vertices);
+    CHECK(one[i].cut_tag == three[i].cut_tag);
   }
+  clipper.set_band_booleans(false);
+  const auto boxes = clipper.intersect_all(vd.cells, 2);
+  CHECK(clipper.exact_tally().holds);
+  const double total = same_pieces(one, boxes, clipper.volume());
   CHECK(std::abs(total - clipper.volume()) <= 1e-9 * clipper.volume());
 }
 

@@ -329,7 +329,8 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
              recurse: Iterable[int] = (), recurse_pieces: int = 4, sites: Any = None,
              impact: Sequence[float] | None = None, impact_radius: float = 0.0, site_noise: float = 0.0,
              island_split: bool = True, cell_scale: Sequence[float] = (1.0, 1.0, 1.0),
-             density: float = 1.0, progress: ProgressArg = None) -> Pieces:
+             density: float = 1.0, exact_tiling: bool = False, tets: bool = False, tetgen: str = "tetgen",
+             progress: ProgressArg = None) -> Pieces:
     """Voronoi fracture of a closed triangle mesh into closed pieces.
 
     `pieces` sites are sampled inside the mesh (sampler "winding", "sdf" or "rays",
@@ -343,7 +344,12 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
     "mesh-vertices": a seeded subset of `pieces` vertices), impact (x, y, z) with
     impact_radius (sites crowd around it), site_noise (jitter relative to the box
     diagonal), island_split (False: a cell's disconnected chunks stay one piece),
-    cell_scale (anisotropic cells), density (the manifest's mass and mass_inertia).
+    cell_scale (anisotropic cells), density (the manifest's mass and mass_inertia),
+    exact_tiling (--exact-tiling: prove in exact arithmetic that the unrounded pieces'
+    volumes sum to the mesh's, manifest["volume_identity"]["exact_tiling"]; not with a
+    margin), tets (--tets: every piece tetrahedralized by TetGen, `tetgen` the program,
+    into Piece.tet_points / Piece.tets and manifest["tets"]; RuntimeError if TetGen
+    fails or a piece's tets miss its surface's exact volume).
     progress: None, True (a tqdm bar) or progress(done, total, "fracture:booleans"),
     called after each cell's boolean (from the worker that did it, with the GIL).
     """
@@ -353,10 +359,11 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
                              _count(recurse_pieces, "--recurse-pieces"),
                              *_site_source(sites), None if impact is None else _triple(impact, "--impact"),
                              float(impact_radius), float(site_noise), bool(island_split),
-                             _triple(cell_scale, "--cell-scale"), float(density), bar.callback)
+                             _triple(cell_scale, "--cell-scale"), float(density), bool(exact_tiling), bool(tets),
+                             str(tetgen), bar.callback)
     out = Pieces(Piece(p["vertices"], p["faces"], p["cut"], p["cut_tag"], float(p["volume"]), tuple(p["centroid"]),
                        tuple(p["site"]), float(p["interior_area"]), p["neighbors"], int(p["parent"]),
-                       int(p["site_index"]), int(p["island"]))
+                       int(p["site_index"]), int(p["island"]), p.get("tet_points"), p.get("tets"))
                  for p in raw["pieces"])
     out.manifest = raw["manifest"]
     out.mesh_volume = float(raw["manifest"]["mesh_volume"])

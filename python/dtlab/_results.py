@@ -292,7 +292,10 @@ class Piece:
     (or wall) whose bisector it lies on; volume, centroid, site, interior_area (area
     of the cut faces), neighbors (pieces sharing a cut face), parent (the top-level
     piece it was split from by `recurse`, else -1), site_index (its site among its
-    level's) and island (its place among that site's islands, largest first).
+    level's) and island (its place among that site's islands, largest first). With
+    fracture(..., tets=True): tet_points (q, 3), the piece's vertices first, bit for bit,
+    then TetGen's Steiner points, and tets (m, 4) indices into them in dtlab's orientation
+    (orient3d(a, b, c, d) > 0, i.e. det(b - a, c - a, d - a) < 0); else None.
     """
 
     vertices: np.ndarray
@@ -307,6 +310,8 @@ class Piece:
     parent: int
     site_index: int = -1
     island: int = 0
+    tet_points: np.ndarray | None = None
+    tets: np.ndarray | None = None
 
 
 class Pieces(list[Piece], _Summary):

@@ -6,6 +6,7 @@
 
 #include "fracture/fracture.hpp"
 #include "fracture/piece_io.hpp"
+#include "fracture/piece_tets.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/json_to_python.hpp"
 #include "python/src/numpy_io.hpp"
@@ -49,14 +50,32 @@ SiteOptions site_options(const std::string& source, py::handle sites, std::optio
   return s;
 }
 
+// The CLI's --tets: every piece through TetGen (without the GIL), the tets into the
+// manifest; a TetGen failure or tets off their surface's exact volume raise RuntimeError.
+std::vector<PieceTets> piece_tets(const FractureResult& r, const std::string& tetgen, nlohmann::json& manifest) {
+  std::vector<PieceTets> tets;
+  {
+    py::gil_scoped_release nogil;
+    TetgenRunOptions to;
+    to.binary = tetgen;
+    tets = tetrahedralize_pieces(r, to);  // std::runtime_error naming the piece
+  }
+  add_tets_to_manifest(manifest, tets);
+  if (const std::size_t exact = manifest["tets"]["pieces_exact"].get<std::size_t>(); exact != tets.size())
+    throw std::runtime_error("tets: the tets of " + std::to_string(tets.size() - exact) +
+                             " pieces do not have their surface's exact volume");
+  return tets;
+}
+
 // {"pieces": [per piece: vertices, faces, cut, cut_tag, volume, centroid, site,
-// interior_area, neighbors, parent], "manifest": `dtlab fracture --json`'s manifest}.
+// interior_area, neighbors, parent (with tets: tet_points, tets)], "manifest": `dtlab
+// fracture --json`'s manifest}.
 py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std::uint64_t seed, double margin,
                   const std::string& sampler, bool blue_noise, unsigned threads,
                   const std::vector<std::size_t>& recurse, std::size_t recurse_pieces, const std::string& site_source,
                   py::handle sites, std::optional<std::array<double, 3>> impact, double impact_radius,
                   double site_noise, bool island_split, std::array<double, 3> cell_scale, double density,
-                  const py::object& progress) {
+                  bool exact_tiling, bool tets, const std::string& tetgen, const py::object& progress) {
   const auto method = parse_sample_method(sampler);
   if (!method || *method == SampleMethod::surface)
     throw py::value_error("--sampler must be rays, sdf or winding (a volume sampler)");
@@ -80,6 +99,7 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
     if (!(c >= 1e-6 && c <= 1e6)) throw py::value_error("--cell-scale: every factor must be in [1e-06 - 1e+06]");
   o.cell_scale = {cell_scale[0], cell_scale[1], cell_scale[2]};
   if (!(density > 0 && density <= 1e300)) throw py::value_error("--density: must be a positive number");
+  o.exact_tiling = exact_tiling;
   if (!progress.is_none()) {
     // Called from the boolean workers, one at a time (fracture/cell_boolean.cpp).
     o.progress = [call = python_callback(progress)](std::size_t done, std::size_t total) {
@@ -91,11 +111,19 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
     py::gil_scoped_release nogil;
     r = fracture_mesh(mesh, o);  // std::invalid_argument (not closed, ...) -> ValueError
   }
+  nlohmann::json manifest = fracture_manifest(r, density);
+  std::vector<PieceTets> tet_sets;
+  if (tets) tet_sets = piece_tets(r, tetgen, manifest);
   py::dict out;
-  out["manifest"] = json_to_python(fracture_manifest(r, density));
+  out["manifest"] = json_to_python(manifest);
   py::list list;
-  for (Piece& p : r.pieces) {
+  for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+    Piece& p = r.pieces[i];
     py::dict d;
+    if (tets) {
+      d["tet_points"] = points_to_numpy(std::move(tet_sets[i].points));
+      d["tets"] = to_numpy<std::uint32_t, 4>(std::move(tet_sets[i].tets));
+    }
     const std::vector<char>& cut = p.geometry.cut;
     py::array_t<bool> mask(static_cast<py::ssize_t>(cut.size()));
     bool* m = mask.mutable_data();
@@ -126,7 +154,8 @@ void bind_fracture(py::module_& m) {
         py::arg("recurse_pieces"), py::arg("site_source") = "sampler", py::arg("sites") = py::none(),
         py::arg("impact") = py::none(), py::arg("impact_radius") = 0.0, py::arg("site_noise") = 0.0,
         py::arg("island_split") = true, py::arg("cell_scale") = std::array<double, 3>{1, 1, 1},
-        py::arg("density") = 1.0, py::arg("progress") = py::none(),
+        py::arg("density") = 1.0, py::arg("exact_tiling") = false, py::arg("tets") = false,
+        py::arg("tetgen") = "tetgen", py::arg("progress") = py::none(),
         "Voronoi fracture of a closed mesh (see dtlab.fracture).");
 }
 

@@ -1,3 +1,6 @@
+import shutil
+from fractions import Fraction
+
 import numpy as np
 import pytest
 
@@ -84,3 +87,57 @@ def test_islands_and_site_sources():
         dtlab.fracture(v, f, impact=(1, 0, 0))
     with pytest.raises(ValueError):
         dtlab.fracture(v, f, cell_scale=(1, 2))
+
+
+def det3(a, b, c):
+    return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])
+
+
+def exact(rows):
+    return [[Fraction(float(x)) for x in r] for r in rows]
+
+
+def tets_volume6(points, tets):
+    """6 x the tets' volume in exact rational arithmetic (Fractions of the doubles)."""
+    total = Fraction(0)
+    for t in tets:
+        a, b, c, d = exact(points[list(t)])
+        total += det3(*([p[k] - a[k] for k in range(3)] for p in (b, c, d)))
+    return total
+
+
+def surface_volume6(vertices, faces):
+    """6 x the volume a closed surface bounds, exactly (sum of a . (b x c))."""
+    return sum((det3(*exact(vertices[list(t)])) for t in faces), Fraction(0))
+
+
+def test_exact_tiling_and_tets_as_the_cli():
+    v, f = dtlab.read_mesh("builtin")
+    proved = dtlab.fracture(v, f, pieces=5, seed=2, threads=2, exact_tiling=True)
+    tiling = proved.manifest["volume_identity"]["exact_tiling"]
+    assert tiling["holds"] is True and tiling["difference"] == 0
+    plain = dtlab.fracture(v, f, pieces=5, seed=2, threads=2)
+    assert "exact_tiling" not in plain.manifest["volume_identity"]
+    assert all(p.tets is None and p.tet_points is None for p in plain)
+    # With a gap no tiling is claimed (the CLI's --exact-tiling with --gap).
+    gap = dtlab.fracture(v, f, pieces=5, seed=2, margin=0.02, exact_tiling=True)
+    assert "exact_tiling" not in gap.manifest["volume_identity"]
+    if shutil.which("tetgen") is None:
+        pytest.skip("tetgen is not installed")
+    meshed = dtlab.fracture(v, f, pieces=3, seed=2, threads=2, tets=True)
+    assert meshed.manifest["tets"]["pieces_exact"] == meshed.manifest["tets"]["pieces"] == len(meshed)
+    for i, p in enumerate(meshed):
+        assert p.tets.shape[1] == 4 and p.tets.dtype == np.uint32 and len(p.tets) > 0
+        assert np.array_equal(p.tet_points[:len(p.vertices)], p.vertices)  # the surface bit for bit
+        assert meshed.manifest["pieces"][i]["tets"] == len(p.tets)
+        # Tets in dtlab's orientation (orient3d > 0: det(b - a, c - a, d - a) < 0) whose
+        # volumes add up to the piece's (checked here, not trusted).
+        o = p.tet_points[p.tets[:, 0]]
+        det = np.einsum("ij,ij->i", p.tet_points[p.tets[:, 1]] - o,
+                        np.cross(p.tet_points[p.tets[:, 2]] - o, p.tet_points[p.tets[:, 3]] - o))
+        assert (det < 0).all()
+        assert abs(-det.sum() / 6 - p.volume) <= 1e-12 * p.volume
+    first = meshed[0]  # the exact check on one piece (Fractions are slow)
+    assert -tets_volume6(first.tet_points, first.tets) == surface_volume6(first.vertices, first.faces)
+    with pytest.raises(RuntimeError, match="tetgen"):
+        dtlab.fracture(v, f, pieces=2, seed=2, tets=True, tetgen="/nonexistent/tetgen")
