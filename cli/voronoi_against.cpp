@@ -48,14 +48,15 @@ std::vector<std::string> parse_voronoi_peers(const std::string& list) {
 
 int judge_voronoi_peers(const std::vector<Point3>& sites, const VoronoiDiagram& diagram, const VoronoiAgainst& a,
                         bool json, nlohmann::json& out) {
-  const VoronoiCheckReport ours = check_voronoi(sites, diagram.box, tool_cells_of(diagram));
+  VoronoiPeerOptions o;
+  o.timeout_s = a.timeout;
+  o.check.dt = diagram.dt;  // null unless our DT came from exact predicates: then built by the checker
+  const VoronoiCheckReport ours = check_voronoi(sites, diagram.box, tool_cells_of(diagram), o.check);
   out["exact_check"] = to_json(ours);
   if (!json) {
     const std::string counts = voronoi_counts_text(ours);
     std::printf("dtlab: %s%s\n", voronoi_verdict_name(ours.verdict), counts.empty() ? "" : (" (" + counts + ")").c_str());
   }
-  VoronoiPeerOptions o;
-  o.timeout_s = a.timeout;
   out["peers"] = nlohmann::json::object();
   bool all_answered = true;
   Progress progress("voronoi", a.quiet);
