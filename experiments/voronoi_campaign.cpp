@@ -120,8 +120,8 @@ void shrink_and_save_voronoi(VoronoiCase& c, const std::vector<Point3>& points, 
       {"minimal", c.shrunk_minimal},
       {"shrink_stopped_by", c.shrink_stop},
       {"shrunk_verdict_fresh", voronoi_verdict_name(c.shrunk_verdict)},
-      {"command", "dtlab voronoi " + c.corpus_file + " --against " + c.peer + voronoi_peer_definition_arguments(c.peer) +
-                      " --json"},
+      {"command", "dtlab voronoi " + c.corpus_file + " --against " + c.peer +
+                      voronoi_peer_definition_arguments(c.peer) + " --json"},
       {"original_command", original_command},
   };
   if (c.run.report) j["original_report"] = to_json(*c.run.report);
@@ -152,8 +152,8 @@ std::vector<VoronoiCase> run_voronoi_campaign(const VoronoiCampaignOptions& o) {
     if (c.failed() && o.shrink && !o.out_dir.empty()) {
       const std::string cmd = "dtlab fuzz --target " + c.peer + " --family " + c.source + " --case " +
                               std::to_string(c.index) + " --seed " + std::to_string(o.seed) + " --min-points " +
-                              std::to_string(o.min_points) + " --points " + std::to_string(o.max_points) + " --out DIR" +
-                              voronoi_peer_definition_arguments(c.peer);
+                              std::to_string(o.min_points) + " --points " + std::to_string(o.max_points) +
+                              " --out DIR" + voronoi_peer_definition_arguments(c.peer);
       shrink_and_save_voronoi(c, points, o.peer_options, o.shrink_budget, o.out_dir, cmd);
     }
     if (c.run.report) c.run.report->witnesses.clear();  // counts and largest faces kept
