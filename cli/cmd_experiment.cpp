@@ -15,12 +15,12 @@
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "cli/peer_definitions.hpp"
-#include "oracle/peer_command.hpp"
-#include "voronoi_check/voronoi_peer_command.hpp"
 #include "cli/stdout_to_stderr.hpp"
 #include "experiments/benchmark.hpp"
 #include "experiments/leaderboard.hpp"
 #include "experiments/thesis_failures.hpp"
+#include "oracle/peer_command.hpp"
+#include "voronoi_check/voronoi_peer_command.hpp"
 
 namespace dtlab::cli {
 

@@ -202,9 +202,10 @@ void add_voronoi_command(CLI::App& app, int& rc) {
       ->check(number_in(0.05, 1))->capture_default_str();
   sub->add_flag("--no-obj", args->no_obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
-  sub->add_option("--against", args->against,
-                  "Voronoi peers to judge with the exact checker, clipped to the same box: none, all, or a comma list of "
-                  "voro++, scipy-voronoi, qvoronoi, cgal-dual, dtlab:naive|epsilon|adaptive|exact, or a --voronoi-peer")
+  sub->add_option(
+         "--against", args->against,
+         "Voronoi peers to judge with the exact checker, clipped to the same box: none, all, or a comma list of "
+         "voro++, scipy-voronoi, qvoronoi, cgal-dual, dtlab:naive|epsilon|adaptive|exact, or a --voronoi-peer")
       ->capture_default_str();
   args->defined.add_to(*sub, "--peers", PeerKinds::voronoi);
   sub->add_option("--timeout", args->timeout, "seconds before a peer counts as hung")->check(number_in(0.001, 1e6))->capture_default_str();

@@ -38,9 +38,10 @@ void PeerDefinitionArgs::add_to(CLI::App& app, const std::string& file_option, P
                    "{out}.json cells file it writes; {sites}: voro++'s input (id x y z) in the file {out} "
                    "(repeatable; README: Judge your own code)")
         ->type_name("NAME=COMMAND");
-  app.add_option(file_option, files,
-                 "a JSON or TOML (.toml) file of peers: {\"peers\": [{\"name\": ..., \"command\": ..., \"kind\": "
-                 "\"delaunay\" | \"voronoi\"}]}, or one [[peers]] table (name = ..., command = ..., kind = ...) per peer")
+  app.add_option(
+         file_option, files,
+         "a JSON or TOML (.toml) file of peers: {\"peers\": [{\"name\": ..., \"command\": ..., \"kind\": "
+         "\"delaunay\" | \"voronoi\"}]}, or one [[peers]] table (name = ..., command = ..., kind = ...) per peer")
       ->type_name("FILE");
 }
 

@@ -22,7 +22,9 @@ using nlohmann::json;
 // A cells file larger than this is refused before it is parsed (a runaway peer).
 constexpr std::uintmax_t kMaxCellsFile = std::uintmax_t{2} << 30;
 
-[[noreturn]] void fail(const std::string& where, const std::string& why) { throw std::runtime_error(where + ": " + why); }
+[[noreturn]] void fail(const std::string& where, const std::string& why) {
+  throw std::runtime_error(where + ": " + why);
+}
 
 std::string read_capped(const std::string& path) {
   std::error_code ec;
@@ -107,7 +109,8 @@ void json_faces(const json& faces, const std::string& where, CellParts& c) {
     const json& loop = json_array(faces[f], at);
     if (loop.size() < 3) fail(at, "a face needs at least 3 vertices, got " + std::to_string(loop.size()));
     for (std::size_t k = 0; k < loop.size(); ++k)
-      c.corners.push_back(static_cast<std::uint32_t>(json_integer(loop[k], at + "[" + std::to_string(k) + "]", 0, nv - 1)));
+      c.corners.push_back(
+          static_cast<std::uint32_t>(json_integer(loop[k], at + "[" + std::to_string(k) + "]", 0, nv - 1)));
     c.offsets.push_back(static_cast<std::uint32_t>(c.corners.size()));
   }
 }
@@ -123,7 +126,8 @@ void json_cell(const json& j, const std::string& where, CellParts& c) {
   c.site = json_integer(j["site"], where + ".site", 0, std::numeric_limits<std::int64_t>::max());
   const json& vs = json_array(j["vertices"], where + ".vertices");
   if (vs.size() > std::numeric_limits<std::uint32_t>::max()) fail(where + ".vertices", "too many vertices");
-  for (std::size_t k = 0; k < vs.size(); ++k) c.vertices.push_back(json_point(vs[k], where + ".vertices[" + std::to_string(k) + "]"));
+  for (std::size_t k = 0; k < vs.size(); ++k)
+    c.vertices.push_back(json_point(vs[k], where + ".vertices[" + std::to_string(k) + "]"));
   json_faces(j["faces"], where + ".faces", c);
   const json& nb = json_array(j["neighbors"], where + ".neighbors");
   if (nb.size() != c.offsets.size() - 1)
@@ -177,7 +181,8 @@ class VolLine {
       const std::size_t e = std::min(w.find(',', b), w.size() - 1);
       T v{};
       const auto [end, ec] = std::from_chars(w.data() + b, w.data() + e, v);
-      if (ec != std::errc() || end != w.data() + e) fail(where_, std::string(what) + ": not a number in '" + w.substr(0, 40) + "'");
+      if (ec != std::errc() || end != w.data() + e)
+        fail(where_, std::string(what) + ": not a number in '" + w.substr(0, 40) + "'");
       out.push_back(v);
       b = e + 1;
     }
@@ -205,13 +210,14 @@ void vol_cell(VolLine& in, const std::string& where, CellParts& c) {
   }
   const auto nf = in.integer("the face count", 0, std::numeric_limits<std::uint32_t>::max());
   for (std::int64_t k = 0; k < nf; ++k)
-    c.neighbors.push_back(static_cast<std::int32_t>(in.integer("a neighbour id", std::numeric_limits<std::int32_t>::min(),
-                                                               std::numeric_limits<std::int32_t>::max())));
+    c.neighbors.push_back(static_cast<std::int32_t>(in.integer(
+        "a neighbour id", std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max())));
   for (std::int64_t k = 0; k < nf; ++k) {
     const std::vector<std::int64_t> loop = in.tuple<std::int64_t>("a face (a,b,c,...)");
     if (loop.size() < 3) fail(where, "a face with fewer than 3 vertices");
     for (auto v : loop) {
-      if (v < 0 || v >= nv) fail(where, "face vertex " + std::to_string(v) + " out of range (" + std::to_string(nv) + " vertices)");
+      if (v < 0 || v >= nv)
+        fail(where, "face vertex " + std::to_string(v) + " out of range (" + std::to_string(nv) + " vertices)");
       c.corners.push_back(static_cast<std::uint32_t>(v));
     }
     c.offsets.push_back(static_cast<std::uint32_t>(c.corners.size()));

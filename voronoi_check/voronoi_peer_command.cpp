@@ -51,17 +51,18 @@ void check_voronoi_template(const std::string& name, const std::vector<std::stri
         throw std::invalid_argument(peer + "unknown placeholder '" + key +
                                     "' (use {in}, {sites}, {out}, {box}, {xmin} .. {zmax})");
       if (key == "{box}" && a != key)
-        throw std::invalid_argument(peer + "{box} must be a whole argument (it becomes six); use {xmin} .. {zmax} in words");
+        throw std::invalid_argument(peer +
+                                    "{box} must be a whole argument (it becomes six); use {xmin} .. {zmax} in words");
       in |= key == "{in}", out |= key == "{out}", sites |= key == "{sites}";
     }
-  if (!in && !sites)
-    throw std::invalid_argument(peer + "the command has no {in} or {sites} (where the sites go)");
+  if (!in && !sites) throw std::invalid_argument(peer + "the command has no {in} or {sites} (where the sites go)");
   if (!out && !sites)
     throw std::invalid_argument(peer + "the command has no {out} (the prefix of the {out}.json it writes)");
 }
 
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (std::size_t i = s.find(from); i != std::string::npos; i = s.find(from, i + to.size())) s.replace(i, from.size(), to);
+  for (std::size_t i = s.find(from); i != std::string::npos; i = s.find(from, i + to.size()))
+    s.replace(i, from.size(), to);
   return s;
 }
 
@@ -190,8 +191,8 @@ VoronoiPeerRun run_voronoi_command_peer(const CommandPeer& peer, std::span<const
   const std::string log = dir.file("log.txt"), in = dir.file("in.node"), out = dir.file("out");
   if (uses(peer, "{in}")) write_node(in, std::vector<Point3>(sites.begin(), sites.end()));
   if (uses(peer, "{sites}")) write_sites_text(out, sites);
-  ChildLimits limits = ChildLimits::of(options.timeout_s, log,
-                                       options.memory_bytes ? options.memory_bytes : default_peer_memory());
+  ChildLimits limits =
+      ChildLimits::of(options.timeout_s, log, options.memory_bytes ? options.memory_bytes : default_peer_memory());
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
   limits.memory_bytes = 0;  // as for the Delaunay command peers (oracle/peer_command.cpp)
 #endif

@@ -113,9 +113,10 @@ std::vector<std::string> expand_voronoi_peer_names(const std::vector<std::string
     if (!is_voronoi_peer_name(n)) {
       std::string commands;
       for (const auto& c : voronoi_command_peer_names()) commands += ", " + c;
-      throw std::invalid_argument("unknown Voronoi peer '" + n + "' (known: voro++, scipy-voronoi, qvoronoi, "
-                                  "cgal-dual, dtlab:naive|epsilon|adaptive|exact" + commands +
-                                  ", all; or --voronoi-peer NAME=COMMAND)");
+      throw std::invalid_argument("unknown Voronoi peer '" + n +
+                                  "' (known: voro++, scipy-voronoi, qvoronoi, "
+                                  "cgal-dual, dtlab:naive|epsilon|adaptive|exact" +
+                                  commands + ", all; or --voronoi-peer NAME=COMMAND)");
     }
     out.push_back(n);
   }
