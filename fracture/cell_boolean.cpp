@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <future>
-#include <optional>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <tuple>
@@ -414,7 +414,8 @@ bool MeshClipper::Impl::intersect_band(const VoronoiCell& c, PieceMesh& piece) c
                   CGAL::parameters::edge_is_constrained_map(ecm_c));
     std::vector<Face> keep_s, keep_c;
     if (!kept_faces(*s, ecm_s, cell_side, keep_s)) return false;
-    if (!kept_faces(cell, ecm_c, [&](const P3& p) { return side_of_mesh(p); }, keep_c)) return false;
+    const auto mesh_side = [&](const P3& p) { return side_of_mesh(p); };
+    if (!kept_faces(cell, ecm_c, mesh_side, keep_c)) return false;
     add_faces(*s, keep_s, points, soup);
     add_faces(cell, keep_c, points, soup);
   }
