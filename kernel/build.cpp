@@ -44,11 +44,7 @@ BuildResult build_delaunay(std::vector<Point3>&& points, const PredicateSpec& sp
   AdaptiveStats stages;
   if (auto* adaptive = std::get_if<AdaptivePredicates>(&*choice); adaptive && options.count_stages)
     adaptive->stats = &stages;
-  // The threaded build is proven with symbolic perturbation only (identity tests, TSan).
-  // Without it, degenerate input made a thread write a tet it does not hold (the debug
-  // build's claim assertion in flip 3-2, kernel/README.md): such builds run on one thread.
-  BuildOptions opt = options;
-  if (!spec.perturb) opt.threads = 1;
+  const BuildOptions& opt = options;
   BuildResult r = visit_backend(*choice, spec.perturb,
                                 [&](const auto& preds) { return build_with(std::move(points), preds, opt); });
   for (int s = 0; s < static_cast<int>(AdaptiveStage::kCount); ++s) {

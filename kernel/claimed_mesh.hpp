@@ -12,11 +12,16 @@
 //     insertion is all or nothing, and what it read cannot change before it ends);
 //   - dead slots stay owned by the thread that freed them (its pool, reused by its later
 //     insertions, never within the one that freed them), as do the fresh slots of its
-//     current block, so no other thread can reach a dead or unwritten record.
+//     current block, so no other thread can reach a dead or unwritten record;
+//   - a walk that starts away from its hint probes only the slots handed out before the
+//     pass began (attach()): a block taken during the pass is counted in the shared size
+//     before its owner bytes are written, and its unwritten records must not be taken.
 #include <algorithm>
 #include <atomic>
 #include <cassert>
 #include <cstdint>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "kernel/id_stack.hpp"
@@ -38,10 +43,12 @@ class ClaimedMesh {
 
   ClaimedMesh(SharedTets& tets, std::uint8_t id) : shared_(&tets), me_(id) { attach(); }
 
-  // Refreshes the storage's addresses (after it grew; no insertion in progress).
+  // Refreshes the storage's addresses (after it grew) and the slots a walk may start
+  // at: those handed out so far, all written. Only while no thread uses the storage.
   void attach() {
     rec_ = shared_->records();
     own_ = shared_->owners();
+    published_ = shared_->size();
   }
 
   std::uint32_t size() const { return shared_->size(); }
@@ -100,12 +107,15 @@ class ClaimedMesh {
     saved_.push_back(rec_[t]);
   }
 
-  // A live tet, claimed, to start a walk at: `hint` if it can be taken, else slots drawn
-  // from `random`, else the first takeable one from there on. Between insertions a thread
-  // holds no live tet, so a slot it already owns is dead (its pool or block): skipped.
+  // A live tet, claimed, to start a walk at: `hint` (a slot this thread wrote: a tet of
+  // its last insertion) if it can be taken, else slots drawn from `random` among the
+  // published ones (attach()), else the first takeable one from there on. Between
+  // insertions a thread holds no live tet, so a slot it already owns is dead (its pool
+  // or block): skipped.
   std::uint32_t walk_start(std::uint32_t hint, std::uint32_t random) {
-    const std::uint32_t n = size();
+    const std::uint32_t n = published_;
     if (try_take_live(hint)) return hint;
+    if (n == 0) throw ClaimConflict{};
     for (int k = 0; k < 64; ++k) {
       random = random * 1664525u + 1013904223u;
       const std::uint32_t t = static_cast<std::uint32_t>((std::uint64_t(random) * n) >> 32);
@@ -141,6 +151,16 @@ class ClaimedMesh {
     clear();
   }
 
+  std::uint8_t id() const { return me_; }
+  // No insertion in progress: the view holds no live tet.
+  bool idle() const { return claimed_.empty() && created_.empty() && destroyed_.empty(); }
+  // f(t) for each slot this view keeps for later tets: its pool and the rest of its block.
+  template <class F>
+  void for_each_spare(F&& f) const {
+    for (const std::uint32_t t : pool_) f(t);
+    for (std::uint32_t t = fresh_; t < fresh_end_; ++t) f(t);
+  }
+
   // End of the build: the unused slots of the current block become dead records (the
   // compaction reads every slot handed out).
   void finish() {
@@ -160,7 +180,8 @@ class ClaimedMesh {
     if (owner.load(std::memory_order_relaxed) != 0 ||
         !owner.compare_exchange_strong(free, me_, std::memory_order_acquire, std::memory_order_relaxed))
       return false;
-    if (rec_[t].v[0] == kNone) {  // never true while the protocol holds; defensive
+    if (rec_[t].v[0] == kNone) {  // never true while the protocol holds
+      assert(!"a free published slot is dead");
       release(t);
       return false;
     }
@@ -184,8 +205,46 @@ class ClaimedMesh {
   std::uint8_t me_;
   IdStack pool_;                             // dead slots this thread owns
   std::uint32_t fresh_ = 0, fresh_end_ = 0;  // the current block of fresh slots
+  std::uint32_t published_ = 0;              // slots handed out before this pass
   IdStack claimed_, created_, destroyed_;    // this insertion's tets
   std::vector<TetRecord> saved_;             // claimed_[k]'s record before the insertion
 };
+
+// The protocol's state between passes (no thread running), for the debug builds' check
+// after every pass and for tests: each slot handed out is either a spare slot (pool or
+// unused block) of exactly one view, owned by it, or a live free tet whose neighbours are
+// live and point back. "" or the first defect found. O(slots).
+inline std::string ownership_defect(const SharedTets& store, std::span<const ClaimedMesh* const> views) {
+  const std::uint32_t n = store.size();
+  const TetRecord* rec = store.records();
+  const std::uint8_t* own = store.owners();
+  std::vector<std::uint8_t> spare(n, 0);
+  std::string defect;
+  const auto note = [&](std::uint32_t t, const char* what) {
+    if (defect.empty()) defect = "slot " + std::to_string(t) + ": " + what;
+  };
+  for (const ClaimedMesh* v : views) {
+    if (!v->idle()) note(0, "a view is inside an insertion");
+    v->for_each_spare([&](std::uint32_t t) {
+      if (t >= n)
+        note(t, "a spare slot beyond the slots handed out");
+      else if (spare[t]++)
+        note(t, "a spare slot kept twice");
+      else if (own[t] != v->id())
+        note(t, "a spare slot not owned by the view that keeps it");
+    });
+  }
+  for (std::uint32_t t = 0; t < n && defect.empty(); ++t) {
+    if (spare[t]) continue;
+    if (own[t] != 0) note(t, "a tet held between insertions");
+    if (rec[t].v[0] == kNone) note(t, "a dead slot in no pool");
+    for (int f = 0; f < 4; ++f) {
+      const std::uint32_t a = rec[t].adj[f];
+      if (a != kNone && (a >> 2 >= n || spare[a >> 2] || rec[a >> 2].adj[a & 3] != 4 * t + f))
+        note(t, "an adjacency that does not point back");
+    }
+  }
+  return defect;
+}
 
 }  // namespace dtlab

@@ -10,10 +10,12 @@
 // named failure stops every thread at its next point.
 #include <algorithm>
 #include <atomic>
+#include <cassert>
 #include <cstdint>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -166,6 +168,7 @@ class ParallelInsertion {
       }
       ++i;
     }
+    audit();
     return true;
   }
 
@@ -223,13 +226,27 @@ class ParallelInsertion {
       conflicts_ += conflicts[w];
     }
     for (Range& range : ranges) deferred.insert(deferred.end(), range.deferred.begin(), range.deferred.end());
-    if (!failure) return true;
+    if (!failure) {
+      audit();
+      return true;
+    }
     log.failure = std::move(failure);
     for (Range& range : ranges)
       log.skipped.insert(log.skipped.end(), list.begin() + static_cast<std::ptrdiff_t>(range.cursor),
                          list.begin() + static_cast<std::ptrdiff_t>(range.end));
     log.skipped.insert(log.skipped.end(), deferred.begin(), deferred.end());
     return false;
+  }
+
+  // Debug builds: the claim protocol's state after every pass that ended without a
+  // failure (kernel/claimed_mesh.hpp, ownership_defect).
+  void audit() const {
+#ifndef NDEBUG
+    std::vector<const ClaimedMesh*> views;
+    for (const auto& w : workers_) views.push_back(&w->mesh());
+    const std::string defect = ownership_defect(store_, views);
+    assert(defect.empty() && "the claim protocol's state after a pass");
+#endif
   }
 
   void grow() { store_.grow(store_.capacity() + store_.capacity() / 2 + ClaimedMesh::kBlock * workers_.size()); }

@@ -8,6 +8,7 @@
 // reach are never resident, and growth is a realloc (an mremap for large blocks: no copy,
 // no second buffer at the peak).
 #include <atomic>
+#include <cassert>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -45,8 +46,13 @@ class SharedTets {
       if (got == 0) return 0;
     } while (!size_.compare_exchange_weak(s, s + got, std::memory_order_relaxed));
     first = s;
-    for (std::uint32_t t = s; t < s + got; ++t)
-      std::atomic_ref<std::uint8_t>(owners_[t]).store(owner, std::memory_order_relaxed);
+    // The slots counted in size_ but not yet marked are free to a probe that reaches
+    // them; exchange instead of store, so that debug builds see any probe that did.
+    for (std::uint32_t t = s; t < s + got; ++t) {
+      [[maybe_unused]] const std::uint8_t before =
+          std::atomic_ref<std::uint8_t>(owners_[t]).exchange(owner, std::memory_order_relaxed);
+      assert(before == 0 && "a fresh slot was taken before its block was marked");
+    }
     return got;
   }
 
