@@ -38,6 +38,7 @@
 // with a named failure instead.
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 #include <utility>
 
@@ -47,6 +48,7 @@
 #include "kernel/id_stack.hpp"
 #include "kernel/ids.hpp"
 #include "kernel/facet_key.hpp"
+#include "kernel/mesh_check.hpp"
 #include "kernel/tet_mesh.hpp"
 
 namespace dtlab {
@@ -105,6 +107,13 @@ class Inserter {
   BuildStats& stats() { return stats_; }
   FailureKind failure() const { return failure_; }
   const std::string& failure_detail() const { return detail_; }
+  // Debug builds: check_combinatorics (kernel/mesh_check.hpp) after every flip and every
+  // insertion when `on` or DTLAB_CHECK_COMBINATORICS=1 (serial mesh only; `points`: the
+  // number of point ids). Release builds compile the checks out and ignore this.
+  void check_combinatorics(bool on, std::size_t points) {
+    if (!on) on = std::getenv("DTLAB_CHECK_COMBINATORICS") && *std::getenv("DTLAB_CHECK_COMBINATORICS") == '1';
+    check_points_ = on && kMeshChecksCompiled && !Mesh::kClaims ? static_cast<std::uint32_t>(points) : 0;
+  }
   void reserve(std::size_t points) {
     if constexpr (!Mesh::kClaims) mesh_.reserve(7 * points + 64);
     stack_.reserve(1024);
@@ -141,9 +150,26 @@ class Inserter {
         return Outcome::duplicate;
       }
     flip14(t, p);
-    if (!restore_delaunay(p, !on_boundary)) return Outcome::failed;
+    if (!checked("flip 1-4") || !restore_delaunay(p, !on_boundary) || !checked("the insertion", true))
+      return Outcome::failed;
     ++stats_.inserted;
     return Outcome::inserted;
+  }
+
+  // The mesh check after a flip or insertion (check_combinatorics above): a broken
+  // invariant fails the build as inconsistent-adjacency, naming it. All tets positive
+  // only after an insertion: a flip may leave flat tets that later flips remove.
+  bool checked(const char* after, bool all_positive = false) {
+    if constexpr (kMeshChecksCompiled && !Mesh::kClaims) {
+      if (check_points_ == 0) return true;
+      ++stats_.mesh_checks;
+      const std::uint64_t calls = geo_.orient_calls;  // the check's calls are not the build's
+      const std::string e = dtlab::check_combinatorics(mesh_, geo_, check_points_, all_positive);
+      geo_.orient_calls = calls;
+      if (!e.empty())
+        return fail(FailureKind::inconsistent_adjacency, std::string("check_combinatorics after ") + after + ": " + e);
+    }
+    return true;
   }
 
   std::uint32_t next_random() {
@@ -349,7 +375,7 @@ class Inserter {
     }
     last_ = n[(i + 1) & 3];
     ++stats_.flips23;
-    return true;
+    return checked("flip 2-3");
   }
 
   // Flip 3-2 (case 2) on the edge yz of T opposite p and x = T[x_pos]: T, Ta and
@@ -391,7 +417,7 @@ class Inserter {
     mesh_.link(Facet(made[0], yz[1]), Facet(made[1], yz[0]));
     last_ = made[0];
     ++stats_.flips32;
-    return true;
+    return checked("flip 3-2");
   }
 
   // Flip 4-4 (case 3): p, d and the edge yz of T (opposite p and x = T[x_pos]) are
@@ -484,7 +510,7 @@ class Inserter {
     mesh_.link(Facet(mn[0], n1s[1]), Facet(mn[1], n1s[0]));
     last_ = mt[0];
     ++stats_.flips44;
-    return true;
+    return checked("flip 4-4");
   }
 
   Mesh mesh_;
@@ -496,6 +522,7 @@ class Inserter {
   FailureKind failure_ = FailureKind::walk_cycle;
   std::string detail_;
   std::uint32_t found_ = kNone;
+  std::uint32_t check_points_ = 0;  // 0: no mesh checks (check_combinatorics)
 };
 
 }  // namespace dtlab
