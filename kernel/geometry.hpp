@@ -131,8 +131,10 @@ class Geometry {
 
  private:
   Sign raw_insphere(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, std::uint32_t e) {
-    if constexpr (PerturbingBackend<B>) return to_sign(pred_.base.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]));
-    else return to_sign(pred_.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]));
+    if constexpr (PerturbingBackend<B>)
+      return to_sign(pred_.base.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]));
+    else
+      return to_sign(pred_.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]));
   }
 
   // p on the plane of the hull facet (x,y,z), whose O side is negative.

@@ -44,10 +44,10 @@
 
 #include "kernel/build.hpp"
 #include "kernel/claimed_mesh.hpp"
+#include "kernel/facet_key.hpp"
 #include "kernel/geometry.hpp"
 #include "kernel/id_stack.hpp"
 #include "kernel/ids.hpp"
-#include "kernel/facet_key.hpp"
 #include "kernel/mesh_check.hpp"
 #include "kernel/tet_mesh.hpp"
 
@@ -319,7 +319,7 @@ class Inserter {
     if (neg + zero != 1) return true;                                             // none now
     if (const std::uint32_t n = third_tet(r, x); n != kNone) return flip32(r, x, n);  // case 2
     if (zero == 0) return true;                                                   // none now
-    if (geo_.orientation(mesh_.verts(r.t)) == Sign::zero) return flip23(r);                // case 4
+    if (geo_.orientation(mesh_.verts(r.t)) == Sign::zero) return flip23(r);       // case 4
     return flip44(r, x, p);                                                       // case 3
   }
 

@@ -39,7 +39,8 @@ inline std::vector<Point3> degenerate_family(int family, int n, std::mt19937_64&
       for (int x = -5; x <= 5; ++x)
         for (int y = -5; y <= 5; ++y)
           for (int z = -5; z <= 5; ++z)
-            if (x * x + y * y + z * z == 25 || x * x + y * y + z * z == 9) pts.push_back({double(x), double(y), double(z)});
+            if (x * x + y * y + z * z == 25 || x * x + y * y + z * z == 9)
+              pts.push_back({double(x), double(y), double(z)});
       std::shuffle(pts.begin(), pts.end(), rng);
   }
   return pts;

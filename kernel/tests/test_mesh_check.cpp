@@ -123,8 +123,10 @@ TEST_CASE("check_combinatorics after every flip: degenerate families and uniform
       INFO("family " << family << " perturb " << perturb);
       REQUIRE_FALSE(r.failure);
       CHECK(test::validate(r) == "");
-      if (kMeshChecksCompiled) CHECK(r.stats.mesh_checks >= 2 * (r.stats.inserted - 4));
-      else CHECK(r.stats.mesh_checks == 0);
+      if (kMeshChecksCompiled)
+        CHECK(r.stats.mesh_checks >= 2 * (r.stats.inserted - 4));
+      else
+        CHECK(r.stats.mesh_checks == 0);
     }
   BuildOptions opt;
   opt.check_combinatorics = true;
