@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 # Lets ccache reuse objects between clones of the repository.
 export CCACHE_BASEDIR := $(CURDIR)
 
-.PHONY: all setup configure build demo test test-slow asan tsan lint bench clean
+.PHONY: all setup configure build demo test test-clang test-slow asan tsan lint bench clean
 
 all: build
 
@@ -24,6 +24,15 @@ demo: build
 test: build
 	@ctest --test-dir $(BUILD) -LE slow -j $(JOBS) --output-on-failure
 	@LINT_REPORT=1 LINT_TIDY_MAX=6 BUILD=$(BUILD) bash scripts/lint
+
+# The second compiler: predicates and kernel built with clang++ (-O2 with assertions,
+# warnings as errors: the clang preset) and their non-slow tests run, the kernel's mesh
+# checks after every flip included. Not yet part of `make test`: its first build had not
+# finished when it was added (issue #25, item 5), so its time is unmeasured.
+test-clang: setup
+	@[ -f build/clang/build.ninja ] || cmake --preset clang >/dev/null
+	@cmake --build build/clang -j $(JOBS)
+	@ctest --test-dir build/clang -LE slow -j $(JOBS) --output-on-failure
 
 # clang-format on the changed lines, clang-tidy (function size, bug checks) on the
 # changed files; exit 1 on a finding (scripts/lint says how the base is chosen).

@@ -33,6 +33,10 @@ struct BuildOptions {
   // points: fewer threads, down to the serial insertion). Tests and fuzz campaigns set
   // it to 1 so that even small inputs run on every thread.
   std::size_t parallel_grain = 2048;
+  // Debug builds: check the whole mesh's invariants after every flip (kernel/mesh_check.hpp;
+  // DTLAB_CHECK_COMBINATORICS=1 does the same); serial builds only, slow (a pass over the
+  // mesh per flip). Release builds compile the check out and ignore this.
+  bool check_combinatorics = false;
 };
 
 // The runtime predicate choice: backend name (naive|epsilon|adaptive|exact),
@@ -65,6 +69,7 @@ struct BuildStats {
   std::uint64_t inserted = 0;
   std::uint64_t flips14 = 0, flips23 = 0, flips32 = 0, flips44 = 0;
   std::uint64_t walk_steps = 0;
+  std::uint64_t mesh_checks = 0;  // check_combinatorics passes run (debug builds)
   std::uint64_t orient3d_calls = 0, insphere_calls = 0;
   // Parallel build: insertions rolled back because another thread held a tet (their
   // flips and predicate calls are counted above), and the threads used.

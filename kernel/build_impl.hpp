@@ -205,6 +205,7 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
   if (threads <= 1) {
     Inserter<B> ins(pts.data(), pred, inf, opt.seed);
     ins.reserve(n);
+    ins.check_combinatorics(opt.check_combinatorics, pts.size());
     ins.start(first[0], first[1], first[2], first[3]);
     if (infinite) ins.stats().inserted = 4;
     for (std::uint32_t k = 0; k < n; ++k) {

@@ -56,19 +56,19 @@ class ClaimedMesh {
   bool dead(std::uint32_t t) const { return rec(t).v[0] == kNone; }
   const std::uint32_t* verts(std::uint32_t t) const { return rec(t).v; }
   std::uint32_t vertex(std::uint32_t t, int i) const { return rec(t).v[i]; }
-  std::uint32_t apex(std::uint32_t facet) const { return rec(facet >> 2).v[facet & 3]; }
-  std::uint32_t adj(std::uint32_t facet) const { return rec(facet >> 2).adj[facet & 3]; }
+  std::uint32_t apex(Facet facet) const { return rec(facet.tet()).v[facet.face()]; }
+  Facet adj(Facet facet) const { return rec(facet.tet()).adj[facet.face()]; }
   int index_of(std::uint32_t t, std::uint32_t v) const {
     const std::uint32_t* w = rec(t).v;
     return w[0] == v ? 0 : w[1] == v ? 1 : w[2] == v ? 2 : w[3] == v ? 3 : -1;
   }
 
   // f1 is a facet of a tet this thread holds; the tet of f2 is claimed before it is written.
-  void link(std::uint32_t f1, std::uint32_t f2) {
-    rec(f1 >> 2).adj[f1 & 3] = f2;
-    if (f2 != kNone) {
-      claim(f2 >> 2);
-      rec_[f2 >> 2].adj[f2 & 3] = f1;
+  void link(Facet f1, Facet f2) {
+    rec(f1.tet()).adj[f1.face()] = f2;
+    if (!f2.none()) {
+      claim(f2.tet());
+      rec_[f2.tet()].adj[f2.face()] = f1;
     }
   }
 
@@ -85,7 +85,7 @@ class ClaimedMesh {
       }
       t = fresh_++;
     }
-    rec_[t] = TetRecord{{a, b, c, d}, {kNone, kNone, kNone, kNone}};
+    rec_[t] = TetRecord{{a, b, c, d}, {}};
     created_.push_back(t);
     return t;
   }

@@ -36,6 +36,8 @@
 // decides; if it is p, p is outside; otherwise replace it by p and ask whether the
 // triangle keeps its orientation in the plane (inside) or flips (outside).
 //
+// Every answer is a Sign (predicates/sign.hpp), converted from the backend's int here.
+//
 // Counters: calls to orient3d and insphere are counted in plain members (one add in
 // a line the caller already holds; kernel/README.md has the measured cost).
 #include <cstdint>
@@ -43,6 +45,7 @@
 #include "kernel/ids.hpp"
 #include "predicates/adaptive.hpp"
 #include "predicates/backend.hpp"
+#include "predicates/sign.hpp"
 
 namespace dtlab {
 
@@ -71,14 +74,14 @@ class Geometry {
 
   std::uint64_t orient_calls = 0, insphere_calls = 0;
 
-  int orient3d(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+  Sign orient3d(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     ++orient_calls;
-    return pred_.orient3d(p_[a], p_[b], p_[c], p_[d]);
+    return to_sign(pred_.orient3d(p_[a], p_[b], p_[c], p_[d]));
   }
 
   // Orientation of the tet (a,b,c,d), the infinite vertex allowed anywhere:
-  // > 0 iff it is a valid (positively oriented) tet.
-  int orientation(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+  // positive iff it is a valid (positively oriented) tet.
+  Sign orientation(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     // An even permutation that moves inf to the last slot keeps the sign.
     if (a == inf_) return -orient_from_inside(d, c, b);  // (a,b,c,d) ~ (d,c,b,a)
     if (b == inf_) return -orient_from_inside(c, d, a);  // ~ (c,d,a,b)
@@ -86,27 +89,27 @@ class Geometry {
     if (d == inf_) return -orient_from_inside(a, b, c);
     return orient3d(a, b, c, d);
   }
-  int orientation(const std::uint32_t* v) { return orientation(v[0], v[1], v[2], v[3]); }
+  Sign orientation(const std::uint32_t* v) { return orientation(v[0], v[1], v[2], v[3]); }
 
   // orient3d(x, y, z, O) for the symbolic inner point O.
-  int orient_from_inside(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+  Sign orient_from_inside(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
     for (std::uint32_t w : first_)
-      if (const int s = orient3d(x, y, z, w)) return s;
-    return 0;
+      if (const Sign s = orient3d(x, y, z, w); s != Sign::zero) return s;
+    return Sign::zero;
   }
 
   // Does p conflict with the tet v (positively oriented, not containing p)?
   // side[k] receives the sign of orientation(v with v[k] replaced by p) where the
-  // backend's fused filter decided it on the way, kUndecided elsewhere.
-  bool conflict(const std::uint32_t* v, std::uint32_t p, int side[4]) {
-    side[0] = side[1] = side[2] = side[3] = kUndecided;
+  // backend's fused filter decided it on the way, FilterSign::undecided elsewhere.
+  bool conflict(const std::uint32_t* v, std::uint32_t p, FilterSign side[4]) {
+    side[0] = side[1] = side[2] = side[3] = FilterSign::undecided;
     const int k = v[0] == inf_ ? 0 : v[1] == inf_ ? 1 : v[2] == inf_ ? 2 : v[3] == inf_ ? 3 : -1;
     if (k < 0) {
       ++insphere_calls;
       if constexpr (FusedSidesBackend<B>) {
         const InsphereSides r = pred_.insphere_sides(p_[v[0]], p_[v[1]], p_[v[2]], p_[v[3]], p_[p]);
         side[0] = r.side[0], side[1] = r.side[1], side[2] = r.side[2], side[3] = r.side[3];
-        if (r.insphere != kUndecided) return r.insphere > 0;
+        if (decided(r.insphere)) return r.insphere == FilterSign::positive;
       }
       return pred_.insphere(p_[v[0]], p_[v[1]], p_[v[2]], p_[v[3]], p_[p]) > 0;
     }
@@ -117,31 +120,33 @@ class Geometry {
       case 2: x = v[1], y = v[0], z = v[3]; break;
       default: x = v[0], y = v[1], z = v[2]; break;
     }
-    const int side_of_hull = orient3d(x, y, z, p);
-    if (side_of_hull != 0) return side_of_hull > 0;
+    const Sign side_of_hull = orient3d(x, y, z, p);
+    if (side_of_hull != Sign::zero) return side_of_hull == Sign::positive;
     return in_hull_circle(x, y, z, p);
   }
   bool conflict(const std::uint32_t* v, std::uint32_t p) {
-    int side[4];
+    FilterSign side[4];
     return conflict(v, p, side);
   }
 
  private:
-  int raw_insphere(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, std::uint32_t e) {
-    if constexpr (PerturbingBackend<B>) return pred_.base.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]);
-    else return pred_.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]);
+  Sign raw_insphere(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, std::uint32_t e) {
+    if constexpr (PerturbingBackend<B>)
+      return to_sign(pred_.base.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]));
+    else
+      return to_sign(pred_.insphere(p_[a], p_[b], p_[c], p_[d], p_[e]));
   }
 
   // p on the plane of the hull facet (x,y,z), whose O side is negative.
   bool in_hull_circle(std::uint32_t x, std::uint32_t y, std::uint32_t z, std::uint32_t p) {
     ++insphere_calls;
-    int in = 0;
+    Sign in = Sign::zero;
     for (std::uint32_t w : first_)
-      if (const int side = orient3d(x, y, z, w)) {
+      if (const Sign side = orient3d(x, y, z, w); side != Sign::zero) {
         in = side * raw_insphere(x, y, z, w, p);
         break;
       }
-    if (in != 0) return in > 0;
+    if (in != Sign::zero) return in == Sign::positive;
     if constexpr (!PerturbingBackend<B>) {
       return false;
     } else {
@@ -157,8 +162,8 @@ class Geometry {
         std::uint32_t t[3] = {x, y, z};
         t[best] = p;
         // Same orientation seen from O as (x,y,z), which is negative: inside.
-        const int o = orient_from_inside(t[0], t[1], t[2]);
-        if (o != 0) return o < 0;
+        const Sign o = orient_from_inside(t[0], t[1], t[2]);
+        if (o != Sign::zero) return o == Sign::negative;
         q[best] = kNone;
       }
       return false;

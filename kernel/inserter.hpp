@@ -38,15 +38,17 @@
 // with a named failure instead.
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 #include <utility>
 
 #include "kernel/build.hpp"
 #include "kernel/claimed_mesh.hpp"
+#include "kernel/facet_key.hpp"
 #include "kernel/geometry.hpp"
 #include "kernel/id_stack.hpp"
 #include "kernel/ids.hpp"
-#include "kernel/facet_key.hpp"
+#include "kernel/mesh_check.hpp"
 #include "kernel/tet_mesh.hpp"
 
 namespace dtlab {
@@ -105,6 +107,13 @@ class Inserter {
   BuildStats& stats() { return stats_; }
   FailureKind failure() const { return failure_; }
   const std::string& failure_detail() const { return detail_; }
+  // Debug builds: check_combinatorics (kernel/mesh_check.hpp) after every flip and every
+  // insertion when `on` or DTLAB_CHECK_COMBINATORICS=1 (serial mesh only; `points`: the
+  // number of point ids). Release builds compile the checks out and ignore this.
+  void check_combinatorics(bool on, std::size_t points) {
+    if (!on) on = std::getenv("DTLAB_CHECK_COMBINATORICS") && *std::getenv("DTLAB_CHECK_COMBINATORICS") == '1';
+    check_points_ = on && kMeshChecksCompiled && !Mesh::kClaims ? static_cast<std::uint32_t>(points) : 0;
+  }
   void reserve(std::size_t points) {
     if constexpr (!Mesh::kClaims) mesh_.reserve(7 * points + 64);
     stack_.reserve(1024);
@@ -127,7 +136,7 @@ class Inserter {
         for (int j = i + 1; j < 5; ++j)
           for (int g = 0; g < 4; ++g)
             if (facet_key(mesh_.verts(tets[i]), f) == facet_key(mesh_.verts(tets[j]), g))
-              mesh_.link(4 * tets[i] + f, 4 * tets[j] + g);
+              mesh_.link(Facet(tets[i], f), Facet(tets[j], g));
   }
 
   Outcome insert_unclaimed(std::uint32_t p) {
@@ -141,9 +150,26 @@ class Inserter {
         return Outcome::duplicate;
       }
     flip14(t, p);
-    if (!restore_delaunay(p, !on_boundary)) return Outcome::failed;
+    if (!checked("flip 1-4") || !restore_delaunay(p, !on_boundary) || !checked("the insertion", true))
+      return Outcome::failed;
     ++stats_.inserted;
     return Outcome::inserted;
+  }
+
+  // The mesh check after a flip or insertion (check_combinatorics above): a broken
+  // invariant fails the build as inconsistent-adjacency, naming it. All tets positive
+  // only after an insertion: a flip may leave flat tets that later flips remove.
+  bool checked(const char* after, bool all_positive = false) {
+    if constexpr (kMeshChecksCompiled && !Mesh::kClaims) {
+      if (check_points_ == 0) return true;
+      ++stats_.mesh_checks;
+      const std::uint64_t calls = geo_.orient_calls;  // the check's calls are not the build's
+      const std::string e = dtlab::check_combinatorics(mesh_, geo_, check_points_, all_positive);
+      geo_.orient_calls = calls;
+      if (!e.empty())
+        return fail(FailureKind::inconsistent_adjacency, std::string("check_combinatorics after ") + after + ": " + e);
+    }
+    return true;
   }
 
   std::uint32_t next_random() {
@@ -171,7 +197,7 @@ class Inserter {
   // 1000 + 2 tets steps.
   bool locate(std::uint32_t p, std::uint32_t& out, bool& on_boundary) {
     std::uint32_t t = mesh_.walk_start(last_, Mesh::kClaims ? next_random() : 0);
-    std::uint32_t entry = kNone;
+    Facet entry = kNoFacet;
     const std::uint64_t max_steps = 1000 + 2 * std::uint64_t(mesh_.live());
     for (std::uint64_t step = 0; step < max_steps; ++step) {
       const std::uint32_t r = next_random();
@@ -180,17 +206,16 @@ class Inserter {
       const std::uint32_t* v = mesh_.verts(t);
       for (int k = 0; k < 4 && !moved; ++k) {
         const int f = (r + k) & 3;
-        if (4 * t + f == entry) continue;
+        if (Facet(t, f) == entry) continue;
         std::uint32_t w[4] = {v[0], v[1], v[2], v[3]};
         w[f] = p;
-        const int s = geo_.orientation(w);
-        on_boundary |= s == 0;
-        if (s < 0) {
-          const std::uint32_t nb = mesh_.adj(4 * t + f);
-          if (nb == kNone)
-            return fail(FailureKind::outside_boundary, "point lies outside the enclosing tetrahedron");
+        const Sign s = geo_.orientation(w);
+        on_boundary |= s == Sign::zero;
+        if (s == Sign::negative) {
+          const Facet nb = mesh_.adj(Facet(t, f));
+          if (nb.none()) return fail(FailureKind::outside_boundary, "point lies outside the enclosing tetrahedron");
           entry = nb;
-          t = nb >> 2;
+          t = nb.tet();
           mesh_.claim(t);
           moved = true;
         }
@@ -208,7 +233,7 @@ class Inserter {
   // is tet t with p at position i; Ta = (a,b,c,d) is tet ta across T's facet i, with
   // d at position ja; in_ta[j] is the position in Ta of T's vertex j (j != i), and
   // side[j] the orientation s_x of T with its vertex x = T[j] replaced by d
-  // (kUndecided until known).
+  // (FilterSign::undecided until known).
   struct Roles {
     std::uint32_t t;
     int i;
@@ -216,26 +241,26 @@ class Inserter {
     int ja;
     std::uint32_t d;
     int in_ta[4];
-    int side[4];
+    FilterSign side[4];
   };
 
   // s_x, from the fused filter's answer or asked now. T with x replaced by d and Ta
   // with x replaced by p are the same four points in orders of equal parity (T and Ta
   // induce opposite orientations on their common facet), so the filter's signs for Ta
   // are T's too.
-  int side(Roles& r, int j) {
-    if (r.side[j] == kUndecided) {
+  Sign side(Roles& r, int j) {
+    if (!decided(r.side[j])) {
       std::uint32_t w[4] = {mesh_.vertex(r.t, 0), mesh_.vertex(r.t, 1), mesh_.vertex(r.t, 2), mesh_.vertex(r.t, 3)};
       w[j] = r.d;
-      r.side[j] = geo_.orientation(w);
+      r.side[j] = to_filter_sign(geo_.orientation(w));
     }
-    return r.side[j];
+    return to_sign(r.side[j]);
   }
 
   // The tet N = (p,y,z,d) on T's facet j (opposite x = T[j]), if it exists.
   std::uint32_t third_tet(const Roles& r, int j) const {
-    const std::uint32_t f = mesh_.adj(4 * r.t + j);
-    return f != kNone && mesh_.apex(f) == r.d ? f >> 2 : kNone;
+    const Facet f = mesh_.adj(Facet(r.t, j));
+    return !f.none() && mesh_.apex(f) == r.d ? f.tet() : kNone;
   }
 
   // Pops facets opposite p until the stack is empty: every facet opposite p is then
@@ -249,16 +274,16 @@ class Inserter {
     const std::uint64_t max_flips = 1000 + 8 * std::uint64_t(mesh_.live());
     std::uint64_t flips = 0;
     while (!stack_.empty()) {
-      const std::uint32_t facet = stack_.back();
+      const Facet facet = stack_.back();
       stack_.pop_back();
       Roles r;
-      r.t = facet >> 2, r.i = facet & 3;
+      r.t = facet.tet(), r.i = facet.face();
       if (mesh_.dead(r.t) || mesh_.vertex(r.t, r.i) != p) continue;  // gone, or its slot reused
-      const std::uint32_t across = mesh_.adj(facet);
-      if (across == kNone) continue;  // the outside of a bigtet
-      r.ta = across >> 2, r.ja = across & 3;
+      const Facet across = mesh_.adj(facet);
+      if (across.none()) continue;  // the outside of a bigtet
+      r.ta = across.tet(), r.ja = across.face();
       mesh_.claim(r.ta);
-      int ta_side[4];
+      FilterSign ta_side[4];
       if (!geo_.conflict(mesh_.verts(r.ta), p, ta_side)) continue;
       if (++flips > max_flips)
         return fail(FailureKind::flip_stuck, "more than " + std::to_string(max_flips) + " flips");
@@ -269,7 +294,7 @@ class Inserter {
         r.in_ta[j] = mesh_.index_of(r.ta, mesh_.vertex(r.t, j));
         if (r.in_ta[j] < 0) return fail(FailureKind::inconsistent_adjacency, "neighbour lacks a vertex of the facet");
         r.side[j] = ta_side[r.in_ta[j]];
-        undecided |= r.side[j] == kUndecided;
+        undecided |= !decided(r.side[j]);
       }
       if (!flip_case(r, p, clean && undecided, clean)) return false;
     }
@@ -285,16 +310,16 @@ class Inserter {
     int neg = 0, zero = 0, x = -1;
     for (int j = 0; j < 4 && neg + zero < 2; ++j) {
       if (j == r.i) continue;
-      const int s = side(r, j);
-      if (s < 0) ++neg, x = j;
-      if (s == 0) ++zero, x = j;
+      const Sign s = side(r, j);
+      if (s == Sign::negative) ++neg, x = j;
+      if (s == Sign::zero) ++zero, x = j;
     }
     if (zero) clean = false;
     if (neg == 0 && zero == 0) return flip23(r);                                  // case 1
     if (neg + zero != 1) return true;                                             // none now
     if (const std::uint32_t n = third_tet(r, x); n != kNone) return flip32(r, x, n);  // case 2
     if (zero == 0) return true;                                                   // none now
-    if (geo_.orientation(mesh_.verts(r.t)) == 0) return flip23(r);                // case 4
+    if (geo_.orientation(mesh_.verts(r.t)) == Sign::zero) return flip23(r);       // case 4
     return flip44(r, x, p);                                                       // case 3
   }
 
@@ -302,8 +327,9 @@ class Inserter {
   // p (k = 0..3). N_k's facet k is t's old facet k; its facet l (l != k) is N_l's facet
   // k. Pushes the four facets opposite p.
   void flip14(std::uint32_t t, std::uint32_t p) {
-    std::uint32_t tv[4], outer[4], n[4];
-    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(t, k), outer[k] = mesh_.adj(4 * t + k);
+    std::uint32_t tv[4], n[4];
+    Facet outer[4];
+    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(t, k), outer[k] = mesh_.adj(Facet(t, k));
     mesh_.destroy(t);
     for (int k = 0; k < 4; ++k) {
       std::uint32_t w[4] = {tv[0], tv[1], tv[2], tv[3]};
@@ -311,9 +337,9 @@ class Inserter {
       n[k] = mesh_.create(w[0], w[1], w[2], w[3]);
     }
     for (int k = 0; k < 4; ++k) {
-      mesh_.link(4 * n[k] + k, outer[k]);
-      for (int l = k + 1; l < 4; ++l) mesh_.link(4 * n[k] + l, 4 * n[l] + k);
-      stack_.push_back(4 * n[k] + k);
+      mesh_.link(Facet(n[k], k), outer[k]);
+      for (int l = k + 1; l < 4; ++l) mesh_.link(Facet(n[k], l), Facet(n[l], k));
+      stack_.push_back(Facet(n[k], k));
     }
     last_ = n[0];
     ++stats_.flips14;
@@ -325,10 +351,11 @@ class Inserter {
   // three facets opposite p.
   bool flip23(const Roles& r) {
     const int i = r.i;
-    std::uint32_t tv[4], outer_t[4], outer_ta[4];
-    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(r.t, k), outer_t[k] = mesh_.adj(4 * r.t + k);
+    std::uint32_t tv[4];
+    Facet outer_t[4], outer_ta[4];
+    for (int k = 0; k < 4; ++k) tv[k] = mesh_.vertex(r.t, k), outer_t[k] = mesh_.adj(Facet(r.t, k));
     for (int k = 0; k < 4; ++k)
-      if (k != i) outer_ta[k] = mesh_.adj(4 * r.ta + r.in_ta[k]);
+      if (k != i) outer_ta[k] = mesh_.adj(Facet(r.ta, r.in_ta[k]));
     mesh_.destroy(r.t);
     mesh_.destroy(r.ta);
     std::uint32_t n[4];
@@ -340,15 +367,15 @@ class Inserter {
     }
     for (int k = 0; k < 4; ++k) {
       if (k == i) continue;
-      mesh_.link(4 * n[k] + k, outer_t[k]);
-      mesh_.link(4 * n[k] + i, outer_ta[k]);
+      mesh_.link(Facet(n[k], k), outer_t[k]);
+      mesh_.link(Facet(n[k], i), outer_ta[k]);
       for (int l = k + 1; l < 4; ++l)
-        if (l != i) mesh_.link(4 * n[k] + l, 4 * n[l] + k);
-      stack_.push_back(4 * n[k] + i);
+        if (l != i) mesh_.link(Facet(n[k], l), Facet(n[l], k));
+      stack_.push_back(Facet(n[k], i));
     }
     last_ = n[(i + 1) & 3];
     ++stats_.flips23;
-    return true;
+    return checked("flip 2-3");
   }
 
   // Flip 3-2 (case 2) on the edge yz of T opposite p and x = T[x_pos]: T, Ta and
@@ -363,14 +390,14 @@ class Inserter {
     int yz[2], q = 0;
     for (int k = 0; k < 4; ++k)
       if (k != i && k != x_pos) yz[q++] = k;
-    std::uint32_t outer_t[2], outer_ta[2], outer_n[2];
+    Facet outer_t[2], outer_ta[2], outer_n[2];
     for (int m = 0; m < 2; ++m) {
       const int k = yz[m];
       const int in_n = mesh_.index_of(n, tv[k]);
       if (in_n < 0) return fail(FailureKind::inconsistent_adjacency, "flip 3-2: neighbour lacks a vertex");
-      outer_t[m] = mesh_.adj(4 * r.t + k);
-      outer_ta[m] = mesh_.adj(4 * r.ta + r.in_ta[k]);
-      outer_n[m] = mesh_.adj(4 * n + in_n);
+      outer_t[m] = mesh_.adj(Facet(r.t, k));
+      outer_ta[m] = mesh_.adj(Facet(r.ta, r.in_ta[k]));
+      outer_n[m] = mesh_.adj(Facet(n, in_n));
     }
     mesh_.destroy(r.t);
     mesh_.destroy(r.ta);
@@ -382,15 +409,15 @@ class Inserter {
       made[m] = mesh_.create(w[0], w[1], w[2], w[3]);
     }
     for (int m = 0; m < 2; ++m) {
-      mesh_.link(4 * made[m] + yz[m], outer_t[m]);
-      mesh_.link(4 * made[m] + i, outer_ta[m]);
-      mesh_.link(4 * made[m] + x_pos, outer_n[m]);
-      stack_.push_back(4 * made[m] + i);
+      mesh_.link(Facet(made[m], yz[m]), outer_t[m]);
+      mesh_.link(Facet(made[m], i), outer_ta[m]);
+      mesh_.link(Facet(made[m], x_pos), outer_n[m]);
+      stack_.push_back(Facet(made[m], i));
     }
-    mesh_.link(4 * made[0] + yz[1], 4 * made[1] + yz[0]);
+    mesh_.link(Facet(made[0], yz[1]), Facet(made[1], yz[0]));
     last_ = made[0];
     ++stats_.flips32;
-    return true;
+    return checked("flip 3-2");
   }
 
   // Flip 4-4 (case 3): p, d and the edge yz of T (opposite p and x = T[x_pos]) are
@@ -415,11 +442,11 @@ class Inserter {
   // d is N1's old facet opposite y, opposite p N2's facet opposite y, opposite z MN_z's
   // facet opposite y (and the same with y and z swapped).
   bool flip44(const Roles& r, int x_pos, std::uint32_t p) {
-    const std::uint32_t n1f = mesh_.adj(4 * r.t + x_pos);
-    if (n1f == kNone) return true;
-    const std::uint32_t n2f = mesh_.adj(4 * r.ta + r.in_ta[x_pos]);
-    if (n2f == kNone) return true;
-    const std::uint32_t n1 = n1f >> 2, n2 = n2f >> 2;
+    const Facet n1f = mesh_.adj(Facet(r.t, x_pos));
+    if (n1f.none()) return true;
+    const Facet n2f = mesh_.adj(Facet(r.ta, r.in_ta[x_pos]));
+    if (n2f.none()) return true;
+    const std::uint32_t n1 = n1f.tet(), n2 = n2f.tet();
     mesh_.claim(n2);
     const std::uint32_t e = mesh_.apex(n1f);
     if (mesh_.apex(n2f) != e) return true;
@@ -434,29 +461,29 @@ class Inserter {
       n2s[m] = mesh_.index_of(n2, tv[s[m]]);
       if (n1s[m] < 0 || n2s[m] < 0) return fail(FailureKind::inconsistent_adjacency, "flip 4-4: a tet lacks y or z");
     }
-    const int n1p = mesh_.index_of(n1, p), n1e = n1f & 3;
+    const int n1p = mesh_.index_of(n1, p), n1e = n1f.face();
     if (n1p < 0) return fail(FailureKind::inconsistent_adjacency, "flip 4-4: N1 lacks p");
     // In a simplicial complex e is not x, N2 holds d, N1 and N2 share their facet yze,
     // and no outer facet of the four tets leads back into them; a mesh that a
     // non-robust backend has tangled can break each.
-    const std::uint32_t n12 = mesh_.adj(4 * n1 + n1p);  // N1's facet yze: N2's, closing the ring
-    if (e == tv[x_pos] || mesh_.index_of(n2, r.d) < 0 || n12 == kNone || n12 >> 2 != n2 ||
-        mesh_.adj(n12) != 4 * n1 + static_cast<std::uint32_t>(n1p))
+    const Facet n12 = mesh_.adj(Facet(n1, n1p));  // N1's facet yze: N2's, closing the ring
+    if (e == tv[x_pos] || mesh_.index_of(n2, r.d) < 0 || n12.none() || n12.tet() != n2 ||
+        mesh_.adj(n12) != Facet(n1, n1p))
       return fail(FailureKind::inconsistent_adjacency, "flip 4-4: facets did not match up");
     std::uint32_t mn_v[2][4];
     for (int m = 0; m < 2; ++m) {
       std::copy(nv, nv + 4, mn_v[m]);
       mn_v[m][n1s[m]] = r.d;
     }
-    if (geo_.orientation(mn_v[0]) <= 0 || geo_.orientation(mn_v[1]) <= 0) return true;
-    std::uint32_t outer_t[2], outer_ta[2], outer_n1[2], outer_n2[2];
+    if (geo_.orientation(mn_v[0]) != Sign::positive || geo_.orientation(mn_v[1]) != Sign::positive) return true;
+    Facet outer_t[2], outer_ta[2], outer_n1[2], outer_n2[2];
     for (int m = 0; m < 2; ++m) {
-      outer_t[m] = mesh_.adj(4 * r.t + s[m]);
-      outer_ta[m] = mesh_.adj(4 * r.ta + r.in_ta[s[m]]);
-      outer_n1[m] = mesh_.adj(4 * n1 + n1s[m]);
-      outer_n2[m] = mesh_.adj(4 * n2 + n2s[m]);
-      for (const std::uint32_t f : {outer_t[m], outer_ta[m], outer_n1[m], outer_n2[m]})
-        if (f != kNone && (f >> 2 == r.t || f >> 2 == r.ta || f >> 2 == n1 || f >> 2 == n2))
+      outer_t[m] = mesh_.adj(Facet(r.t, s[m]));
+      outer_ta[m] = mesh_.adj(Facet(r.ta, r.in_ta[s[m]]));
+      outer_n1[m] = mesh_.adj(Facet(n1, n1s[m]));
+      outer_n2[m] = mesh_.adj(Facet(n2, n2s[m]));
+      for (const Facet f : {outer_t[m], outer_ta[m], outer_n1[m], outer_n2[m]})
+        if (!f.none() && (f.tet() == r.t || f.tet() == r.ta || f.tet() == n1 || f.tet() == n2))
           return fail(FailureKind::inconsistent_adjacency, "flip 4-4: facets did not match up");
     }
     mesh_.destroy(r.t);
@@ -471,30 +498,31 @@ class Inserter {
       mn[m] = mesh_.create(mn_v[m][0], mn_v[m][1], mn_v[m][2], mn_v[m][3]);
     }
     for (int m = 0; m < 2; ++m) {
-      mesh_.link(4 * mt[m] + s[m], outer_t[m]);
-      mesh_.link(4 * mt[m] + r.i, outer_ta[m]);
-      mesh_.link(4 * mt[m] + x_pos, 4 * mn[m] + n1e);
-      mesh_.link(4 * mn[m] + n1s[m], outer_n1[m]);
-      mesh_.link(4 * mn[m] + n1p, outer_n2[m]);
+      mesh_.link(Facet(mt[m], s[m]), outer_t[m]);
+      mesh_.link(Facet(mt[m], r.i), outer_ta[m]);
+      mesh_.link(Facet(mt[m], x_pos), Facet(mn[m], n1e));
+      mesh_.link(Facet(mn[m], n1s[m]), outer_n1[m]);
+      mesh_.link(Facet(mn[m], n1p), outer_n2[m]);
     }
-    for (int m = 0; m < 2; ++m) stack_.push_back(4 * mt[m] + r.i);
-    for (int m = 0; m < 2; ++m) stack_.push_back(4 * mn[m] + n1p);
-    mesh_.link(4 * mt[0] + s[1], 4 * mt[1] + s[0]);
-    mesh_.link(4 * mn[0] + n1s[1], 4 * mn[1] + n1s[0]);
+    for (int m = 0; m < 2; ++m) stack_.push_back(Facet(mt[m], r.i));
+    for (int m = 0; m < 2; ++m) stack_.push_back(Facet(mn[m], n1p));
+    mesh_.link(Facet(mt[0], s[1]), Facet(mt[1], s[0]));
+    mesh_.link(Facet(mn[0], n1s[1]), Facet(mn[1], n1s[0]));
     last_ = mt[0];
     ++stats_.flips44;
-    return true;
+    return checked("flip 4-4");
   }
 
   Mesh mesh_;
   Geometry<B> geo_;
   std::uint64_t rng_;
   std::uint32_t last_ = 0;
-  IdStack stack_;  // facets 4t + i with p at position i of t
+  FacetStack stack_;  // facets (t, i) with p at position i of t
   BuildStats stats_;
   FailureKind failure_ = FailureKind::walk_cycle;
   std::string detail_;
   std::uint32_t found_ = kNone;
+  std::uint32_t check_points_ = 0;  // 0: no mesh checks (check_combinatorics)
 };
 
 }  // namespace dtlab

@@ -2,9 +2,9 @@
 // The tetrahedral mesh: one 32-byte record per tet, 32-bit ids (kernel/ids.hpp).
 //
 //   v[i]    vertex i of the tet (a point index; the infinite vertex is one index)
-//   adj[f]  the facet across facet f, encoded 4t2 + f2, where facet f is the one
-//           opposite vertex f; so adj(adj(4t+f)) == 4t+f and the mirror vertex is
-//           vertex(adj(4t+f)). kNone marks the outside of a bigtet.
+//   adj[f]  the facet across facet f (a Facet, kernel/ids.hpp), where facet f is the
+//           one opposite vertex f; so adj(adj(Facet{t,f})) == Facet{t,f} and the mirror
+//           vertex is apex(adj(Facet{t,f})). kNoFacet marks the outside of a bigtet.
 //
 // Vertices and adjacency share the record, so a flip or a walk step touching a tet
 // reads one half cache line instead of two lines in separate arrays (measured in
@@ -21,7 +21,7 @@ namespace dtlab {
 
 struct TetRecord {
   std::uint32_t v[4];
-  std::uint32_t adj[4];
+  Facet adj[4];
 };
 static_assert(sizeof(TetRecord) == 32);
 
@@ -44,13 +44,13 @@ class TetMesh {
 
   const std::uint32_t* verts(std::uint32_t t) const { return tets_[t].v; }
   std::uint32_t vertex(std::uint32_t t, int i) const { return tets_[t].v[i]; }
-  // The vertex opposite facet `facet` (4t + f): vertex f of t.
-  std::uint32_t apex(std::uint32_t facet) const { return tets_[facet >> 2].v[facet & 3]; }
-  std::uint32_t adj(std::uint32_t facet) const { return tets_[facet >> 2].adj[facet & 3]; }
+  // The vertex opposite facet `facet`: vertex facet.face() of facet.tet().
+  std::uint32_t apex(Facet facet) const { return tets_[facet.tet()].v[facet.face()]; }
+  Facet adj(Facet facet) const { return tets_[facet.tet()].adj[facet.face()]; }
 
-  void link(std::uint32_t f1, std::uint32_t f2) {
-    tets_[f1 >> 2].adj[f1 & 3] = f2;
-    if (f2 != kNone) tets_[f2 >> 2].adj[f2 & 3] = f1;
+  void link(Facet f1, Facet f2) {
+    tets_[f1.tet()].adj[f1.face()] = f2;
+    if (!f2.none()) tets_[f2.tet()].adj[f2.face()] = f1;
   }
 
   std::uint32_t create(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
@@ -62,7 +62,7 @@ class TetMesh {
       t = size();
       tets_.emplace_back();
     }
-    tets_[t] = TetRecord{{a, b, c, d}, {kNone, kNone, kNone, kNone}};
+    tets_[t] = TetRecord{{a, b, c, d}, {}};
     return t;
   }
 

@@ -25,6 +25,7 @@
 #include "predicates/backend.hpp"
 #include "predicates/error_bounds.hpp"
 #include "predicates/naive.hpp"
+#include "predicates/sign.hpp"
 
 namespace dtlab {
 
@@ -138,7 +139,7 @@ inline int adaptive_insphere(const Point3& a, const Point3& b, const Point3& c, 
 
 // The insphere filter of adaptive_insphere, fused with the orientation tests a flip
 // classification asks next. It evaluates insphere(a,b,c,d,e) once and returns the
-// signs that semi-static bounds decide, kUndecided for the others (the caller then
+// signs that semi-static bounds decide, FilterSign::undecided for the others (the caller then
 // asks the full predicates):
 //   insphere  as adaptive_insphere's filter;
 //   side[k]   orient3d(a,b,c,d with its k-th point replaced by e): insphere_eval's
@@ -155,10 +156,9 @@ inline int adaptive_insphere(const Point3& a, const Point3& b, const Point3& c, 
 //             <= 2^-1075 times at most a factor sqrt(L), far inside the slack. If L^3
 //             overflows the test is false; a NaN minor fails it; a minor^2 overflowing
 //             alone means |minor| > 2^512 > L^1.5: correctly decided.
-inline constexpr int kUndecided = 2;
 struct InsphereSides {
-  int insphere;
-  int side[4];
+  FilterSign insphere;
+  FilterSign side[4];
 };
 
 namespace adaptive_detail {
@@ -169,14 +169,15 @@ inline InsphereSides adaptive_insphere_sides(const Point3& a, const Point3& b, c
                                              const Point3& d, const Point3& e, AdaptiveStats* stats) {
   using namespace adaptive_detail;
   const InsphereEval v = insphere_eval(a, b, c, d, e);
-  InsphereSides r{kUndecided, {kUndecided, kUndecided, kUndecided, kUndecided}};
+  constexpr FilterSign u = FilterSign::undecided;
+  InsphereSides r{u, {u, u, u, u}};
   if (!(v.max_lift >= kIspLiftLow)) return r;
   const double lift2 = v.max_lift * v.max_lift;
   if (v.det * v.det > kIspSemiStaticSquared * (lift2 * lift2 * v.max_lift))
-    r.insphere = counted(stats, true, AdaptiveStage::kSemiStatic, v.det > 0 ? 1 : -1);
+    r.insphere = filter_sign(counted(stats, true, AdaptiveStage::kSemiStatic, v.det > 0 ? 1 : -1));
   const double side_bound = kSideSemiStaticSquared * (lift2 * v.max_lift);
   for (int k = 0; k < 4; ++k)
-    if (v.minor[k] * v.minor[k] > side_bound) r.side[k] = v.minor[k] > 0 ? 1 : -1;
+    if (v.minor[k] * v.minor[k] > side_bound) r.side[k] = filter_sign(v.minor[k]);
   return r;
 }
 

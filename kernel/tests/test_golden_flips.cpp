@@ -21,6 +21,7 @@
 
 #include "delaunay_check.hpp"
 #include "kernel/build.hpp"
+#include "kernel/mesh_check.hpp"
 
 using namespace dtlab;
 
@@ -38,6 +39,7 @@ BuildResult build_in_order(const std::vector<Point3>& pts, bool perturb) {
   spec.perturb = perturb;
   BuildOptions opt;
   opt.order = InsertionOrder::input;
+  opt.check_combinatorics = true;  // debug builds: the whole mesh checked after every flip
   return build_delaunay(pts, spec, opt);
 }
 
@@ -59,6 +61,9 @@ void require_golden(const std::vector<Point3>& pts, bool perturb, Flips flips, c
   CHECK(r.stats.flips44 == flips.f44);
   CHECK(sorted_tets(r) == expected);
   CHECK(test::validate(r).empty());
+  // One check after each flip and one after each insertion (whose flip 1-4 is counted).
+  const std::uint64_t checks = 2 * flips.f14 + flips.f23 + flips.f32 + flips.f44;
+  CHECK(r.stats.mesh_checks == (kMeshChecksCompiled ? checks : 0));
 }
 
 const std::vector<Point3> kCorner = {{0, 0, 0}, {8, 0, 0}, {0, 8, 0}, {0, 0, 8}};

@@ -142,13 +142,13 @@ TEST_CASE("fused insphere-and-sides filter: every sign it decides is exact", "[a
   const ExactPredicates ex;
   const auto check = [&](const Quint& q, int& decided_sides, int& bad) {
     const InsphereSides r = adaptive_insphere_sides(q[0], q[1], q[2], q[3], q[4], nullptr);
-    if (r.insphere != kUndecided) bad += r.insphere != ex.insphere(q[0], q[1], q[2], q[3], q[4]);
+    if (decided(r.insphere)) bad += to_int(to_sign(r.insphere)) != ex.insphere(q[0], q[1], q[2], q[3], q[4]);
     for (int k = 0; k < 4; ++k) {
-      if (r.side[k] == kUndecided) continue;
+      if (!decided(r.side[k])) continue;
       ++decided_sides;
       Quad o = {q[0], q[1], q[2], q[3]};
       o[k] = q[4];
-      bad += r.side[k] != ex.orient3d(o[0], o[1], o[2], o[3]);
+      bad += to_int(to_sign(r.side[k])) != ex.orient3d(o[0], o[1], o[2], o[3]);
     }
   };
   int decided = 0, bad = 0;
