@@ -110,7 +110,7 @@ TEST_CASE("canonical tets: the smallest vertex first, the orientation kept", "[t
 }
 
 TEST_CASE("parallel build: uniform points, the serial build's tets at 2, 3, 4, 8 threads", "[threads]") {
-  require_same_as_serial(uniform(8000, 7), kAdaptiveSos, {}, 1);  // every pass split, however small
+  require_same_as_serial(uniform(8000, 7), kAdaptiveSos, {}, 1);      // every pass split, however small
   require_same_as_serial(uniform(20000, 7), kAdaptiveSos, {}, 2048);  // the default grain
 }
 
