@@ -108,10 +108,11 @@ fuzz::OracleHook serial_hook(const std::vector<PredicateSpec>& backends, const B
             if (ours.failure) return "";
             const BuildResult r = build_delaunay(points, spec, serial);
             if (r.failure) return "serial-failed";
-            std::vector<Tet> tets = r.mesh.tets;
+            std::vector<Tet> tets = r.mesh.tets, mine = ours.mesh.tets;
             canonical_order(tets, points.size(), 1);
+            canonical_order(mine, points.size(), 1);
             if (r.duplicates != ours.duplicates) return "duplicates-differ";
-            return tets == ours.mesh.tets ? "" : "tets-differ";
+            return tets == mine ? "" : "tets-differ";
           }};
 }
 

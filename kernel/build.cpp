@@ -44,9 +44,8 @@ BuildResult build_delaunay(std::vector<Point3>&& points, const PredicateSpec& sp
   AdaptiveStats stages;
   if (auto* adaptive = std::get_if<AdaptivePredicates>(&*choice); adaptive && options.count_stages)
     adaptive->stats = &stages;
-  const BuildOptions& opt = options;
   BuildResult r = visit_backend(*choice, spec.perturb,
-                                [&](const auto& preds) { return build_with(std::move(points), preds, opt); });
+                                [&](const auto& preds) { return build_with(std::move(points), preds, options); });
   for (int s = 0; s < static_cast<int>(AdaptiveStage::kCount); ++s) {
     const std::string name(kAdaptiveStageNames[s]);
     if (stages.orient3d[s]) r.stats.stages.push_back({"orient3d:" + name, stages.orient3d[s]});

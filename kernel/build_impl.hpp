@@ -10,10 +10,6 @@
 #include <optional>
 #include <vector>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
-
 #include "kernel/build.hpp"
 #include "kernel/canonical_order.hpp"
 #include "kernel/enclosing_tet.hpp"
@@ -22,6 +18,7 @@
 #include "kernel/inserter.hpp"
 #include "kernel/parallel_build.hpp"
 #include "kernel/progress.hpp"
+#include "kernel/page_release.hpp"
 #include "kernel/parallel_for.hpp"
 #include "kernel/spatial_order.hpp"
 
@@ -38,21 +35,6 @@ bool collinear(const B& pred, const Point3& a, const Point3& b, const Point3& c)
   return proj([](const Point3& p) { return Point3{p.x, p.y, 0}; }) == 0 &&
          proj([](const Point3& p) { return Point3{p.y, p.z, 0}; }) == 0 &&
          proj([](const Point3& p) { return Point3{p.z, p.x, 0}; }) == 0;
-}
-
-// Page-aligned ranges of a buffer already read can be handed back to the system, so
-// that the compaction's output grows while the mesh it reads shrinks (peak memory is
-// the mesh's, not the mesh's plus the output's).
-// Releases the whole pages in [begin, end); returns where the next release starts
-// (the page holding `end`, not yet released).
-inline const char* release_pages(const char* begin, const char* end) {
-  constexpr std::uintptr_t kPage = 4096;
-  const std::uintptr_t b = (reinterpret_cast<std::uintptr_t>(begin) + kPage - 1) & ~(kPage - 1);
-  const std::uintptr_t e = reinterpret_cast<std::uintptr_t>(end) & ~(kPage - 1);
-#ifdef __linux__
-  if (e > b) madvise(reinterpret_cast<void*>(b), e - b, MADV_DONTNEED);
-#endif
-  return e > b ? reinterpret_cast<const char*>(e) : begin;
 }
 
 // The finite live tets, vertex ids translated back to input indices (vertex v is
@@ -253,9 +235,8 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
     res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     res.peak_tets = par.store().size();
     resolve_log(res, log, order);
-    detail::compact(par.store().records(), par.store().size(), n, order, res.mesh.tets);
+    compact_canonical(par.store().records(), par.store().size(), n, order, res.mesh.tets, threads);
     std::free(par.store().release_records());
-    canonical_order(res.mesh.tets, n, threads);
   }
   if (!res.failure) progress_advance(progress, n);
   pts.resize(n);

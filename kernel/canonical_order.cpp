@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "kernel/page_release.hpp"
 #include "kernel/parallel_for.hpp"
 
 namespace dtlab {
@@ -46,6 +47,79 @@ void canonical_order(std::vector<Tet>& tets, std::size_t points, unsigned thread
   std::vector<std::uint32_t>().swap(next);
   parallel_chunks(points, threads, kChunk, [&](std::size_t b, std::size_t e, unsigned) {
     for (std::size_t v = b; v < e; ++v) std::sort(tets.begin() + start[v], tets.begin() + start[v + 1]);
+  });
+}
+
+}  // namespace dtlab
+
+namespace dtlab {
+
+namespace {
+
+bool finite(const TetRecord& r, std::uint32_t n) {
+  return r.v[0] < n && r.v[1] < n && r.v[2] < n && r.v[3] < n;  // dead tets have v[0] == kNone
+}
+
+std::uint32_t smallest(const TetRecord& r) { return std::min(std::min(r.v[0], r.v[1]), std::min(r.v[2], r.v[3])); }
+
+// Where each (chunk, bucket) writes: offsets[c * buckets + b], buckets in order, chunks in
+// order within a bucket; bucket b's tets are [starts[b], starts[b + 1]).
+struct Layout {
+  std::size_t chunks, buckets;
+  int shift;  // bucket of a tet: its smallest id >> shift
+  std::vector<std::size_t> offsets, starts;
+};
+
+// Pass 1: counts per (chunk, bucket), then their prefix sums.
+Layout count_buckets(const TetRecord* records, std::size_t size, std::uint32_t n, unsigned threads) {
+  Layout l;
+  l.chunks = std::max<std::size_t>(1, std::min<std::size_t>(4 * std::size_t(threads), size / 4096 + 1));
+  l.shift = 0;
+  while ((std::size_t(n) >> l.shift) > 8192) ++l.shift;
+  l.buckets = (std::size_t(n) >> l.shift) + 1;
+  l.offsets.assign(l.chunks * l.buckets, 0);
+  parallel_for(l.chunks, threads, 1, [&](std::size_t c, unsigned) {
+    std::size_t* count = l.offsets.data() + c * l.buckets;
+    for (std::size_t t = size * c / l.chunks, e = size * (c + 1) / l.chunks; t < e; ++t)
+      if (finite(records[t], n)) ++count[smallest(records[t]) >> l.shift];
+  });
+  l.starts.assign(l.buckets + 1, 0);
+  std::size_t at = 0;
+  for (std::size_t b = 0; b < l.buckets; ++b) {
+    l.starts[b] = at;
+    for (std::size_t c = 0; c < l.chunks; ++c) {
+      const std::size_t k = l.offsets[c * l.buckets + b];
+      l.offsets[c * l.buckets + b] = at;
+      at += k;
+    }
+  }
+  l.starts[l.buckets] = at;
+  return l;
+}
+
+}  // namespace
+
+void compact_canonical(TetRecord* records, std::size_t size, std::uint32_t n, const std::vector<std::uint32_t>& order,
+                       std::vector<Tet>& out, unsigned threads) {
+  Layout l = count_buckets(records, size, n, threads);
+  out.resize(l.starts[l.buckets]);
+  // Pass 2: each chunk's tets, rotated, into its places in their buckets; its pages freed.
+  parallel_for(l.chunks, threads, 1, [&](std::size_t c, unsigned) {
+    std::size_t* at = l.offsets.data() + c * l.buckets;
+    const std::size_t b = size * c / l.chunks, e = size * (c + 1) / l.chunks;
+    for (std::size_t t = b; t < e; ++t) {
+      const TetRecord& r = records[t];
+      if (finite(r, n)) out[at[smallest(r) >> l.shift]++] = canonical_tet({r.v[0], r.v[1], r.v[2], r.v[3]});
+    }
+    detail::release_pages(reinterpret_cast<const char*>(records + b), reinterpret_cast<const char*>(records + e));
+  });
+  // Pass 3: each bucket sorted, then its ids translated (a bucket holds neighbouring ids).
+  parallel_for(l.buckets, threads, 16, [&](std::size_t k, unsigned) {
+    const auto first = out.begin() + static_cast<std::ptrdiff_t>(l.starts[k]);
+    const auto last = out.begin() + static_cast<std::ptrdiff_t>(l.starts[k + 1]);
+    std::sort(first, last);
+    for (auto it = first; it != last; ++it)
+      for (std::uint32_t& v : *it) v = order[v];
   });
 }
 
