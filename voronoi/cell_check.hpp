@@ -34,7 +34,9 @@ inline std::string check_cell_closed(const VoronoiCell& c) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
     for (auto k = b; k < e; ++k) head[fill[c.face_vertices[k]]++] = c.face_vertices[k + 1 < e ? k + 1 : b];
   }
-  const auto out_of = [&](std::uint32_t v) { return std::span<const std::uint32_t>(head).subspan(off[v], off[v + 1] - off[v]); };
+  const auto out_of = [&](std::uint32_t v) {
+    return std::span<const std::uint32_t>(head).subspan(off[v], off[v + 1] - off[v]);
+  };
   for (std::uint32_t u = 0; u < nv; ++u) {
     const auto out = out_of(u);
     for (std::size_t i = 0; i < out.size(); ++i)

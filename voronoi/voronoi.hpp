@@ -58,7 +58,7 @@ struct VoronoiDiagram {
   std::vector<Point3> sites;
   std::vector<VoronoiCell> cells;
   std::shared_ptr<const std::vector<vor::CellArena>> storage;  // owns the cells' arrays
-  std::shared_ptr<const Tetrahedralization> dt;  // with VoronoiOptions::keep_dt (exact predicates only)
+  std::shared_ptr<const Tetrahedralization> dt;                // with VoronoiOptions::keep_dt (exact predicates only)
   std::size_t tets = 0;
   std::size_t clipped = 0;          // cells built by clipping (hull sites, doubtful duals, shrink)
   std::size_t box_clipped = 0;      // dual cells then clipped by the box walls

@@ -37,8 +37,8 @@ struct Series {
 
 void print_stages(const char* what, const VoronoiCheckReport& r) {
   std::printf("  %s: %s, DT %.3f tables %.3f relation %.3f geometry %.3f total %.3f s\n", what,
-              voronoi_verdict_name(r.verdict), r.seconds_dt, r.seconds_tables, r.seconds_relation,
-              r.seconds_geometry, r.seconds);
+              voronoi_verdict_name(r.verdict), r.seconds_dt, r.seconds_tables, r.seconds_relation, r.seconds_geometry,
+              r.seconds);
 }
 
 }  // namespace

@@ -93,8 +93,8 @@ std::optional<L> vertex_error(const Point3& p, const Point3& site, const VertexS
   const auto bd = lcross(b.n, d.n), da = lcross(d.n, a.n), ab = lcross(a.n, b.n);
   const L x[3] = {(a.c * bd[0] + b.c * da[0] + d.c * ab[0]) / det, (a.c * bd[1] + b.c * da[1] + d.c * ab[1]) / det,
                   (a.c * bd[2] + b.c * da[2] + d.c * ab[2]) / det};
-  return std::max({std::abs(L(p.x) - L(site.x) - x[0]), std::abs(L(p.y) - L(site.y) - x[1]),
-                   std::abs(L(p.z) - L(site.z) - x[2])});
+  return std::max(
+      {std::abs(L(p.x) - L(site.x) - x[0]), std::abs(L(p.y) - L(site.y) - x[1]), std::abs(L(p.z) - L(site.z) - x[2])});
 }
 
 }  // namespace

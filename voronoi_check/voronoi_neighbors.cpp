@@ -136,7 +136,8 @@ void VoronoiNeighbors::ring_centres(std::uint32_t a, std::uint32_t b, std::vecto
 }
 
 bool VoronoiNeighbors::hull_edge(std::uint32_t a, std::uint32_t b) const {
-  return hull_vertex_[a] && hull_vertex_[b] && std::binary_search(hull_edges_.begin(), hull_edges_.end(), edge_key(a, b));
+  return hull_vertex_[a] && hull_vertex_[b] &&
+         std::binary_search(hull_edges_.begin(), hull_edges_.end(), edge_key(a, b));
 }
 
 // The exact centres of the ring's non-flat tets, from the scratch when this site has
