@@ -10,6 +10,8 @@
 //   dtlab:B         dtlab's cells, backend B (naive .. exact)       dtlab_voronoi_peer
 //
 // How each adapter clips is documented in its source and in voronoi_check/README.md.
+// Peers given by a command (voronoi_peer_command.hpp), once registered, are names here
+// too: listed by "all", run and versioned by the functions below.
 #include <cstdint>
 #include <optional>
 #include <span>

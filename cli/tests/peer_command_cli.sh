@@ -88,7 +88,7 @@ expect 2 "peers file that is not TOML" -- "$dtlab" oracle "$tmp/pts.xyz" --peers
 has_err "bad.toml:3: not TOML: " "file:line of the TOML error"
 printf '[[peers]]\nname = "x"\ncomand = "a {in} {out}"\n' >"$tmp/typo.toml"
 expect 2 "TOML peer with an unknown field" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/typo.toml"
-has_err "typo.toml:3: peer 1: unknown field 'comand' \(name, command\)" "the misspelt key named"
+has_err "typo.toml:3: peer 1: unknown field 'comand' \(name, command, kind\)" "the misspelt key named"
 printf '[[peers]]\nname = "x"\n\n[[peers]]\nname = "y"\ncommand = "prog {in}"\n' >"$tmp/noout.toml"
 expect 2 "TOML peer without a command, then without {out}" -- "$dtlab" oracle "$tmp/pts.xyz" --peers "$tmp/noout.toml"
 has_err "noout.toml:1: peer 1: needs command" "the entry's line"

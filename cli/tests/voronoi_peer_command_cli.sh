@@ -30,7 +30,11 @@ fails = lambda j: sorted((f["source"], f["case"], f["verdict"]) for f in j["fail
 assert a["cases"] == b["cases"] and a["not_installed"] == b["not_installed"] == 0, (a["cases"], b["cases"])
 assert fam(a) == fam(b), [(s, fam(a)[s], fam(b).get(s)) for s in fam(a) if fam(a)[s] != fam(b).get(s)]
 assert fails(a) == fails(b), (fails(a), fails(b))
-print("  %s: %d cases, %d failing, the same verdicts" % (sys.argv[1].split("/")[-1], a["cases"], a["failing"]))
+total = {}
+for r in a["families"].values():
+    for v, k in r["verdicts"].items():
+        total[v] = total.get(v, 0) + k
+print("  %d cases, %d failing, the same verdicts: %s" % (a["cases"], a["failing"], dict(sorted(total.items()))))
 PY
 }
 if [ "$full" = --full ]; then
