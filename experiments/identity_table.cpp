@@ -2,9 +2,10 @@
 // For every fuzz family and a mesh sample (points inside the bumpy torus), N points
 // (default 20000): a 64-bit hash of the sorted canonical tets (kernel/canonical_order.hpp)
 // of the serial build and of the threaded build at 1, 2, 3, 4 and 8 threads, RUNS runs each
-// (default 2; SOURCE: that point source only), adaptive predicates with --perturb sos. Prints a Markdown table; exit 1 when
-// any hash differs from the serial build's (a failing build hashes as 0: only an input the
-// serial build also refuses, a lower-dimensional one, may fail).
+// (default 2; SOURCE: that point source only), adaptive predicates with --perturb sos.
+// Prints a Markdown table; exit 1 when any hash differs from the serial build's (a failing
+// build hashes as 0: only an input the serial build also refuses, a lower-dimensional one,
+// may fail).
 #include <cstdio>
 #include <cstdlib>
 #include <string>

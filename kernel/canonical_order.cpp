@@ -107,7 +107,8 @@ std::vector<Tet> rotated_tets(TetRecord* records, std::size_t size, std::uint32_
   for (std::size_t start = 0; start < size; start += kChunk) {
     const std::size_t stop = std::min(size, start + kChunk);
     for (std::size_t t = start; t < stop; ++t)
-      if (const TetRecord& r = records[t]; finite(r, n)) tets.push_back(canonical_tet({r.v[0], r.v[1], r.v[2], r.v[3]}));
+      if (const TetRecord& r = records[t]; finite(r, n))
+        tets.push_back(canonical_tet({r.v[0], r.v[1], r.v[2], r.v[3]}));
     unreleased = detail::release_pages(unreleased, reinterpret_cast<const char*>(records + stop));
   }
   return tets;
