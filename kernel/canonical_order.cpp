@@ -60,28 +60,26 @@ bool finite(const TetRecord& r, std::uint32_t n) {
   return r.v[0] < n && r.v[1] < n && r.v[2] < n && r.v[3] < n;  // dead tets have v[0] == kNone
 }
 
-std::uint32_t smallest(const TetRecord& r) { return std::min(std::min(r.v[0], r.v[1]), std::min(r.v[2], r.v[3])); }
-
 // Where each (chunk, bucket) writes: offsets[c * buckets + b], buckets in order, chunks in
 // order within a bucket; bucket b's tets are [starts[b], starts[b + 1]).
 struct Layout {
   std::size_t chunks, buckets;
-  int shift;  // bucket of a tet: its smallest id >> shift
+  int shift;  // bucket of a tet: its first (smallest) id >> shift
   std::vector<std::size_t> offsets, starts;
 };
 
-// Pass 1: counts per (chunk, bucket), then their prefix sums.
-Layout count_buckets(const TetRecord* records, std::size_t size, std::uint32_t n, unsigned threads) {
+// Counts per (chunk of `tets`, bucket), then their prefix sums.
+Layout count_buckets(const std::vector<Tet>& tets, std::uint32_t n, unsigned threads) {
   Layout l;
-  l.chunks = std::max<std::size_t>(1, std::min<std::size_t>(4 * std::size_t(threads), size / 4096 + 1));
+  l.chunks = std::max<std::size_t>(1, std::min<std::size_t>(4 * std::size_t(threads), tets.size() / 4096 + 1));
   l.shift = 0;
   while ((std::size_t(n) >> l.shift) > 8192) ++l.shift;
   l.buckets = (std::size_t(n) >> l.shift) + 1;
   l.offsets.assign(l.chunks * l.buckets, 0);
   parallel_for(l.chunks, threads, 1, [&](std::size_t c, unsigned) {
     std::size_t* count = l.offsets.data() + c * l.buckets;
-    for (std::size_t t = size * c / l.chunks, e = size * (c + 1) / l.chunks; t < e; ++t)
-      if (finite(records[t], n)) ++count[smallest(records[t]) >> l.shift];
+    for (std::size_t i = tets.size() * c / l.chunks, e = tets.size() * (c + 1) / l.chunks; i < e; ++i)
+      ++count[tets[i][0] >> l.shift];
   });
   l.starts.assign(l.buckets + 1, 0);
   std::size_t at = 0;
@@ -97,23 +95,40 @@ Layout count_buckets(const TetRecord* records, std::size_t size, std::uint32_t n
   return l;
 }
 
+// The finite live tets, rotated (canonical_tet on ids), in slot order; the records' pages
+// handed back as they are read, so this copy never coexists with the whole mesh.
+std::vector<Tet> rotated_tets(TetRecord* records, std::size_t size, std::uint32_t n) {
+  std::size_t count = 0;
+  for (std::size_t t = 0; t < size; ++t) count += finite(records[t], n);
+  std::vector<Tet> tets;
+  tets.reserve(count);
+  constexpr std::size_t kChunk = 1 << 15;  // records between two releases (1 MiB)
+  const char* unreleased = reinterpret_cast<const char*>(records);
+  for (std::size_t start = 0; start < size; start += kChunk) {
+    const std::size_t stop = std::min(size, start + kChunk);
+    for (std::size_t t = start; t < stop; ++t)
+      if (const TetRecord& r = records[t]; finite(r, n))
+        tets.push_back(canonical_tet({r.v[0], r.v[1], r.v[2], r.v[3]}));
+    unreleased = detail::release_pages(unreleased, reinterpret_cast<const char*>(records + stop));
+  }
+  return tets;
+}
+
 }  // namespace
 
 void compact_canonical(TetRecord* records, std::size_t size, std::uint32_t n, const std::vector<std::uint32_t>& order,
                        std::vector<Tet>& out, unsigned threads) {
-  Layout l = count_buckets(records, size, n, threads);
-  out.resize(l.starts[l.buckets]);
-  // Pass 2: each chunk's tets, rotated, into its places in their buckets; its pages freed.
+  std::vector<Tet> tets = rotated_tets(records, size, n);  // grows while the records shrink
+  const Layout l = count_buckets(tets, n, threads);
+  out.resize(tets.size());  // with `tets`: 32 bytes per tet, no more than the records took
   parallel_for(l.chunks, threads, 1, [&](std::size_t c, unsigned) {
-    std::size_t* at = l.offsets.data() + c * l.buckets;
-    const std::size_t b = size * c / l.chunks, e = size * (c + 1) / l.chunks;
-    for (std::size_t t = b; t < e; ++t) {
-      const TetRecord& r = records[t];
-      if (finite(r, n)) out[at[smallest(r) >> l.shift]++] = canonical_tet({r.v[0], r.v[1], r.v[2], r.v[3]});
-    }
-    detail::release_pages(reinterpret_cast<const char*>(records + b), reinterpret_cast<const char*>(records + e));
+    std::vector<std::size_t> at(l.offsets.begin() + static_cast<std::ptrdiff_t>(c * l.buckets),
+                                l.offsets.begin() + static_cast<std::ptrdiff_t>((c + 1) * l.buckets));
+    for (std::size_t i = tets.size() * c / l.chunks, e = tets.size() * (c + 1) / l.chunks; i < e; ++i)
+      out[at[tets[i][0] >> l.shift]++] = tets[i];
   });
-  // Pass 3: each bucket sorted, then its ids translated (a bucket holds neighbouring ids).
+  std::vector<Tet>().swap(tets);
+  // Each bucket sorted, then its ids translated (a bucket holds neighbouring ids).
   parallel_for(l.buckets, threads, 16, [&](std::size_t k, unsigned) {
     const auto first = out.begin() + static_cast<std::ptrdiff_t>(l.starts[k]);
     const auto last = out.begin() + static_cast<std::ptrdiff_t>(l.starts[k + 1]);

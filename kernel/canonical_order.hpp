@@ -25,9 +25,11 @@ void canonical_order(std::vector<Tet>& tets, std::size_t points, unsigned thread
 // rotated and the list sorted as canonical_order does, on the vertex ids; then every id v
 // translated to order[v]. A function of the tet set and the ids only, so a parallel build
 // returns the same array at every thread count and in every run. The records' pages are
-// handed back as they are read (the caller frees the buffer). Three parallel passes: count
-// per (chunk of records, bucket of smallest ids), scatter into the buckets, sort and
-// translate each bucket.
+// handed back as they are read (the caller frees the buffer). A serial compaction of the
+// rotated tets (the records' pages released as it goes, so the peak stays the mesh's), then
+// three parallel passes: count per (chunk, bucket of first ids), scatter into the buckets
+// (a second array: with the first, 32 bytes per tet, no more than the records took), sort
+// and translate each bucket.
 void compact_canonical(TetRecord* records, std::size_t size, std::uint32_t n, const std::vector<std::uint32_t>& order,
                        std::vector<Tet>& out, unsigned threads);
 
