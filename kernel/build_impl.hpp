@@ -184,7 +184,8 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
   Progress* const progress = thread_progress();  // stage "insert": points of the order done
   progress_begin(progress, "insert", n);
   const auto t0 = std::chrono::steady_clock::now();
-  if (threads <= 1) {
+  // The serial build: one inserter, the points in BRIO order.
+  const auto build_serially = [&] {
     Inserter<B> ins(pts.data(), pred, inf, opt.seed);
     ins.reserve(n);
     ins.check_combinatorics(opt.check_combinatorics, pts.size());
@@ -212,7 +213,11 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
     std::vector<TetRecord>& records = ins.mesh().records();
     detail::compact(records.data(), records.size(), n, order, res.mesh.tets);
     std::vector<TetRecord>().swap(records);
-  } else {
+  };
+  // The threaded build; false (nothing kept) when its storage had to grow: an open
+  // defect (kernel/README.md) lets such a build, on quadratic-size outputs such as the
+  // moment curve's, return tets other than the serial build's, so it is redone serially.
+  const auto build_threaded = [&] {
     ParallelInsertion<B> par(pts.data(), n, inf, pred, opt, threads);
     par.start(first, 4);
     // BRIO rounds one after the other (the input order is one round).
@@ -230,6 +235,11 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
         break;
       }
     }
+    if (par.grew()) {
+      std::free(par.store().release_records());
+      log = InsertionLog{};
+      return false;
+    }
     res.stats = par.finish();
     if (infinite) res.stats.inserted += 4;
     res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -237,7 +247,9 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
     resolve_log(res, log, order);
     compact_canonical(par.store().records(), par.store().size(), n, order, res.mesh.tets, threads);
     std::free(par.store().release_records());
-  }
+    return true;
+  };
+  if (threads <= 1 || !build_threaded()) build_serially();
   if (!res.failure) progress_advance(progress, n);
   pts.resize(n);
   detail::restore_input_order(pts, order);

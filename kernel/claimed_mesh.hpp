@@ -239,8 +239,8 @@ inline std::string ownership_defect(const SharedTets& store, std::span<const Cla
     if (own[t] != 0) note(t, "a tet held between insertions");
     if (rec[t].v[0] == kNone) note(t, "a dead slot in no pool");
     for (int f = 0; f < 4; ++f) {
-      const std::uint32_t a = rec[t].adj[f];
-      if (a != kNone && (a >> 2 >= n || spare[a >> 2] || rec[a >> 2].adj[a & 3] != 4 * t + f))
+      const Facet a = rec[t].adj[f];
+      if (!a.none() && (a.tet() >= n || spare[a.tet()] || rec[a.tet()].adj[a.face()] != Facet(t, f)))
         note(t, "an adjacency that does not point back");
     }
   }

@@ -80,6 +80,8 @@ class ParallelInsertion {
   }
 
   SharedTets& store() { return store_; }
+  // True once the storage had to grow (see build_with's fallback).
+  bool grew() const { return grew_; }
 
   // The first tet (and its infinite neighbours) on thread 0's view; every thread's
   // geometry learns it (it defines the symbolic inner point O).
@@ -249,7 +251,10 @@ class ParallelInsertion {
 #endif
   }
 
-  void grow() { store_.grow(store_.capacity() + store_.capacity() / 2 + ClaimedMesh::kBlock * workers_.size()); }
+  void grow() {
+    store_.grow(store_.capacity() + store_.capacity() / 2 + ClaimedMesh::kBlock * workers_.size());
+    grew_ = true;
+  }
 
   SharedTets store_;
   std::size_t grain_;
@@ -258,6 +263,7 @@ class ParallelInsertion {
   std::vector<std::unique_ptr<Worker>> workers_;
   std::size_t vertices_ = 0;  // in the mesh (the infinite vertex counted)
   std::uint64_t conflicts_ = 0;
+  bool grew_ = false;
 };
 
 }  // namespace dtlab

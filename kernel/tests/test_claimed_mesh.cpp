@@ -12,7 +12,7 @@ using namespace dtlab;
 namespace {
 
 // Five live tets made and committed by view `a` (slots 0-4; the rest of a's block,
-// 5-1023, stays a's spare slots). They share no facet: adjacency all kNone.
+// 5-1023, stays a's spare slots). They share no facet: adjacency all kNoFacet.
 void five_live_tets(ClaimedMesh& a) {
   for (std::uint32_t k = 0; k < 5; ++k) a.create(4 * k, 4 * k + 1, 4 * k + 2, 4 * k + 3);
   a.commit();
@@ -32,7 +32,7 @@ TEST_CASE("claimed mesh: a walk starts only at slots handed out before the pass"
   REQUIRE(store.take(ClaimedMesh::kBlock, 3, first) == ClaimedMesh::kBlock);
   for (std::uint32_t t = first; t < first + ClaimedMesh::kBlock; ++t) {
     store.owners()[t] = 0;
-    store.records()[t] = TetRecord{{0, 1, 2, 3}, {kNone, kNone, kNone, kNone}};
+    store.records()[t] = TetRecord{{0, 1, 2, 3}, {kNoFacet, kNoFacet, kNoFacet, kNoFacet}};
   }
   for (std::uint32_t seed = 0; seed < 200; ++seed) {
     INFO("seed " << seed);
@@ -59,7 +59,7 @@ TEST_CASE("claimed mesh: the between-pass check finds broken ownership", "[threa
     CHECK(ownership_defect(store, views) == "slot 3: a tet held between insertions");
   }
   SECTION("a one-way adjacency") {
-    store.records()[2].adj[1] = 4 * 1024 + 3;
+    store.records()[2].adj[1] = Facet(1024, 3);
     CHECK(ownership_defect(store, views) == "slot 2: an adjacency that does not point back");
   }
   SECTION("an insertion in progress") {

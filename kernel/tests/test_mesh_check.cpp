@@ -12,7 +12,7 @@
 #include "kernel/inserter.hpp"
 #include "kernel/mesh_check.hpp"
 #include "predicates/exact.hpp"
-#include "random_points.hpp"
+#include "tests/support/random_points.hpp"
 
 using namespace dtlab;
 
