@@ -1,0 +1,74 @@
+// The grid both peer campaigns run (experiments/case_grid.hpp): its order, the inputs
+// drawn from the case seeds, the command that reruns a case, the corpus names, the
+// shrink tries' limit.
+#include <catch2/catch.hpp>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "experiments/case_grid.hpp"
+
+using namespace dtlab;
+using namespace dtlab::experiments;
+
+namespace {
+
+CaseGrid small_grid() {
+  CaseGrid g;
+  g.sources = fuzz_family_sources({"uniform", "lattice"});
+  g.cases = 3;
+  g.min_points = 5;
+  g.max_points = 40;
+  g.seed = 7;
+  return g;
+}
+
+}  // namespace
+
+TEST_CASE("case grid: peers x sources x cases in order; only_case keeps one index", "[case_grid]") {
+  const std::vector<std::string> peers = {"a", "b"};
+  CaseGrid g = small_grid();
+  const auto cases = grid_cases(peers, g);
+  REQUIRE(cases.size() == 2 * 2 * 3);
+  for (std::size_t w = 0; w < cases.size(); ++w) {
+    CHECK(*cases[w].peer == peers[w / 6]);
+    CHECK(cases[w].source->name == g.sources[(w / 3) % 2].name);
+    CHECK(cases[w].index == w % 3);
+  }
+  // A case's seed depends on the source and index, not on the peer: every peer gets the same inputs.
+  CHECK(cases[0].seed == cases[6].seed);
+  CHECK(cases[0].seed != cases[1].seed);
+  CHECK(cases[0].seed != cases[3].seed);
+  g.only_case = 1;
+  const auto one = grid_cases(peers, g);
+  REQUIRE(one.size() == 4);
+  for (const GridCase& c : one) CHECK(c.index == 1);
+  CHECK(grid_cases({}, g).empty());
+}
+
+TEST_CASE("case grid: inputs are reproducible and sized within [min_points, max_points]", "[case_grid]") {
+  const CaseGrid g = small_grid();
+  const std::vector<std::string> peers = {"a"};
+  const auto cases = grid_cases(peers, g);
+  std::set<std::size_t> sizes;
+  for (const GridCase& c : cases) {
+    const auto p = grid_points(c, g), q = grid_points(c, g);
+    CHECK(p == q);
+    sizes.insert(p.size());
+    if (c.source->name == "uniform") CHECK((p.size() >= g.min_points && p.size() <= g.max_points));
+  }
+  CHECK(sizes.size() > 1);  // n comes from the case seed
+}
+
+TEST_CASE("case grid: rerun command, corpus stem, shrink try limit", "[case_grid]") {
+  const CaseGrid g = small_grid();
+  CHECK(grid_case_command("qhull", g, "lattice", 2) ==
+        "dtlab fuzz --target qhull --family lattice --case 2 --seed 7 --min-points 5 --points 40 --out DIR");
+  CHECK(corpus_stem("dtlab:naive", "uniform", 12, 3) == "dtlab_naive-uniform-n12-3");
+  CHECK(shrink_try_limit(0.01, 60) == 2);    // 2 s at least
+  CHECK(shrink_try_limit(1.5, 60) == 15);    // 10x the original run
+  CHECK(shrink_try_limit(100, 60) == 60);    // the time limit at most
+  CHECK(shrink_try_limit(0.01, 1) == 1);     // a limit under 2 s is kept
+  CHECK_THROWS_AS(fuzz_family_sources({"no-such-family"}), std::invalid_argument);
+}
