@@ -66,9 +66,9 @@ TEST_CASE("case grid: rerun command, corpus stem, shrink try limit", "[case_grid
   CHECK(grid_case_command("qhull", g, "lattice", 2) ==
         "dtlab fuzz --target qhull --family lattice --case 2 --seed 7 --min-points 5 --points 40 --out DIR");
   CHECK(corpus_stem("dtlab:naive", "uniform", 12, 3) == "dtlab_naive-uniform-n12-3");
-  CHECK(shrink_try_limit(0.01, 60) == 2);    // 2 s at least
-  CHECK(shrink_try_limit(1.5, 60) == 15);    // 10x the original run
-  CHECK(shrink_try_limit(100, 60) == 60);    // the time limit at most
-  CHECK(shrink_try_limit(0.01, 1) == 1);     // a limit under 2 s is kept
+  CHECK(shrink_try_limit(0.01, 60) == 2);  // 2 s at least
+  CHECK(shrink_try_limit(1.5, 60) == 15);  // 10x the original run
+  CHECK(shrink_try_limit(100, 60) == 60);  // the time limit at most
+  CHECK(shrink_try_limit(0.01, 1) == 1);   // a limit under 2 s is kept
   CHECK_THROWS_AS(fuzz_family_sources({"no-such-family"}), std::invalid_argument);
 }
