@@ -17,13 +17,8 @@
 namespace dtlab {
 namespace {
 
-struct Registry {
-  std::mutex lock;
-  std::vector<CommandPeer> peers;
-};
-
-Registry& registry() {
-  static Registry r;
+CommandPeerRegistry& registry() {
+  static CommandPeerRegistry r("peer");
   return r;
 }
 
@@ -168,34 +163,39 @@ std::string command_text(const std::vector<std::string>& argv) {
   return s;
 }
 
-void register_command_peer(const CommandPeer& peer) {
-  if (is_builtin_peer_name(peer.name))
-    throw std::invalid_argument("peer name '" + peer.name + "' is a built-in peer's");
-  Registry& r = registry();
-  std::lock_guard<std::mutex> g(r.lock);
-  for (const CommandPeer& p : r.peers)
+void CommandPeerRegistry::add(const CommandPeer& peer) {
+  std::lock_guard<std::mutex> g(lock_);
+  for (const CommandPeer& p : peers_)
     if (p.name == peer.name) {
       if (p.argv == peer.argv) return;
-      throw std::invalid_argument("peer '" + peer.name + "' is defined twice with different commands");
+      throw std::invalid_argument(kind_ + " '" + peer.name + "' is defined twice with different commands");
     }
-  r.peers.push_back(peer);
+  peers_.push_back(peer);
 }
 
-std::optional<CommandPeer> find_command_peer(const std::string& name) {
-  Registry& r = registry();
-  std::lock_guard<std::mutex> g(r.lock);
-  for (const CommandPeer& p : r.peers)
+std::optional<CommandPeer> CommandPeerRegistry::find(const std::string& name) const {
+  std::lock_guard<std::mutex> g(lock_);
+  for (const CommandPeer& p : peers_)
     if (p.name == name) return p;
   return std::nullopt;
 }
 
-std::vector<std::string> command_peer_names() {
-  Registry& r = registry();
-  std::lock_guard<std::mutex> g(r.lock);
+std::vector<std::string> CommandPeerRegistry::names() const {
+  std::lock_guard<std::mutex> g(lock_);
   std::vector<std::string> names;
-  for (const CommandPeer& p : r.peers) names.push_back(p.name);
+  for (const CommandPeer& p : peers_) names.push_back(p.name);
   return names;
 }
+
+void register_command_peer(const CommandPeer& peer) {
+  if (is_builtin_peer_name(peer.name))
+    throw std::invalid_argument("peer name '" + peer.name + "' is a built-in peer's");
+  registry().add(peer);
+}
+
+std::optional<CommandPeer> find_command_peer(const std::string& name) { return registry().find(name); }
+
+std::vector<std::string> command_peer_names() { return registry().names(); }
 
 std::string peer_definition_arguments(const std::string& name) {
   const auto p = find_command_peer(name);

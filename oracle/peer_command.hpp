@@ -9,6 +9,7 @@
 // it runs under the same limits and is judged by the same adapter and checker.
 #include <optional>
 #include <span>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,23 @@ namespace dtlab {
 struct CommandPeer {
   std::string name;
   std::vector<std::string> argv;  // with the {in} and {out} placeholders
+};
+
+// The command peers defined in this process (one registry for Delaunay peers, one for
+// Voronoi peers), thread-safe. `add` accepts the same definition twice and throws
+// std::invalid_argument for one name with two commands; `kind` names the registry in
+// that message ("peer", "Voronoi peer").
+class CommandPeerRegistry {
+ public:
+  explicit CommandPeerRegistry(std::string kind) : kind_(std::move(kind)) {}
+  void add(const CommandPeer& peer);
+  std::optional<CommandPeer> find(const std::string& name) const;
+  std::vector<std::string> names() const;
+
+ private:
+  std::string kind_;
+  mutable std::mutex lock_;
+  std::vector<CommandPeer> peers_;
 };
 
 // "NAME=COMMAND". Throws std::invalid_argument naming what is wrong: no '=', a bad

@@ -18,13 +18,8 @@ namespace dtlab {
 
 namespace {
 
-struct Registry {
-  std::mutex lock;
-  std::vector<CommandPeer> peers;
-};
-
-Registry& registry() {
-  static Registry r;
+CommandPeerRegistry& registry() {
+  static CommandPeerRegistry r("Voronoi peer");
   return r;
 }
 
@@ -152,31 +147,12 @@ void register_voronoi_command_peer(const CommandPeer& peer) {
     if (n == peer.name) throw std::invalid_argument("Voronoi peer name '" + peer.name + "' is a built-in peer's");
   if (is_builtin_peer_name(peer.name))
     throw std::invalid_argument("Voronoi peer name '" + peer.name + "' is a built-in Delaunay peer's");
-  Registry& r = registry();
-  std::lock_guard<std::mutex> g(r.lock);
-  for (const CommandPeer& p : r.peers)
-    if (p.name == peer.name) {
-      if (p.argv == peer.argv) return;
-      throw std::invalid_argument("Voronoi peer '" + peer.name + "' is defined twice with different commands");
-    }
-  r.peers.push_back(peer);
+  registry().add(peer);
 }
 
-std::optional<CommandPeer> find_voronoi_command_peer(const std::string& name) {
-  Registry& r = registry();
-  std::lock_guard<std::mutex> g(r.lock);
-  for (const CommandPeer& p : r.peers)
-    if (p.name == name) return p;
-  return std::nullopt;
-}
+std::optional<CommandPeer> find_voronoi_command_peer(const std::string& name) { return registry().find(name); }
 
-std::vector<std::string> voronoi_command_peer_names() {
-  Registry& r = registry();
-  std::lock_guard<std::mutex> g(r.lock);
-  std::vector<std::string> names;
-  for (const CommandPeer& p : r.peers) names.push_back(p.name);
-  return names;
-}
+std::vector<std::string> voronoi_command_peer_names() { return registry().names(); }
 
 std::string voronoi_peer_definition_arguments(const std::string& name) {
   const auto p = find_voronoi_command_peer(name);
