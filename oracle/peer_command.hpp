@@ -7,9 +7,9 @@
 //          either orientation) and, when it drops or renumbers points, {out}.node.
 // Once registered, NAME is a peer name like the built-in ones (oracle/peers.hpp):
 // it runs under the same limits and is judged by the same adapter and checker.
+#include <mutex>
 #include <optional>
 #include <span>
-#include <mutex>
 #include <string>
 #include <vector>
 
