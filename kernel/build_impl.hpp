@@ -14,12 +14,12 @@
 #include "kernel/canonical_order.hpp"
 #include "kernel/enclosing_tet.hpp"
 #include "kernel/ids.hpp"
-#include "kernel/insertion_log.hpp"
 #include "kernel/inserter.hpp"
-#include "kernel/parallel_build.hpp"
-#include "kernel/progress.hpp"
+#include "kernel/insertion_log.hpp"
 #include "kernel/page_release.hpp"
+#include "kernel/parallel_build.hpp"
 #include "kernel/parallel_for.hpp"
+#include "kernel/progress.hpp"
 #include "kernel/spatial_order.hpp"
 
 namespace dtlab {
@@ -29,12 +29,16 @@ namespace detail {
 template <PredicateBackend B>
 bool collinear(const B& pred, const Point3& a, const Point3& b, const Point3& c) {
   // Collinear iff all three coordinate projections are (orient3d on zeroed copies).
-  const auto proj = [&](auto get) {
-    return pred.orient3d(get(a), get(b), get(c), Point3{0, 0, 1});
-  };
-  return proj([](const Point3& p) { return Point3{p.x, p.y, 0}; }) == 0 &&
-         proj([](const Point3& p) { return Point3{p.y, p.z, 0}; }) == 0 &&
-         proj([](const Point3& p) { return Point3{p.z, p.x, 0}; }) == 0;
+  const auto proj = [&](auto get) { return pred.orient3d(get(a), get(b), get(c), Point3{0, 0, 1}); };
+  return proj([](const Point3& p) {
+           return Point3{p.x, p.y, 0};
+         }) == 0 &&
+         proj([](const Point3& p) {
+           return Point3{p.y, p.z, 0};
+         }) == 0 &&
+         proj([](const Point3& p) {
+           return Point3{p.z, p.x, 0};
+         }) == 0;
 }
 
 // The finite live tets, vertex ids translated back to input indices (vertex v is
@@ -94,6 +98,98 @@ inline void resolve_log(BuildResult& res, const InsertionLog& log, std::vector<s
   if (log.failure) res.failure = BuildFailure{log.failure->kind, order[log.failure->rank], log.failure->detail};
   for (const std::uint32_t k : log.skipped) res.skipped.push_back(order[k]);
   std::sort(res.skipped.begin(), res.skipped.end());
+}
+
+// What the insertion stages share: the renumbered points, the first tet, the log of
+// duplicates and failures, the result they fill (stats, tets) and the progress hook.
+template <PredicateBackend B>
+struct InsertionJob {
+  std::vector<Point3>& pts;
+  const B& pred;
+  const BuildOptions& opt;
+  std::vector<std::uint32_t>& order;
+  BuildResult& res;
+  std::uint32_t n, inf;
+  std::uint32_t first[4];
+  bool infinite;
+  unsigned threads;
+  Progress* progress;
+  std::chrono::steady_clock::time_point t0;
+  InsertionLog log;
+  // With the infinite vertex, the first tet's vertices are input points inserted first.
+  bool is_first(std::uint32_t k) const {
+    return infinite && (k == first[0] || k == first[1] || k == first[2] || k == first[3]);
+  }
+};
+
+// The serial build: one inserter, the points in BRIO order; fills j.res.
+template <PredicateBackend B>
+void insert_serially(InsertionJob<B>& j) {
+  Inserter<B> ins(j.pts.data(), j.pred, j.inf, j.opt.seed);
+  ins.reserve(j.n);
+  ins.check_combinatorics(j.opt.check_combinatorics, j.pts.size());
+  ins.start(j.first[0], j.first[1], j.first[2], j.first[3]);
+  if (j.infinite) ins.stats().inserted = 4;
+  for (std::uint32_t k = 0; k < j.n; ++k) {
+    progress_advance(j.progress, k);
+    if (j.is_first(k)) continue;
+    const auto outcome = ins.insert(k);
+    if (outcome == Inserter<B>::Outcome::duplicate) {
+      j.log.duplicates.push_back({k, ins.found()});
+    } else if (outcome == Inserter<B>::Outcome::failed) {
+      j.log.failure = InsertionLog::Failure{k, ins.failure(), ins.failure_detail()};
+      for (std::uint32_t q = k; q < j.n; ++q)
+        if (!j.is_first(q)) j.log.skipped.push_back(q);
+      break;
+    }
+  }
+  j.res.stats = ins.stats();
+  j.res.stats.orient3d_calls = ins.geometry().orient_calls;
+  j.res.stats.insphere_calls = ins.geometry().insphere_calls;
+  j.res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - j.t0).count();
+  j.res.peak_tets = ins.mesh().size();
+  resolve_log(j.res, j.log, j.order);
+  std::vector<TetRecord>& records = ins.mesh().records();
+  detail::compact(records.data(), records.size(), j.n, j.order, j.res.mesh.tets);
+  std::vector<TetRecord>().swap(records);
+}
+
+// The threaded build (kernel/parallel_build.hpp); false, with nothing kept, when its
+// storage had to grow: an open defect (kernel/README.md) lets such a build, on
+// quadratic-size outputs such as the moment curve's, return tets other than the serial
+// build's, so the caller redoes it serially.
+template <PredicateBackend B>
+bool insert_threaded(InsertionJob<B>& j) {
+  ParallelInsertion<B> par(j.pts.data(), j.n, j.inf, j.pred, j.opt, j.threads);
+  par.start(j.first, 4);
+  // BRIO rounds one after the other (the input order is one round).
+  const std::vector<std::size_t> rounds =
+      j.opt.order == InsertionOrder::brio ? brio_rounds(j.n) : std::vector<std::size_t>{0, j.n};
+  for (std::size_t r = 0; r + 1 < rounds.size(); ++r) {
+    progress_advance(j.progress, rounds[r]);  // on the calling thread, between rounds
+    std::vector<std::uint32_t> list;
+    list.reserve(rounds[r + 1] - rounds[r]);
+    for (std::size_t k = rounds[r]; k < rounds[r + 1]; ++k)
+      if (!j.is_first(static_cast<std::uint32_t>(k))) list.push_back(static_cast<std::uint32_t>(k));
+    if (!par.insert(std::move(list), j.log)) {
+      for (std::size_t k = rounds[r + 1]; k < j.n; ++k)
+        if (!j.is_first(static_cast<std::uint32_t>(k))) j.log.skipped.push_back(static_cast<std::uint32_t>(k));
+      break;
+    }
+  }
+  if (par.grew()) {
+    std::free(par.store().release_records());
+    j.log = InsertionLog{};
+    return false;
+  }
+  j.res.stats = par.finish();
+  if (j.infinite) j.res.stats.inserted += 4;
+  j.res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - j.t0).count();
+  j.res.peak_tets = par.store().size();
+  resolve_log(j.res, j.log, j.order);
+  compact_canonical(par.store().records(), par.store().size(), j.n, j.order, j.res.mesh.tets, j.threads);
+  std::free(par.store().release_records());
+  return true;
 }
 
 // `pts` holds the input points in input order; the build owns it, permutes it in place
@@ -175,82 +271,23 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
     if (pred.orient3d(pts[n], pts[n + 1], pts[n + 2], pts[n + 3]) < 0) std::swap(first[0], first[1]);
   }
 
-  const bool infinite = opt.boundary == Boundary::infinite;
-  const auto is_first = [&](std::uint32_t k) {
-    return infinite && (k == first[0] || k == first[1] || k == first[2] || k == first[3]);
-  };
-  const unsigned threads = std::min(thread_count(opt.threads), kMaxBuildThreads);
-  InsertionLog log;
-  Progress* const progress = thread_progress();  // stage "insert": points of the order done
-  progress_begin(progress, "insert", n);
-  const auto t0 = std::chrono::steady_clock::now();
-  // The serial build: one inserter, the points in BRIO order.
-  const auto build_serially = [&] {
-    Inserter<B> ins(pts.data(), pred, inf, opt.seed);
-    ins.reserve(n);
-    ins.check_combinatorics(opt.check_combinatorics, pts.size());
-    ins.start(first[0], first[1], first[2], first[3]);
-    if (infinite) ins.stats().inserted = 4;
-    for (std::uint32_t k = 0; k < n; ++k) {
-      progress_advance(progress, k);
-      if (is_first(k)) continue;
-      const auto outcome = ins.insert(k);
-      if (outcome == Inserter<B>::Outcome::duplicate) {
-        log.duplicates.push_back({k, ins.found()});
-      } else if (outcome == Inserter<B>::Outcome::failed) {
-        log.failure = InsertionLog::Failure{k, ins.failure(), ins.failure_detail()};
-        for (std::uint32_t j = k; j < n; ++j)
-          if (!is_first(j)) log.skipped.push_back(j);
-        break;
-      }
-    }
-    res.stats = ins.stats();
-    res.stats.orient3d_calls = ins.geometry().orient_calls;
-    res.stats.insphere_calls = ins.geometry().insphere_calls;
-    res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    res.peak_tets = ins.mesh().size();
-    resolve_log(res, log, order);
-    std::vector<TetRecord>& records = ins.mesh().records();
-    detail::compact(records.data(), records.size(), n, order, res.mesh.tets);
-    std::vector<TetRecord>().swap(records);
-  };
-  // The threaded build; false (nothing kept) when its storage had to grow: an open
-  // defect (kernel/README.md) lets such a build, on quadratic-size outputs such as the
-  // moment curve's, return tets other than the serial build's, so it is redone serially.
-  const auto build_threaded = [&] {
-    ParallelInsertion<B> par(pts.data(), n, inf, pred, opt, threads);
-    par.start(first, 4);
-    // BRIO rounds one after the other (the input order is one round).
-    const std::vector<std::size_t> rounds =
-        opt.order == InsertionOrder::brio ? brio_rounds(n) : std::vector<std::size_t>{0, n};
-    for (std::size_t r = 0; r + 1 < rounds.size(); ++r) {
-      progress_advance(progress, rounds[r]);  // on the calling thread, between rounds
-      std::vector<std::uint32_t> list;
-      list.reserve(rounds[r + 1] - rounds[r]);
-      for (std::size_t k = rounds[r]; k < rounds[r + 1]; ++k)
-        if (!is_first(static_cast<std::uint32_t>(k))) list.push_back(static_cast<std::uint32_t>(k));
-      if (!par.insert(std::move(list), log)) {
-        for (std::size_t k = rounds[r + 1]; k < n; ++k)
-          if (!is_first(static_cast<std::uint32_t>(k))) log.skipped.push_back(static_cast<std::uint32_t>(k));
-        break;
-      }
-    }
-    if (par.grew()) {
-      std::free(par.store().release_records());
-      log = InsertionLog{};
-      return false;
-    }
-    res.stats = par.finish();
-    if (infinite) res.stats.inserted += 4;
-    res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    res.peak_tets = par.store().size();
-    resolve_log(res, log, order);
-    compact_canonical(par.store().records(), par.store().size(), n, order, res.mesh.tets, threads);
-    std::free(par.store().release_records());
-    return true;
-  };
-  if (threads <= 1 || !build_threaded()) build_serially();
-  if (!res.failure) progress_advance(progress, n);
+  InsertionJob<B> job{pts,
+                      pred,
+                      opt,
+                      order,
+                      res,
+                      n,
+                      inf,
+                      {first[0], first[1], first[2], first[3]},
+                      opt.boundary == Boundary::infinite,
+                      std::min(thread_count(opt.threads), kMaxBuildThreads),
+                      thread_progress(),
+                      {},
+                      {}};
+  progress_begin(job.progress, "insert", n);  // stage "insert": points of the order done
+  job.t0 = std::chrono::steady_clock::now();
+  if (job.threads <= 1 || !insert_threaded(job)) insert_serially(job);
+  if (!res.failure) progress_advance(job.progress, n);
   pts.resize(n);
   detail::restore_input_order(pts, order);
   res.mesh.points = std::move(pts);
