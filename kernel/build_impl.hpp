@@ -176,6 +176,7 @@ bool insert_threaded(InsertionJob<B>& j) {
         if (!j.is_first(static_cast<std::uint32_t>(k))) j.log.skipped.push_back(static_cast<std::uint32_t>(k));
       break;
     }
+    if (par.grew()) break;  // redone serially: no later round is worth inserting
   }
   if (par.grew()) {
     std::free(par.store().release_records());

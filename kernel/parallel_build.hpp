@@ -80,7 +80,7 @@ class ParallelInsertion {
   }
 
   SharedTets& store() { return store_; }
-  // True once the storage had to grow (see build_with's fallback).
+  // True once the storage had to grow (build_impl.hpp's insert_threaded then gives up).
   bool grew() const { return grew_; }
 
   // The first tet (and its infinite neighbours) on thread 0's view; every thread's
