@@ -54,7 +54,7 @@ tsan: setup
 	@[ -f build/tsan/build.ninja ] || cmake --preset tsan >/dev/null
 	@cmake --build --preset tsan -j $(JOBS)
 	@ctest --test-dir build/tsan -L 'kernel|voronoi' -LE slow -j $(JOBS) --output-on-failure
-	@build/tsan/oracle/dtlab_oracle_tests "[threads]~[peers]"
+	@build/tsan/oracle/check/dtlab_oracle_check_tests "[threads]"
 
 bench: build
 	@$(BUILD)/bench/dtlab_bench_predicates

@@ -8,10 +8,10 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "oracle/cgal_oracle.hpp"
-#include "oracle/child_process.hpp"
-#include "oracle/peers.hpp"
-#include "oracle/tetgen_oracle.hpp"
+#include "oracle/peers/cgal_oracle.hpp"
+#include "oracle/peers/child_process.hpp"
+#include "oracle/peers/peers.hpp"
+#include "oracle/peers/tetgen_oracle.hpp"
 
 namespace dtlab {
 
@@ -22,7 +22,7 @@ struct ChildReport {
   double seconds;
   double peak_mb_self;
   double peak_mb_children;
-  double peak_mb_peer;  // a peer's helper process (oracle/peers.hpp), 0 for the others
+  double peak_mb_peer;  // a peer's helper process (oracle/peers/peers.hpp), 0 for the others
   std::uint64_t tets;
   char note[200];
 };

@@ -8,8 +8,8 @@
 #include "cli/command.hpp"
 #include "cli/number_options.hpp"
 #include "kernel/tet_io.hpp"
-#include "oracle/check.hpp"
-#include "oracle/report_json.hpp"
+#include "oracle/check/check.hpp"
+#include "oracle/check/report_json.hpp"
 
 namespace dtlab::cli {
 

@@ -19,7 +19,7 @@
 #include "experiments/benchmark.hpp"
 #include "experiments/leaderboard.hpp"
 #include "experiments/thesis_failures.hpp"
-#include "oracle/peer_command.hpp"
+#include "oracle/peers/peer_command.hpp"
 #include "voronoi_check/voronoi_peer_command.hpp"
 
 namespace dtlab::cli {

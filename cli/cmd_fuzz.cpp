@@ -29,10 +29,10 @@
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
-#include "oracle/check.hpp"
-#include "oracle/compare.hpp"
-#include "oracle/peer_command.hpp"
-#include "oracle/peers.hpp"
+#include "oracle/check/check.hpp"
+#include "oracle/check/compare.hpp"
+#include "oracle/peers/peer_command.hpp"
+#include "oracle/peers/peers.hpp"
 #include "voronoi_check/voronoi_peers.hpp"
 
 namespace dtlab::cli {

@@ -1,6 +1,6 @@
-// `dtlab oracle INPUT [--against PEERS|all] [kernel options as tetra] [--json]`: builds our DT, runs each peer in its own process (oracle/peers.hpp),
+// `dtlab oracle INPUT [--against PEERS|all] [kernel options as tetra] [--json]`: builds our DT, runs each peer in its own process (oracle/peers/peers.hpp),
 // judges every answer with the exact checker against the input points, and compares
-// ours canonically (oracle/compare.hpp) with every peer whose answer is proven
+// ours canonically (oracle/check/compare.hpp) with every peer whose answer is proven
 // Delaunay.
 // Exit 0: ours is proven Delaunay and agrees with every Delaunay answer, and every
 // requested peer answered; 1: ours is wrong or differs; 2: bad usage or input;
@@ -23,13 +23,13 @@
 #include "kernel/input_error.hpp"
 #include "kernel/parallel_for.hpp"
 #include "kernel/point_io.hpp"
-#include "oracle/check.hpp"
-#include "oracle/compare.hpp"
-#include "oracle/peer_json.hpp"
-#include "oracle/oracle_session.hpp"
-#include "oracle/peers.hpp"
-#include "oracle/verdict.hpp"
-#include "oracle/report_json.hpp"
+#include "oracle/check/check.hpp"
+#include "oracle/check/compare.hpp"
+#include "oracle/peers/peer_json.hpp"
+#include "oracle/peers/oracle_session.hpp"
+#include "oracle/peers/peers.hpp"
+#include "oracle/peers/verdict.hpp"
+#include "oracle/check/report_json.hpp"
 
 namespace dtlab::cli {
 namespace {

@@ -19,8 +19,8 @@
 #include "kernel/parallel_for.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
-#include "oracle/check.hpp"
-#include "oracle/report_json.hpp"
+#include "oracle/check/check.hpp"
+#include "oracle/check/report_json.hpp"
 
 namespace dtlab::cli {
 

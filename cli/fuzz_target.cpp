@@ -11,7 +11,7 @@
 #include "cli/progress.hpp"
 #include "experiments/peer_campaign.hpp"
 #include "experiments/voronoi_campaign.hpp"
-#include "oracle/peer_command.hpp"
+#include "oracle/peers/peer_command.hpp"
 #include "voronoi_check/voronoi_peer_command.hpp"
 
 namespace dtlab::cli {

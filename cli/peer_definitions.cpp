@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "cli/cli_error.hpp"
-#include "oracle/peer_command.hpp"
-#include "oracle/peers_file.hpp"
+#include "oracle/peers/peer_command.hpp"
+#include "oracle/peers/peers_file.hpp"
 #include "voronoi_check/voronoi_peer_command.hpp"
 
 namespace dtlab::cli {

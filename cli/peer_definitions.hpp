@@ -1,6 +1,6 @@
 #pragma once
 // `--peer NAME=COMMAND` (repeatable), `--voronoi-peer NAME=COMMAND` (repeatable) and a
-// peers file: Delaunay codes (oracle/peer_command.hpp) and Voronoi codes
+// peers file: Delaunay codes (oracle/peers/peer_command.hpp) and Voronoi codes
 // (voronoi_check/voronoi_peer_command.hpp) given by a command line, usable wherever a
 // built-in peer name is. One definition for oracle, fuzz, voronoi and experiment
 // leaderboard.

@@ -1,6 +1,6 @@
 #include "cli/tetra_report.hpp"
 
-#include "oracle/report_json.hpp"
+#include "oracle/check/report_json.hpp"
 
 namespace dtlab::cli {
 

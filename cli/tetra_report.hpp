@@ -8,7 +8,7 @@
 #include "cli/build_options.hpp"
 #include "kernel/build.hpp"
 #include "options/tetra_summary.hpp"  // tetra_summary: the JSON form
-#include "oracle/check.hpp"
+#include "oracle/check/check.hpp"
 
 namespace dtlab::cli {
 

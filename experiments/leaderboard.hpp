@@ -1,6 +1,6 @@
 #pragma once
 // `dtlab experiment leaderboard`: which Delaunay code can you trust? Every peer
-// (oracle/peers.hpp) on every fuzz family and on samples of CGAL's demo meshes, at
+// (oracle/peers/peers.hpp) on every fuzz family and on samples of CGAL's demo meshes, at
 // several sizes and seeds, each answer judged by the exact checker against the input;
 // failures shrunk to small reproducible inputs; a speed table against CGAL.
 // Writes leaderboard.csv, report.md/.html, environment.json, corpus/ and data/.

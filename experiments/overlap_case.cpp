@@ -8,7 +8,7 @@
 #include "experiments/point_sources.hpp"
 #include "experiments/thesis_parts.hpp"
 #include "fuzz/shrink.hpp"
-#include "oracle/check.hpp"
+#include "oracle/check/check.hpp"
 
 namespace dtlab::experiments {
 

@@ -9,9 +9,9 @@
 #include "fuzz/campaign.hpp"
 #include "fuzz/outcome.hpp"
 #include "fuzz/shrink.hpp"
-#include "oracle/peer_command.hpp"
-#include "oracle/peer_json.hpp"
-#include "oracle/served_child.hpp"
+#include "oracle/peers/peer_command.hpp"
+#include "oracle/peers/peer_json.hpp"
+#include "oracle/peers/served_child.hpp"
 
 namespace dtlab::experiments {
 

@@ -1,5 +1,5 @@
 #pragma once
-// A campaign that judges one peer (oracle/peers.hpp) instead of dtlab: point sets x
+// A campaign that judges one peer (oracle/peers/peers.hpp) instead of dtlab: point sets x
 // cases, each run in the peer's own process and judged by the exact checker; a
 // failing case is shrunk by delta debugging (fuzz/shrink.hpp) to a smallest input
 // with the same verdict and saved in <out>/corpus with the command that reproduces
@@ -12,7 +12,7 @@
 
 #include "experiments/case_grid.hpp"
 #include "fuzz/shrink.hpp"
-#include "oracle/peers.hpp"
+#include "oracle/peers/peers.hpp"
 
 namespace dtlab::experiments {
 

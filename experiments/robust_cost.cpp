@@ -9,7 +9,7 @@
 #include "experiments/report.hpp"
 #include "experiments/thesis_parts.hpp"
 #include "fuzz/outcome.hpp"
-#include "oracle/check.hpp"
+#include "oracle/check/check.hpp"
 
 namespace dtlab::experiments {
 

@@ -8,7 +8,7 @@
 #include <mutex>
 
 #include "fuzz/work_queue.hpp"
-#include "oracle/served_child.hpp"
+#include "oracle/peers/served_child.hpp"
 
 namespace dtlab::experiments {
 namespace {

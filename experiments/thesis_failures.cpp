@@ -351,7 +351,7 @@ void intro_markdown(std::ostream& o, const json& rates, bool quick) {
        "as the number of points grew, a tolerance (epsilon) that did not help, a big enclosing tetrahedron, "
        "and ray-intersection sampling that put points outside concave meshes. Each is reproduced here with "
        "dtlab's one inserter, switching only the predicate backend, the boundary method or the sampler, and "
-       "every result is judged by the exact checker (`oracle/check.hpp`).";
+       "every result is judged by the exact checker (`oracle/check/check.hpp`).";
   if (quick)
     o << " **Quick run** (`--quick`): " << rates["cases"] << " cases per cell and fewer sizes, so the intervals "
       << "are wide; the full run uses 64 cases per cell. Cite the full run, not this one.";

@@ -10,9 +10,9 @@
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
-#include "oracle/child_process.hpp"
-#include "oracle/exact_volume.hpp"
-#include "oracle/temp_dir.hpp"
+#include "oracle/peers/child_process.hpp"
+#include "oracle/check/exact_volume.hpp"
+#include "oracle/peers/temp_dir.hpp"
 #include "predicates/adaptive.hpp"
 
 namespace dtlab {

@@ -2,8 +2,8 @@
 // Tetrahedralized pieces for FEM: each piece's closed surface given to TetGen as a
 // piecewise linear complex (`tetgen -pY`: a constrained Delaunay tetrahedralization that
 // keeps the surface triangles as they are, Steiner points only inside), run as a child
-// process (oracle/child_process.hpp) under a time limit. The tets' exact volume is
-// compared with the surface's (oracle/exact_volume.hpp): equal when the tets fill
+// process (oracle/peers/child_process.hpp) under a time limit. The tets' exact volume is
+// compared with the surface's (oracle/check/exact_volume.hpp): equal when the tets fill
 // exactly the region the surface bounds.
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "fracture/volume_identity.hpp"
 
-#include "oracle/exact_volume.hpp"
+#include "oracle/check/exact_volume.hpp"
 
 namespace dtlab {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The volume identity of a fracture, sum(piece volumes) = mesh volume, in floating
 // point and exactly: the signed volumes of the written (double) coordinates summed in
-// integer arithmetic (oracle/exact_volume.hpp), no rounding anywhere.
+// integer arithmetic (oracle/check/exact_volume.hpp), no rounding anywhere.
 #include "fracture/fracture.hpp"
 
 namespace dtlab {

@@ -1,5 +1,5 @@
 #pragma once
-// How a fuzz case is compared with an external oracle: any peer of oracle/peers.hpp
+// How a fuzz case is compared with an external oracle: any peer of oracle/peers/peers.hpp
 // (CGAL, TetGen, qhull, scipy, gmsh, ...), run in its own process. The campaign only
 // knows this signature; the CLI builds the hooks from oracle/ and passes them in, so
 // fuzz/ stays free of the peers.

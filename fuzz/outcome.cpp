@@ -4,7 +4,7 @@
 #include <chrono>
 #include <exception>
 
-#include "oracle/check.hpp"
+#include "oracle/check/check.hpp"
 #include "predicates/exact.hpp"
 
 namespace dtlab::fuzz {

@@ -9,8 +9,8 @@
 // its monomials (its permanent). The last addition never changes the sign (rounding
 // is monotone and 0 is representable), so it costs a factor (1+eps), not a term eps.
 //
-// Users: predicates/adaptive.{hpp,cpp} (stages A..D), oracle/filtered_exact.cpp (the
-// checker's float filter in front of GMP) and oracle/hull_degree.cpp (the cover
+// Users: predicates/adaptive.{hpp,cpp} (stages A..D), oracle/check/filtered_exact.cpp (the
+// checker's float filter in front of GMP) and oracle/check/hull_degree.cpp (the cover
 // proof's float filter). A new filter takes its bounds from here, with its own
 // derivation next to its code when it needs a bound of its own.
 

@@ -1,7 +1,7 @@
 // dtlab_voronoi_peer: runs one Voronoi peer in this process so that dtlab does not
 // have to.
 //   dtlab_voronoi_peer PEER IN OUT XMIN YMIN ZMIN XMAX YMAX ZMAX
-//       IN: sites (oracle/peer_exchange.hpp), OUT: cells (voronoi_check/cell_exchange.hpp)
+//       IN: sites (oracle/peers/peer_exchange.hpp), OUT: cells (voronoi_check/cell_exchange.hpp)
 //   dtlab_voronoi_peer --version PEER
 // PEER: voro++, cgal-dual, dtlab:BACKEND. Exit: 0 answered, 2 bad usage, 3 the peer
 // refused (its message on the last line of stderr), 4 not built in.

@@ -58,7 +58,7 @@ enum class VoronoiVerdict {
   hung,
   refused,
   not_installed,
-  out_of_memory,  // ended for lack of memory (oracle/child_process.hpp's out_of_memory)
+  out_of_memory,  // ended for lack of memory (oracle/peers/child_process.hpp's out_of_memory)
 };
 const char* voronoi_verdict_name(VoronoiVerdict v);
 

@@ -8,8 +8,8 @@
 
 #include "kernel/build.hpp"
 #include "kernel/parallel_for.hpp"
-#include "oracle/facet_table.hpp"
-#include "oracle/filtered_exact.hpp"
+#include "oracle/check/facet_table.hpp"
+#include "oracle/check/filtered_exact.hpp"
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/voronoi.hpp"
 #include "voronoi_check/exact_centre.hpp"

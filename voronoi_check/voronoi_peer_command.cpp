@@ -9,9 +9,9 @@
 #include <stdexcept>
 
 #include "kernel/point_io.hpp"
-#include "oracle/child_process.hpp"
-#include "oracle/peer_child.hpp"
-#include "oracle/temp_dir.hpp"
+#include "oracle/peers/child_process.hpp"
+#include "oracle/peers/peer_child.hpp"
+#include "oracle/peers/temp_dir.hpp"
 #include "voronoi_check/cells_file.hpp"
 
 namespace dtlab {
@@ -170,7 +170,7 @@ VoronoiPeerRun run_voronoi_command_peer(const CommandPeer& peer, std::span<const
   ChildLimits limits =
       ChildLimits::of(options.timeout_s, log, options.memory_bytes ? options.memory_bytes : default_peer_memory());
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  limits.memory_bytes = 0;  // as for the Delaunay command peers (oracle/peer_command.cpp)
+  limits.memory_bytes = 0;  // as for the Delaunay command peers (oracle/peers/peer_command.cpp)
 #endif
   const ChildResult c = run_child(expand(peer, in, out, box), limits);
   const bool failed = no_answer(c, log, run);

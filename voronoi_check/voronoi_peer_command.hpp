@@ -1,6 +1,6 @@
 #pragma once
 // Voronoi peers given by a command line (`--voronoi-peer NAME=COMMAND`, or a peers file
-// entry with kind = "voronoi"), as the Delaunay command peers (oracle/peer_command.hpp):
+// entry with kind = "voronoi"), as the Delaunay command peers (oracle/peers/peer_command.hpp):
 // COMMAND is an argv template, split like shell words but never run by a shell, with
 //   {in}      the sites as a TetGen .node, numbered from 0;
 //   {sites}   the sites as "id x y z" lines (voro++'s input format, ids from 0) in the
@@ -12,13 +12,13 @@
 //   {xmin} {ymin} {zmin} {xmax} {ymax} {zmax}   one coordinate of the box each.
 // It needs {in} or {sites}, and {out} or {sites}. Once registered, NAME is a Voronoi
 // peer name like the built-in ones (voronoi_peers.hpp): it runs under the same limits
-// (oracle/child_process.hpp, its own process group) and is judged by the same checker.
+// (oracle/peers/child_process.hpp, its own process group) and is judged by the same checker.
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "oracle/peer_command.hpp"
+#include "oracle/peers/peer_command.hpp"
 #include "voronoi_check/voronoi_peers.hpp"
 
 namespace dtlab {

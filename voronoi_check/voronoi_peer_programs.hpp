@@ -2,11 +2,11 @@
 // The Voronoi peers the dtlab_voronoi_peer helper runs in its own process
 // (voronoi_check/peer_voronoi_main.cpp): each takes the sites and the box and returns
 // its cells clipped to the box. Refusals throw PeerRefusal, peers built without their
-// library PeerNotInstalled (oracle/peer_programs.hpp); crashes and hangs are not caught.
+// library PeerNotInstalled (oracle/peers/peer_programs.hpp); crashes and hangs are not caught.
 #include <chrono>
 #include <vector>
 
-#include "oracle/peer_programs.hpp"
+#include "oracle/peers/peer_programs.hpp"
 #include "voronoi_check/cell_exchange.hpp"
 
 namespace dtlab {

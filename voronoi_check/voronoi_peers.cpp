@@ -9,10 +9,10 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "oracle/child_process.hpp"
-#include "oracle/peer_child.hpp"
-#include "oracle/peer_exchange.hpp"
-#include "oracle/temp_dir.hpp"
+#include "oracle/peers/child_process.hpp"
+#include "oracle/peers/peer_child.hpp"
+#include "oracle/peers/peer_exchange.hpp"
+#include "oracle/peers/temp_dir.hpp"
 #include "voronoi_check/cell_exchange.hpp"
 #include "voronoi_check/voronoi_peer_command.hpp"
 
@@ -39,7 +39,7 @@ std::uint64_t memory_limit(const std::string& name, const VoronoiPeerOptions& o)
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
   // A sanitizer build of our own helper reserves terabytes of shadow address space as
   // it starts, so RLIMIT_AS would kill it before it runs (as for the DT peer helpers in
-  // oracle/peers.cpp): in sanitizer builds only it runs without the memory limit.
+  // oracle/peers/peers.cpp): in sanitizer builds only it runs without the memory limit.
   if (!is_python_peer(name)) return 0;
 #else
   (void)name;

@@ -1,6 +1,6 @@
 #pragma once
 // The field's Voronoi codes dtlab judges, each run in its own process under a time
-// and memory limit (oracle/child_process.hpp), its cells clipped to the box dtlab's
+// and memory limit (oracle/peers/child_process.hpp), its cells clipped to the box dtlab's
 // are clipped to, and judged by the exact Voronoi checker (voronoi_check.hpp):
 //
 //   voro++          voro++ 0.4.6 (Debian voro++-dev), linked        dtlab_voronoi_peer

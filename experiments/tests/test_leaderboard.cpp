@@ -12,8 +12,8 @@
 #include "experiments/leaderboard.hpp"
 #include "experiments/peer_campaign.hpp"
 #include "kernel/point_io.hpp"
-#include "oracle/peers.hpp"
-#include "oracle/temp_dir.hpp"
+#include "oracle/peers/peers.hpp"
+#include "oracle/peers/temp_dir.hpp"
 
 using namespace dtlab;
 

@@ -10,8 +10,8 @@
 
 #include "experiments/peer_campaign.hpp"
 #include "experiments/shrink_stage.hpp"
-#include "oracle/peers.hpp"
-#include "oracle/temp_dir.hpp"
+#include "oracle/peers/peers.hpp"
+#include "oracle/peers/temp_dir.hpp"
 
 using namespace dtlab;
 using namespace dtlab::experiments;

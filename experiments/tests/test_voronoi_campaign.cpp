@@ -11,7 +11,7 @@
 
 #include "experiments/voronoi_campaign.hpp"
 #include "kernel/point_io.hpp"
-#include "oracle/temp_dir.hpp"
+#include "oracle/peers/temp_dir.hpp"
 #include "voronoi/voronoi.hpp"
 
 using namespace dtlab;

@@ -14,7 +14,7 @@
 
 #include "fuzz/libfuzzer/byte_points.hpp"
 #include "fuzz/libfuzzer/fuzz_report.hpp"
-#include "oracle/filtered_exact.hpp"
+#include "oracle/check/filtered_exact.hpp"
 #include "predicates/adaptive.hpp"
 #include "predicates/epsilon.hpp"
 #include "predicates/exact.hpp"

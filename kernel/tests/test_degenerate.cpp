@@ -30,4 +30,4 @@ TEST_CASE("degenerate families give valid Delaunay tetrahedralizations with exac
 }
 
 // The naive backend's builds are judged by the exact checker in
-// oracle/tests/test_naive_builds.cpp (the kernel's tests cannot link the checker).
+// oracle/peers/tests/test_naive_builds.cpp (the kernel's tests cannot link the checker).

@@ -145,7 +145,7 @@ TEST_CASE("parallel build: lattice points (sos), input order, bigtet, duplicates
 
 // Degenerate input without perturbation has many Delaunay tetrahedralizations: each
 // threaded build must be one of them (the exact check of delaunay_check.hpp; the oracle's
-// exact checker runs the same builds in oracle/tests/test_parallel_build_check.cpp).
+// exact checker runs the same builds in oracle/check/tests/test_parallel_build_check.cpp).
 TEST_CASE("without perturbation a threaded build of degenerate input is a valid Delaunay tetrahedralization",
           "[threads]") {
   for (unsigned threads : {2u, 3u, 4u, 8u})

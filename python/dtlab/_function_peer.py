@@ -1,6 +1,6 @@
 """A Python function as a dtlab peer: it runs in a forked child process, so that its
 segfault, exception, hang or runaway allocation is the child's end (a verdict), never
-the interpreter's. The C++ side (oracle/peer_function.hpp) calls `runner(fn)` once per
+the interpreter's. The C++ side (oracle/peers/peer_function.hpp) calls `runner(fn)` once per
 input with the peer's limits and judges what comes back like any peer's answer.
 
 The child: its own process group, stdout and stderr to the peer's log (the last line

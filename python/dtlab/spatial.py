@@ -23,7 +23,7 @@ from ._results import CheckReport, Tetrahedralization
 __all__ = ["Delaunay", "ConvexHull", "Voronoi"]
 
 # Facet f of a positively oriented tet (orient3d > 0), counter-clockwise seen from
-# outside (oracle/facet_table.hpp's facet_vertices).
+# outside (oracle/check/facet_table.hpp's facet_vertices).
 _OUTWARD_FACETS = np.array([[1, 3, 2], [0, 2, 3], [0, 3, 1], [0, 1, 2]])
 
 

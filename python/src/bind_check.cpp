@@ -4,9 +4,9 @@
 #include <optional>
 #include <utility>
 
-#include "oracle/check.hpp"
-#include "oracle/compare.hpp"
-#include "oracle/report_json.hpp"
+#include "oracle/check/check.hpp"
+#include "oracle/check/compare.hpp"
+#include "oracle/check/report_json.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/json_to_python.hpp"
 #include "python/src/numpy_io.hpp"

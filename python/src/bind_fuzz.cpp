@@ -14,7 +14,7 @@
 #include "fuzz/case_seed.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/rate_interval.hpp"
-#include "oracle/temp_dir.hpp"
+#include "oracle/peers/temp_dir.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/function_peers.hpp"
 #include "python/src/interrupt_check.hpp"

@@ -1,5 +1,5 @@
 // _core.oracle: `dtlab oracle` on a numpy array, through the same library call as
-// the CLI (oracle/oracle_session.hpp): the same peers, verdicts, comparisons and
+// the CLI (oracle/peers/oracle_session.hpp): the same peers, verdicts, comparisons and
 // exit code. `functions`: {name: runner} of Python callables as peers (function_peers.hpp);
 // `progress`: None or progress(done, total, stage), called on the calling thread.
 #include <pthread.h>
@@ -19,9 +19,9 @@
 #include <utility>
 #include <vector>
 
-#include "oracle/child_process.hpp"
-#include "oracle/oracle_session.hpp"
-#include "oracle/report_json.hpp"
+#include "oracle/peers/child_process.hpp"
+#include "oracle/peers/oracle_session.hpp"
+#include "oracle/check/report_json.hpp"
 #include <pybind11/stl.h>
 
 #include "python/src/bindings.hpp"

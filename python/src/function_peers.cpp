@@ -3,7 +3,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "oracle/peer_function.hpp"
+#include "oracle/peers/peer_function.hpp"
 #include "python/src/numpy_io.hpp"
 
 namespace py = pybind11;

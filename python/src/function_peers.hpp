@@ -1,6 +1,6 @@
 #pragma once
 // Python callables as peers for one call (dtlab.oracle(peers=...), dtlab.fuzz.campaign(fn)):
-// each name is registered with oracle/peer_function.hpp for the lifetime of this object,
+// each name is registered with oracle/peers/peer_function.hpp for the lifetime of this object,
 // its runner (dtlab._function_peer.runner(fn)) forking the child that calls fn. Made and
 // destroyed with the GIL held. A Python exception in a runner (KeyboardInterrupt: the
 // child is already ended) is left pending and ends the call as ChildInterrupted: the

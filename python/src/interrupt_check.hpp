@@ -1,5 +1,5 @@
 #pragma once
-// Python's Ctrl-C while a call runs peers. The child runner (oracle/child_process.hpp)
+// Python's Ctrl-C while a call runs peers. The child runner (oracle/peers/child_process.hpp)
 // polls one host check, set once by the module (bind_oracle): host_interrupt_requested.
 // It answers per thread:
 // - a worker thread of oracle() (t_cancelled set): whether its caller saw Ctrl-C, as the
@@ -12,7 +12,7 @@
 
 #include <atomic>
 
-#include "oracle/child_process.hpp"
+#include "oracle/peers/child_process.hpp"
 
 namespace dtlab::python {
 

@@ -4,7 +4,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "oracle/filtered_exact.hpp"
+#include "oracle/check/filtered_exact.hpp"
 
 namespace dtlab::python {
 

@@ -10,7 +10,7 @@
 #include <pybind11/pybind11.h>
 
 #include "kernel/progress.hpp"
-#include "oracle/child_process.hpp"
+#include "oracle/peers/child_process.hpp"
 
 namespace dtlab::python {
 

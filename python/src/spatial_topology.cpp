@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "kernel/spatial_order.hpp"
-#include "oracle/facet_table.hpp"
+#include "oracle/check/facet_table.hpp"
 #include "predicates/adaptive.hpp"
 
 namespace dtlab::python {

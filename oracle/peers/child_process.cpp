@@ -1,0 +1,340 @@
+#include "oracle/peers/child_process.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/time.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <thread>
+
+#include "kernel/exit_guard.hpp"
+
+namespace dtlab {
+namespace {
+
+std::atomic<bool (*)()> g_interrupt_check{nullptr};
+
+// Everything the child does between fork and exec must be async-signal-safe: the
+// argument vector and the paths are prepared before the fork. Every descriptor of
+// the parent is close-on-exec (pipe2, socketpair with SOCK_CLOEXEC); dup2 clears the
+// flag on the copies the program gets.
+[[noreturn]] void exec_child(char* const* argv, const char* log, std::uint64_t memory, int stdin_fd, int reply_fd,
+                             int error_fd) {
+  setpgid(0, 0);
+  guard_own_group_in_child();
+  sigset_t none;
+  sigemptyset(&none);
+  sigprocmask(SIG_SETMASK, &none, nullptr);
+  const int fd = open(log ? log : "/dev/null", O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd >= 0) {
+    dup2(fd, 1);
+    dup2(fd, 2);
+  }
+  if (stdin_fd >= 0) {
+    dup2(stdin_fd, 0);
+  } else {
+    const int in = open("/dev/null", O_RDONLY | O_CLOEXEC);
+    if (in >= 0) dup2(in, 0);
+  }
+  if (reply_fd == 3) fcntl(3, F_SETFD, 0);
+  else if (reply_fd >= 0) dup2(reply_fd, 3);
+  if (memory) {
+    rlimit r{static_cast<rlim_t>(memory), static_cast<rlim_t>(memory)};
+    setrlimit(RLIMIT_AS, &r);
+  }
+  rlimit no_core{0, 0};
+  setrlimit(RLIMIT_CORE, &no_core);
+  execvp(argv[0], argv);
+  const int err = errno;
+  [[maybe_unused]] ssize_t w = write(error_fd, &err, sizeof err);
+  _exit(127);
+}
+
+// After the last wait for a child: an interrupt of dtlab (its handler is ending the
+// process) made that child die, so its end is no answer to report.
+void hold_if_interrupted() {
+  if (interrupt_received()) wait_for_interrupt_exit();
+}
+
+}  // namespace
+
+void set_interrupt_check(bool (*check)()) { g_interrupt_check = check; }
+
+bool interrupt_requested() {
+  bool (*check)() = g_interrupt_check.load();
+  return check && check();
+}
+
+std::uint64_t vm_hwm_bytes(int pid) {
+  char path[64];
+  std::snprintf(path, sizeof path, "/proc/%d/status", static_cast<int>(pid));
+  std::FILE* f = std::fopen(path, "r");
+  if (!f) return 0;
+  char line[256];
+  std::uint64_t kb = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, "VmHWM:", 6) == 0) {
+      kb = std::strtoull(line + 6, nullptr, 10);
+      break;
+    }
+  std::fclose(f);
+  return kb * 1024;
+}
+
+int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits, int stdin_fd, int reply_fd,
+                std::string& message) {
+  if (args.empty()) throw std::invalid_argument("run_child: no program");
+  std::vector<std::string> copy = args;
+  std::vector<char*> argv;
+  for (auto& a : copy) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  int pipe_fd[2];
+  if (pipe2(pipe_fd, O_CLOEXEC) != 0) throw std::runtime_error("run_child: pipe failed");
+  prepare_exit_guard();
+  mark_exec_fork(true);
+  const pid_t pid = fork();
+  mark_exec_fork(false);
+  if (pid < 0) {
+    close(pipe_fd[0]);
+    close(pipe_fd[1]);
+    message = std::string("fork failed: ") + std::strerror(errno);
+    return -1;
+  }
+  if (pid == 0) {
+    close(pipe_fd[0]);
+    exec_child(argv.data(), limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes,
+               stdin_fd, reply_fd, pipe_fd[1]);
+  }
+  // Both sides set the group, so a kill right after fork reaches it.
+  setpgid(pid, pid);
+  close(pipe_fd[1]);
+  int exec_errno = 0;
+  const ssize_t got = read(pipe_fd[0], &exec_errno, sizeof exec_errno);  // EOF when exec succeeded
+  close(pipe_fd[0]);
+  if (got == static_cast<ssize_t>(sizeof exec_errno)) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    release_group(pid);
+    message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);
+    return -1;
+  }
+  return pid;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::uint64_t file_size_of(const std::string& path) {
+  struct stat st {};
+  return !path.empty() && stat(path.c_str(), &st) == 0 ? static_cast<std::uint64_t>(st.st_size) : 0;
+}
+
+// The last `bytes` of a file ("" when missing).
+std::string tail_of(const std::string& path, std::streamoff bytes) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return "";
+  const std::streamoff size = in.tellg();
+  const std::streamoff from = size > bytes ? size - bytes : 0;
+  in.seekg(from);
+  std::string text(static_cast<std::size_t>(size - from), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  return text;
+}
+
+bool tells_allocation_failure(const std::string& log_path) {
+  return !log_path.empty() && mentions_allocation_failure(tail_of(log_path, 4096));
+}
+
+enum class WaitEnd { ended, timed_out, output_limit, wait_failed };
+
+// Waits for `pid` (the leader of its own group) under `limits`: samples its peak memory
+// and, through `output_bytes`, the size of what it wrote; kills the group at the time
+// limit, at the output cap or on an interrupt request (then throws ChildInterrupted).
+WaitEnd wait_limited(pid_t pid, const ChildLimits& limits, Clock::time_point start, ChildResult& r, int& status,
+                     const std::function<std::uint64_t()>& output_bytes) {
+  rusage usage{};
+  WaitEnd end = WaitEnd::ended;
+  for (;;) {
+    // Sampled before each wait: the last sample is at most one poll interval old.
+    r.peak_rss_bytes = std::max(r.peak_rss_bytes, vm_hwm_bytes(pid));
+    const pid_t w = wait4(pid, &status, WNOHANG, &usage);
+    r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (w == pid) break;
+    if (w < 0 && errno != EINTR) {
+      kill(-pid, SIGKILL);
+      return WaitEnd::wait_failed;
+    }
+    if (interrupt_requested()) {
+      kill(-pid, SIGKILL);
+      wait4(pid, &status, 0, &usage);
+      release_group(pid);
+      throw ChildInterrupted();
+    }
+    if (r.seconds > limits.timeout_s)
+      end = WaitEnd::timed_out;
+    else if (limits.log_cap_bytes && output_bytes() > limits.log_cap_bytes)
+      end = WaitEnd::output_limit;
+    if (end != WaitEnd::ended) {
+      kill(-pid, SIGKILL);
+      wait4(pid, &status, 0, &usage);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(r.seconds < 0.2 ? 1 : r.seconds < 2 ? 5 : 20));
+  }
+  r.maxrss_bytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
+  return end;
+}
+
+// The end of a child waited for by wait_limited: its group released, its status set.
+ChildResult& finish_child(pid_t pid, WaitEnd end, int status, const ChildLimits& limits, ChildResult& r) {
+  // The group may hold grandchildren that outlived their parent.
+  kill(-pid, SIGKILL);
+  release_group(pid);
+  if (end == WaitEnd::wait_failed) {
+    r.status = ChildStatus::not_started;
+    r.message = "wait failed";
+    return r;
+  }
+  hold_if_interrupted();
+  if (end == WaitEnd::timed_out)
+    r.status = ChildStatus::timed_out;
+  else if (end == WaitEnd::output_limit) {
+    r.status = ChildStatus::output_limit;
+    r.message = "killed: wrote more than " + std::to_string(limits.log_cap_bytes >> 20) + " MiB of output";
+  } else
+    classify_child_end(status, limits.log_path, r);
+  return r;
+}
+
+}  // namespace
+
+bool mentions_allocation_failure(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* marker : {"bad_alloc", "memoryerror", "out of memory", "cannot allocate", "memory exhausted"})
+    if (text.find(marker) != std::string::npos) return true;
+  return false;
+}
+
+void classify_child_end(int status, const std::string& log_path, ChildResult& r) {
+  if (WIFSIGNALED(status)) {
+    r.status = ChildStatus::signaled;
+    r.signal = WTERMSIG(status);
+  } else {
+    r.status = ChildStatus::exited;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  if (r.status == ChildStatus::signaled && r.signal == SIGKILL) {
+    // Our own kills (time limit, output cap, interrupt) never come here.
+    r.out_of_memory = true;
+    r.message = "killed by SIGKILL, not at the time limit (the out-of-memory killer or a memory limit)";
+  } else if ((r.status == ChildStatus::signaled || r.exit_code != 0) && tells_allocation_failure(log_path)) {
+    r.out_of_memory = true;
+    r.message = "an allocation failed";
+  }
+}
+
+ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& limits) {
+  if (!std::isfinite(limits.timeout_s) || limits.timeout_s <= 0)
+    throw std::invalid_argument("run_child: the timeout must be a positive number of seconds");
+  ChildResult r;
+  const auto start = Clock::now();
+  const pid_t pid = spawn_child(args, limits, -1, -1, r.message);
+  if (pid < 0) return r;  // not_started
+  int status = 0;
+  const WaitEnd end = wait_limited(pid, limits, start, r, status, [&] { return file_size_of(limits.log_path); });
+  return finish_child(pid, end, status, limits, r);
+}
+
+ChildResult run_forked(const std::function<void(int reply_fd)>& body, const ChildLimits& limits, std::string& reply) {
+  if (!std::isfinite(limits.timeout_s) || limits.timeout_s <= 0)
+    throw std::invalid_argument("run_forked: the timeout must be a positive number of seconds");
+  ChildResult r;
+  reply.clear();
+  int fd[2];
+  if (pipe2(fd, O_CLOEXEC) != 0) {
+    r.message = "pipe failed";
+    return r;
+  }
+  prepare_exit_guard();  // its fork handler gives the child its own guard and the parent-death signal
+  std::fflush(nullptr);
+  const auto start = Clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(fd[0]);
+    close(fd[1]);
+    r.message = std::string("fork failed: ") + std::strerror(errno);
+    return r;
+  }
+  if (pid == 0) {
+    close(fd[0]);
+    setpgid(0, 0);
+    if (!limits.log_path.empty()) {
+      const int log = open(limits.log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+      if (log >= 0) dup2(log, 1), dup2(log, 2);
+    }
+    if (limits.memory_bytes) {
+      rlimit m{static_cast<rlim_t>(limits.memory_bytes), static_cast<rlim_t>(limits.memory_bytes)};
+      setrlimit(RLIMIT_AS, &m);
+    }
+    int code = 0;
+    try {
+      body(fd[1]);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      code = 70;
+    }
+    std::fflush(nullptr);
+    _exit(code);
+  }
+  setpgid(pid, pid);  // both sides, so a kill right after the fork reaches the group
+  close(fd[1]);
+  fcntl(fd[0], F_SETFL, O_NONBLOCK);
+  std::uint64_t replied = 0;  // bytes read from the reply pipe, kept or not
+  const auto drain = [&] {
+    char chunk[4096];
+    ssize_t n;
+    while ((n = read(fd[0], chunk, sizeof chunk)) > 0) {
+      replied += static_cast<std::uint64_t>(n);
+      const std::uint64_t kept = reply.size(), cap = limits.log_cap_bytes ? limits.log_cap_bytes : UINT64_MAX;
+      reply.append(chunk, static_cast<std::size_t>(std::min<std::uint64_t>(n, cap - std::min(kept, cap))));
+    }
+    return std::max<std::uint64_t>(replied, file_size_of(limits.log_path));
+  };
+
+  int status = 0;
+  WaitEnd end = WaitEnd::wait_failed;
+  try {
+    end = wait_limited(pid, limits, start, r, status, drain);
+  } catch (...) {
+    close(fd[0]);
+    throw;
+  }
+  drain();
+  close(fd[0]);
+  return finish_child(pid, end, status, limits, r);
+}
+
+std::string last_line_of(const std::string& path) {
+  const std::string text = tail_of(path, 4096);
+  std::size_t end = text.find_last_not_of(" \t\r\n");
+  if (end == std::string::npos) return "";
+  const std::size_t begin = text.rfind('\n', end);
+  return text.substr(begin == std::string::npos ? 0 : begin + 1, end - (begin == std::string::npos ? 0 : begin + 1) + 1);
+}
+
+}  // namespace dtlab
