@@ -8,14 +8,14 @@
 
 #include "cli/cli_error.hpp"
 #include "cli/command.hpp"
-#include "cli/progress.hpp"
-#include "kernel/output_file.hpp"
-#include "cli/number_options.hpp"
 #include "cli/input_points.hpp"
+#include "cli/number_options.hpp"
+#include "cli/progress.hpp"
 #include "fracture/piece_gltf.hpp"
 #include "fracture/piece_io.hpp"
 #include "fracture/render_png.hpp"
 #include "kernel/input_error.hpp"
+#include "kernel/output_file.hpp"
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/mesh_io.hpp"
 
@@ -32,7 +32,7 @@ struct FractureArgs {
   bool blue_noise = false, json = false, repair = false, split = false, quiet = false, vtu = false;
   std::string vtu_format = "binary";
   double boolean_seconds = 30;
-  std::string sites;                      // FILE | mesh-vertices (default: the sampler)
+  std::string sites;                       // FILE | mesh-vertices (default: the sampler)
   std::vector<double> impact, cell_scale;  // X,Y,Z / SX,SY,SZ
   double impact_radius = 0, site_noise = 0, density = 1;
   bool no_island_split = false, surfaces = false, gltf = false, tets = false, exact_tiling = false;
@@ -57,7 +57,8 @@ SiteOptions site_options(const FractureArgs& a) {
   if (!a.impact.empty()) {
     s.impact = triple(a.impact, "--impact");
     if (!(a.impact_radius > 0)) throw UsageError("--impact needs --impact-radius R > 0");
-    if (s.source == SiteSource::points) throw UsageError("--impact chooses sampled sites or mesh-vertices, not --sites FILE");
+    if (s.source == SiteSource::points)
+      throw UsageError("--impact chooses sampled sites or mesh-vertices, not --sites FILE");
   }
   s.impact_radius = a.impact_radius;
   s.noise = a.site_noise;
@@ -81,14 +82,8 @@ bool tetrahedralize(const FractureArgs& a, const FractureResult& r, nlohmann::js
   return true;
 }
 
-int run_fracture(const FractureArgs& a) {
-  if (a.out.empty() && !a.json && a.png.empty())  // never compute without writing
-    throw UsageError("nothing to write: give --out DIR (or --json, --png FILE)");
-  const auto method = parse_sample_method(a.sampler);
-  if (!method || *method == SampleMethod::surface)
-    throw UsageError("--sampler must be rays, sdf or winding (a volume sampler)");
-  Progress progress("fracture", a.quiet);
-  const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
+// The library's options from the command line's; the mesh's size bounds --gap.
+FractureOptions fracture_options(const FractureArgs& a, const TriangleMesh& mesh, SampleMethod method) {
   if (const Box3 box = bounding_box(mesh); !(a.gap < norm(box.hi - box.lo))) {
     char why[160];
     std::snprintf(why, sizeof why, "--gap %g is not smaller than the mesh (bounding box diagonal %g)", a.gap,
@@ -97,7 +92,7 @@ int run_fracture(const FractureArgs& a) {
   }
   FractureOptions o;
   o.pieces = a.pieces;
-  o.sampler = *method;
+  o.sampler = method;
   o.blue_noise = a.blue_noise;
   o.seed = a.seed;
   o.margin = a.gap;
@@ -110,6 +105,87 @@ int run_fracture(const FractureArgs& a) {
   o.island_split = !a.no_island_split;
   o.exact_tiling = a.exact_tiling;
   if (!a.cell_scale.empty()) o.cell_scale = triple(a.cell_scale, "--cell-scale");
+  return o;
+}
+
+// The manifest's record of the command line, so a run can be repeated from its folder.
+nlohmann::json options_json(const FractureArgs& a) {
+  nlohmann::json o = {{"pieces", a.pieces},
+                      {"sampler", a.sampler},
+                      {"seed", a.seed},
+                      {"gap", a.gap},
+                      {"margin", a.gap},
+                      {"blue_noise", a.blue_noise},
+                      {"explode", a.explode},
+                      {"recurse", a.recurse},
+                      {"recurse_pieces", a.recurse_pieces},
+                      {"repair", a.repair},
+                      {"split", a.split},
+                      {"vtu", a.vtu},
+                      {"boolean_seconds", a.boolean_seconds},
+                      {"sites", a.sites.empty() ? "sampler" : a.sites},
+                      {"impact", a.impact},
+                      {"impact_radius", a.impact_radius},
+                      {"site_noise", a.site_noise},
+                      {"island_split", !a.no_island_split},
+                      {"cell_scale", a.cell_scale},
+                      {"density", a.density}};
+  o["exact_tiling"] = a.exact_tiling;
+  o["tets"] = a.tets;
+  return o;
+}
+
+// Every file of --out: the pieces (OBJ, and VTU, glTF, split files when asked), the
+// manifest and the adjacency list, one line per piece "i: j k l" (for breakable constraints).
+void write_fracture_outputs(const FractureArgs& a, const FractureResult& r, nlohmann::json& m,
+                            const std::vector<PieceTets>& tets) {
+  std::filesystem::create_directories(a.out);
+  write_pieces_obj(a.out + "/pieces.obj", r);
+  write_pieces_obj(a.out + "/exploded.obj", r, a.explode);
+  write_pieces_mtl(a.out + "/pieces.mtl");
+  if (a.repair) write_off(a.out + "/repaired.off", r.input);
+  if (a.vtu) write_pieces_vtu(a.out + "/pieces.vtu", r, parse_vtu_format(a.vtu_format));
+  if (a.surfaces) write_piece_surfaces_vtu(a.out + "/surfaces.vtu", r, parse_vtu_format(a.vtu_format));
+  if (a.gltf) write_pieces_gltf(a.out + "/pieces.gltf", r);
+  if (a.tets) write_piece_tets_vtu(a.out + "/tets.vtu", r, tets, parse_vtu_format(a.vtu_format));
+  if (a.split) {
+    std::filesystem::create_directories(a.out + "/pieces");
+    m["split_files"] = write_piece_files(a.out + "/pieces", r);
+  }
+  write_text_file(a.out + "/manifest.json", m.dump(1) + "\n");
+  OutputFile adjacency(a.out + "/adjacency.txt");
+  std::FILE* f = adjacency.get();
+  for (std::size_t i = 0; i < r.pieces.size(); ++i) {
+    std::fprintf(f, "%zu:", i);
+    for (auto j : r.pieces[i].neighbors) std::fprintf(f, " %u", j);
+    std::fputc('\n', f);
+  }
+  adjacency.close();
+}
+
+void print_fracture_summary(const FractureArgs& a, const FractureResult& r, double rel) {
+  std::printf("mesh %s: %s\n", a.mesh.c_str(), r.report.summary().c_str());
+  for (const auto& p : r.report.problems()) std::printf("  %s\n", p.c_str());
+  for (const auto& s : r.repairs)
+    std::printf("  repair: %s: %zu%s%s\n", s.what.c_str(), s.count, s.detail.empty() ? "" : ", ", s.detail.c_str());
+  std::printf("%s: %zu pieces (%zu booleans, %zu skipped), mesh volume %.12g, relative volume error %.3g\n",
+              a.mesh.c_str(), r.pieces.size(), r.booleans, r.skipped, r.mesh_volume, rel);
+  if (!a.out.empty())
+    std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s%s%s%s%s}\n",
+                a.out.c_str(), a.split ? ", pieces/piece_NNNN.obj" : "", a.vtu ? ", pieces.vtu" : "",
+                a.surfaces ? ", surfaces.vtu" : "", a.gltf ? ", pieces.gltf" : "", a.tets ? ", tets.vtu" : "");
+}
+
+// Stages: read the mesh, fracture it, tetrahedralize the pieces (--tets), write, report.
+int run_fracture(const FractureArgs& a) {
+  if (a.out.empty() && !a.json && a.png.empty())  // never compute without writing
+    throw UsageError("nothing to write: give --out DIR (or --json, --png FILE)");
+  const auto method = parse_sample_method(a.sampler);
+  if (!method || *method == SampleMethod::surface)
+    throw UsageError("--sampler must be rays, sdf or winding (a volume sampler)");
+  Progress progress("fracture", a.quiet);
+  const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
+  FractureOptions o = fracture_options(a, mesh, *method);
   o.progress = [&progress](std::size_t done, std::size_t total) { progress.update("booleans", done, total); };
   FractureResult r;
   progress.say("fracturing " + a.mesh + " into " + std::to_string(a.pieces) + " pieces (" + a.sampler +
@@ -126,56 +202,17 @@ int run_fracture(const FractureArgs& a) {
   std::vector<PieceTets> tets;
   if (a.tets && !tetrahedralize(a, r, m, tets, progress)) return kDefect;
   m["input"] = a.mesh;
-  m["options"] = {{"pieces", a.pieces}, {"sampler", a.sampler}, {"seed", a.seed}, {"gap", a.gap}, {"margin", a.gap},
-                  {"blue_noise", a.blue_noise}, {"explode", a.explode}, {"recurse", a.recurse},
-                  {"recurse_pieces", a.recurse_pieces}, {"repair", a.repair}, {"split", a.split}, {"vtu", a.vtu},
-                  {"boolean_seconds", a.boolean_seconds}, {"sites", a.sites.empty() ? "sampler" : a.sites},
-                  {"impact", a.impact}, {"impact_radius", a.impact_radius}, {"site_noise", a.site_noise},
-                  {"island_split", !a.no_island_split}, {"cell_scale", a.cell_scale}, {"density", a.density}};
-  m["options"]["exact_tiling"] = a.exact_tiling;
-  m["options"]["tets"] = a.tets;
+  m["options"] = options_json(a);
   if (!a.out.empty()) {
     progress.say("writing " + std::to_string(r.pieces.size()) + " pieces to " + a.out);
-    std::filesystem::create_directories(a.out);
-    write_pieces_obj(a.out + "/pieces.obj", r);
-    write_pieces_obj(a.out + "/exploded.obj", r, a.explode);
-    write_pieces_mtl(a.out + "/pieces.mtl");
-    if (a.repair) write_off(a.out + "/repaired.off", r.input);
-    if (a.vtu) write_pieces_vtu(a.out + "/pieces.vtu", r, parse_vtu_format(a.vtu_format));
-    if (a.surfaces) write_piece_surfaces_vtu(a.out + "/surfaces.vtu", r, parse_vtu_format(a.vtu_format));
-    if (a.gltf) write_pieces_gltf(a.out + "/pieces.gltf", r);
-    if (a.tets) write_piece_tets_vtu(a.out + "/tets.vtu", r, tets, parse_vtu_format(a.vtu_format));
-    if (a.split) {
-      std::filesystem::create_directories(a.out + "/pieces");
-      m["split_files"] = write_piece_files(a.out + "/pieces", r);
-    }
-    write_text_file(a.out + "/manifest.json", m.dump(1) + "\n");
-    // Adjacency list, one line per piece: "i: j k l" (for breakable constraints).
-    OutputFile adjacency(a.out + "/adjacency.txt");
-    std::FILE* f = adjacency.get();
-    for (std::size_t i = 0; i < r.pieces.size(); ++i) {
-      std::fprintf(f, "%zu:", i);
-      for (auto j : r.pieces[i].neighbors) std::fprintf(f, " %u", j);
-      std::fputc('\n', f);
-    }
-    adjacency.close();
+    write_fracture_outputs(a, r, m, tets);
   }
   if (!a.png.empty()) write_exploded_png(a.png, r, a.explode);
   const double rel = m["relative_volume_error"].get<double>();
-  if (a.json) {
+  if (a.json)
     std::printf("%s\n", m.dump(2).c_str());
-  } else {
-    std::printf("mesh %s: %s\n", a.mesh.c_str(), r.report.summary().c_str());
-    for (const auto& p : r.report.problems()) std::printf("  %s\n", p.c_str());
-    for (const auto& s : r.repairs)
-      std::printf("  repair: %s: %zu%s%s\n", s.what.c_str(), s.count, s.detail.empty() ? "" : ", ", s.detail.c_str());
-    std::printf("%s: %zu pieces (%zu booleans, %zu skipped), mesh volume %.12g, relative volume error %.3g\n",
-                a.mesh.c_str(), r.pieces.size(), r.booleans, r.skipped, r.mesh_volume, rel);
-    if (!a.out.empty())
-      std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s%s%s%s%s}\n",
-                  a.out.c_str(), a.split ? ", pieces/piece_NNNN.obj" : "", a.vtu ? ", pieces.vtu" : "",
-                  a.surfaces ? ", surfaces.vtu" : "", a.gltf ? ", pieces.gltf" : "", a.tets ? ", tets.vtu" : "");
-  }
+  else
+    print_fracture_summary(a, r, rel);
   if (a.tets && m["tets"]["pieces_exact"].get<std::size_t>() != tets.size()) {
     std::fprintf(stderr,
                  "dtlab fracture: %s: --tets: the tets of %zu pieces do not have their surface's exact volume\n",
@@ -192,45 +229,63 @@ void add_fracture_command(CLI::App& app, int& rc) {
   CLI::App* sub = app.add_subcommand("fracture", "Voronoi fracture of a closed mesh into closed pieces");
   sub->add_option("MESH", args->mesh, "closed mesh (.off .obj .ply .stl) or 'builtin' (bumpy torus)")
       ->capture_default_str();
-  sub->add_option("--pieces", args->pieces, "number of Voronoi sites")->transform(count_in(1, 100000))
+  sub->add_option("--pieces", args->pieces, "number of Voronoi sites")
+      ->transform(count_in(1, 100000))
       ->capture_default_str();
   sub->add_option("--sampler", args->sampler, "site sampler: rays | sdf | winding")->capture_default_str();
   sub->add_flag("--blue-noise", args->blue_noise, "blue-noise sites (weighted sample elimination)");
   sub->add_option("--seed", args->seed, "random seed")->check(seed_value())->capture_default_str();
-  sub->add_option("--gap,--margin", args->gap, "gap between neighbouring pieces (mesh units); --margin is the old spelling")
-      ->check(number_in(0, 1e300))->capture_default_str();
+  sub->add_option("--gap,--margin", args->gap,
+                  "gap between neighbouring pieces (mesh units); --margin is the old spelling")
+      ->check(number_in(0, 1e300))
+      ->capture_default_str();
   sub->add_option("--explode", args->explode, "exploded.obj: move pieces by this times their centroid offset")
-      ->check(number_in(0, 1000))->capture_default_str();
+      ->check(number_in(0, 1000))
+      ->capture_default_str();
   sub->add_option("--recurse", args->recurse, "pieces to fracture again (ids of the first level)")->delimiter(',');
   sub->add_option("--recurse-pieces", args->recurse_pieces, "pieces each --recurse piece is split into")
-      ->transform(count_in(1, 10000))->capture_default_str();
-  sub->add_option("--threads", args->threads, "threads for the booleans (0: all)")->transform(count_in(0, 1024))->capture_default_str();
-  sub->add_flag("--repair", args->repair,
-                "repair the mesh first (merge, drop degenerate, orient, stitch, fill holes, resolve self-intersections)");
+      ->transform(count_in(1, 10000))
+      ->capture_default_str();
+  sub->add_option("--threads", args->threads, "threads for the booleans (0: all)")
+      ->transform(count_in(0, 1024))
+      ->capture_default_str();
+  sub->add_flag(
+      "--repair", args->repair,
+      "repair the mesh first (merge, drop degenerate, orient, stitch, fill holes, resolve self-intersections)");
   sub->add_flag("--split", args->split, "also write one OBJ per piece to OUT/pieces/");
   sub->add_option("--boolean-seconds", args->boolean_seconds,
                   "time budget of one corefinement; past it a named failure, exit 1 (0: none)")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write OUT/pieces.vtu (a polyhedron cell per piece) for ParaView");
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
-      ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
+      ->check(CLI::IsMember({"binary", "ascii"}))
+      ->capture_default_str();
   sub->add_option("--sites", args->sites,
                   "sites from a file (.xyz .node, or a mesh file's vertices) or 'mesh-vertices' (a seeded subset of "
                   "--pieces of them); default: --sampler")
       ->type_name("FILE|mesh-vertices");
   sub->add_option("--impact", args->impact, "cluster the sites around this point (density falls off with distance)")
-      ->delimiter(',')->check(number_in(-1e300, 1e300))->type_name("X,Y,Z");
+      ->delimiter(',')
+      ->check(number_in(-1e300, 1e300))
+      ->type_name("X,Y,Z");
   sub->add_option("--impact-radius", args->impact_radius, "--impact: standard deviation of the fall-off (mesh units)")
-      ->check(number_in(0, 1e300))->capture_default_str();
+      ->check(number_in(0, 1e300))
+      ->capture_default_str();
   sub->add_option("--site-noise", args->site_noise, "jitter every site by up to this times the mesh's box diagonal")
-      ->check(number_in(0, 10))->capture_default_str();
+      ->check(number_in(0, 10))
+      ->capture_default_str();
   sub->add_flag("--no-island-split", args->no_island_split,
                 "keep the disconnected chunks of one cell together as one piece (default: one piece per island)");
   sub->add_option("--cell-scale", args->cell_scale, "anisotropic cells: stretch them by these factors (e.g. 1,1,4)")
-      ->delimiter(',')->check(number_in(1e-6, 1e6))->type_name("SX,SY,SZ");
-  sub->add_flag("--surfaces", args->surfaces,
-                "also write OUT/surfaces.vtu: every piece as closed triangles with a 'piece' array (VTK integrates it)");
-  sub->add_flag("--gltf", args->gltf, "also write OUT/pieces.gltf (glTF 2.0: a node per piece, cut faces a 2nd material)");
+      ->delimiter(',')
+      ->check(number_in(1e-6, 1e6))
+      ->type_name("SX,SY,SZ");
+  sub->add_flag(
+      "--surfaces", args->surfaces,
+      "also write OUT/surfaces.vtu: every piece as closed triangles with a 'piece' array (VTK integrates it)");
+  sub->add_flag("--gltf", args->gltf,
+                "also write OUT/pieces.gltf (glTF 2.0: a node per piece, cut faces a 2nd material)");
   sub->add_flag(
       "--exact-tiling", args->exact_tiling,
       "prove sum(piece volumes) = mesh volume exactly on the unrounded pieces (exact arithmetic; costs time)");
@@ -238,7 +293,8 @@ void add_fracture_command(CLI::App& app, int& rc) {
                 "also write OUT/tets.vtu: every piece tetrahedralized (TetGen -pY, surface kept) with a 'piece' array");
   sub->add_option("--tetgen", args->tetgen, "--tets: the TetGen program")->type_name("FILE")->capture_default_str();
   sub->add_option("--density", args->density, "mass density for the manifest's mass and mass_inertia")
-      ->check(number_in(1e-300, 1e300))->capture_default_str();
+      ->check(number_in(1e-300, 1e300))
+      ->capture_default_str();
   sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file")->type_name("FILE");
   sub->add_option("--out", args->out, "output folder (pieces.obj, exploded.obj, manifest.json, adjacency.txt)")
       ->type_name("DIR");

@@ -10,7 +10,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include "fuzz/work_queue.hpp"
 #include "dtlab/build_info.hpp"
 #include "fuzz/campaign_report.hpp"
 #include "fuzz/campaign_settings.hpp"
@@ -21,6 +20,7 @@
 #include "fuzz/results_log.hpp"
 #include "fuzz/shrink.hpp"
 #include "fuzz/summary.hpp"
+#include "fuzz/work_queue.hpp"
 
 namespace dtlab::fuzz {
 
@@ -86,9 +86,69 @@ std::string resume_key(const std::string& id, const std::string& backend, const 
 std::string original_command(const CampaignOptions& o, const CaseRecord& r) {
   return "dtlab fuzz --family " + r.family + " --seed " + std::to_string(o.seed) + " --case " +
          std::to_string(r.index) + " --min-points " + std::to_string(o.min_points) + " --points " +
-         std::to_string(o.max_points) + " --predicates " + r.predicates + " --perturb " +
-         (r.perturb ? "sos" : "none") + " --boundary " + r.boundary + " --out " + o.out_dir +
-         "/repro-" + r.id;
+         std::to_string(o.max_points) + " --predicates " + r.predicates + " --perturb " + (r.perturb ? "sos" : "none") +
+         " --boundary " + r.boundary + " --out " + o.out_dir + "/repro-" + r.id;
+}
+
+// The cases of this shard that `done` does not hold for every backend, in family then index
+// order; `resumed` counts the ones it does.
+std::vector<WorkItem> pending_work(const CampaignOptions& o, const std::set<std::string>& done,
+                                   const std::string& boundary, std::size_t& resumed) {
+  std::vector<WorkItem> work;
+  for (std::size_t fi = 0; fi < o.families.size(); ++fi) {
+    const Family* f = find_family(o.families[fi]);
+    if (!f) throw std::invalid_argument("unknown family '" + o.families[fi] + "'");
+    // --case N jumps straight to case N (no walk over the indices before it).
+    const std::size_t lo = o.only_case ? std::min(*o.only_case, o.cases) : 0;
+    const std::size_t hi = o.only_case ? std::min(*o.only_case + 1, o.cases) : o.cases;
+    for (std::size_t i = lo; i < hi; ++i) {
+      const std::size_t ordinal = fi * o.cases + i;
+      if (ordinal % o.shards != o.shard) continue;
+      const std::string id = case_id(f->name, o.seed, i);
+      bool all_done = true;
+      for (const auto& spec : o.backends)
+        all_done = all_done && done.count(resume_key(id, backend_label(spec), boundary));
+      if (all_done)
+        ++resumed;
+      else
+        work.push_back({f, i});
+    }
+  }
+  return work;
+}
+
+// The fields every backend's record of one case shares.
+CaseRecord case_base(const CampaignOptions& o, const WorkItem& item, const std::string& boundary) {
+  CaseRecord base;
+  base.family = item.family->name;
+  base.index = item.index;
+  base.id = case_id(base.family, o.seed, item.index);
+  base.campaign_seed = o.seed;
+  base.case_seed = case_seed(o.seed, base.family, item.index);
+  base.boundary = boundary;
+  base.version = build_version();
+  base.commit = build_commit();
+  return base;
+}
+
+// One backend on one case; a failure is shrunk to a smaller input with the same outcome and
+// written to the corpus (under `corpus_lock`: runs of other cases write there too).
+void run_backend(const CampaignOptions& o, const PredicateSpec& spec, const BuildOptions& build,
+                 const std::vector<Point3>& points, CaseRecord& r, std::mutex& corpus_lock) {
+  r.backend = backend_label(spec);
+  r.predicates = spec.backend;
+  r.perturb = spec.perturb;
+  r.run = run_case(points, spec, build, o.oracles);
+  if (r.run.ok() || !o.shrink) return;
+  const std::string target = r.run.outcome;
+  const auto fails = [&](const std::vector<Point3>& candidate) {
+    return run_case(candidate, spec, build, o.oracles).outcome == target;
+  };
+  const ShrinkResult s = shrink_points(points, fails, o.shrink_budget);
+  r.shrunk_points = s.points.size();
+  CorpusEntryInfo info{original_command(o, r), s.tests, s.minimal};
+  std::lock_guard<std::mutex> g(corpus_lock);
+  r.corpus_file = write_corpus_entry(o.out_dir, r, s.points, info);
 }
 
 }  // namespace
@@ -108,69 +168,23 @@ CampaignResult run_campaign(const CampaignOptions& o) {
   for (const auto& r : result.records) done.insert(resume_key(r.id, r.backend, r.boundary));
 
   const std::string boundary = boundary_label(o.build);
-  std::vector<WorkItem> work;
-  for (std::size_t fi = 0; fi < o.families.size(); ++fi) {
-    const Family* f = find_family(o.families[fi]);
-    if (!f) throw std::invalid_argument("unknown family '" + o.families[fi] + "'");
-    // --case N jumps straight to case N (no walk over the indices before it).
-    const std::size_t lo = o.only_case ? std::min(*o.only_case, o.cases) : 0;
-    const std::size_t hi = o.only_case ? std::min(*o.only_case + 1, o.cases) : o.cases;
-    for (std::size_t i = lo; i < hi; ++i) {
-      const std::size_t ordinal = fi * o.cases + i;
-      if (ordinal % o.shards != o.shard) continue;
-      const std::string id = case_id(f->name, o.seed, i);
-      bool all_done = true;
-      for (const auto& spec : o.backends)
-        all_done = all_done && done.count(resume_key(id, backend_label(spec), boundary));
-      if (all_done) {
-        ++result.resumed;
-        continue;
-      }
-      work.push_back({f, i});
-    }
-  }
-
+  const std::vector<WorkItem> work = pending_work(o, done, boundary, result.resumed);
   write_campaign_environment(o);
 
   std::mutex lock;
   std::size_t finished = 0, failing = 0;
-
   const auto run_one = [&](std::size_t w) {
-    const WorkItem item = work[w];
-    CaseRecord base;
-    base.family = item.family->name;
-    base.index = item.index;
-    base.id = case_id(base.family, o.seed, item.index);
-    base.campaign_seed = o.seed;
-    base.case_seed = case_seed(o.seed, base.family, item.index);
+    const CaseRecord base = case_base(o, work[w], boundary);
     const std::size_t n = case_points(base.case_seed, o.min_points, o.max_points);
-    const std::vector<Point3> points = item.family->generate(n, base.case_seed);
-    base.points = points.size();
-    base.boundary = boundary;
-    base.version = build_version();
-    base.commit = build_commit();
+    const std::vector<Point3> points = work[w].family->generate(n, base.case_seed);
     BuildOptions build = o.build;
     build.seed = base.case_seed;
-
     std::vector<CaseRecord> local;
     for (const auto& spec : o.backends) {
+      if (done.count(resume_key(base.id, backend_label(spec), boundary))) continue;
       CaseRecord r = base;
-      r.backend = backend_label(spec);
-      r.predicates = spec.backend;
-      r.perturb = spec.perturb;
-      if (done.count(resume_key(r.id, r.backend, boundary))) continue;
-      r.run = run_case(points, spec, build, o.oracles);
-      if (!r.run.ok() && o.shrink) {
-        const std::string target = r.run.outcome;
-        const auto fails = [&](const std::vector<Point3>& candidate) {
-          return run_case(candidate, spec, build, o.oracles).outcome == target;
-        };
-        const ShrinkResult s = shrink_points(points, fails, o.shrink_budget);
-        r.shrunk_points = s.points.size();
-        CorpusEntryInfo info{original_command(o, r), s.tests, s.minimal};
-        std::lock_guard<std::mutex> g(lock);
-        r.corpus_file = write_corpus_entry(o.out_dir, r, s.points, info);
-      }
+      r.points = points.size();
+      run_backend(o, spec, build, points, r, lock);
       local.push_back(std::move(r));
     }
 

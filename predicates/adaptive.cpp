@@ -390,6 +390,26 @@ int lift_times(double x, double y, double z, int len, const double* m, double* h
   return compress(alen, acc, h);
 }
 
+// Stage D of insphere: the determinant of the exact differences (expansions), for the
+// inputs that stages A-C could not decide. Rare, so written for clarity, not speed.
+int insphere_stage_d(const Point3* const p[4], const Point3& e) {
+  Expansion ex[4], ey[4], ez[4], el[4];
+  for (int i = 0; i < 4; ++i) {
+    ex[i] = exact_diff(p[i]->x, e.x);
+    ey[i] = exact_diff(p[i]->y, e.y);
+    ez[i] = exact_diff(p[i]->z, e.z);
+    el[i] = ex[i] * ex[i] + ey[i] * ey[i] + ez[i] * ez[i];
+  }
+  auto m2 = [&](int i, int j) { return ex[i] * ey[j] - ex[j] * ey[i]; };
+  const Expansion eab = m2(0, 1), ebc = m2(1, 2), ecd = m2(2, 3), eda = m2(3, 0), eac = m2(0, 2), ebd = m2(1, 3);
+  const Expansion eabc = ez[0] * ebc - ez[1] * eac + ez[2] * eab;
+  const Expansion ebcd = ez[1] * ecd - ez[2] * ebd + ez[3] * ebc;
+  const Expansion ecda = ez[2] * eda + ez[3] * eac + ez[0] * ecd;
+  const Expansion edab = ez[3] * eab + ez[0] * ebd + ez[1] * eda;
+  const Expansion full = (el[3] * eabc - el[2] * edab) + (el[1] * ecda - el[0] * ebcd);
+  return expansion_sign(static_cast<int>(full.size()), full.data());
+}
+
 }  // namespace
 
 int adaptive_insphere_stages(const Point3& a, const Point3& b, const Point3& c,
@@ -478,23 +498,7 @@ int adaptive_insphere_stages(const Point3& a, const Point3& b, const Point3& c,
   if (det >= bound || -det >= bound) return count(stats, true, AdaptiveStage::kC, sign_of(det));
 
   // D: everything exactly.
-  Expansion ex[4], ey[4], ez[4], el[4];
-  for (int i = 0; i < 4; ++i) {
-    ex[i] = exact_diff(p[i]->x, e.x);
-    ey[i] = exact_diff(p[i]->y, e.y);
-    ez[i] = exact_diff(p[i]->z, e.z);
-    el[i] = ex[i] * ex[i] + ey[i] * ey[i] + ez[i] * ez[i];
-  }
-  auto m2 = [&](int i, int j) { return ex[i] * ey[j] - ex[j] * ey[i]; };
-  const Expansion eab = m2(0, 1), ebc = m2(1, 2), ecd = m2(2, 3), eda = m2(3, 0), eac = m2(0, 2),
-                  ebd = m2(1, 3);
-  const Expansion eabc = ez[0] * ebc - ez[1] * eac + ez[2] * eab;
-  const Expansion ebcd = ez[1] * ecd - ez[2] * ebd + ez[3] * ebc;
-  const Expansion ecda = ez[2] * eda + ez[3] * eac + ez[0] * ecd;
-  const Expansion edab = ez[3] * eab + ez[0] * ebd + ez[1] * eda;
-  const Expansion full = (el[3] * eabc - el[2] * edab) + (el[1] * ecda - el[0] * ebcd);
-  return count(stats, true, AdaptiveStage::kD,
-               expansion_sign(static_cast<int>(full.size()), full.data()));
+  return count(stats, true, AdaptiveStage::kD, insphere_stage_d(p, e));
 }
 
 }  // namespace dtlab
