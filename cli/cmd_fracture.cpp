@@ -89,12 +89,6 @@ int run_fracture(const FractureArgs& a) {
     throw UsageError("--sampler must be rays, sdf or winding (a volume sampler)");
   Progress progress("fracture", a.quiet);
   const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
-  if (const Box3 box = bounding_box(mesh); !(a.gap < norm(box.hi - box.lo))) {
-    char why[160];
-    std::snprintf(why, sizeof why, "--gap %g is not smaller than the mesh (bounding box diagonal %g)", a.gap,
-                  norm(box.hi - box.lo));
-    throw UsageError(why);
-  }
   FractureOptions o;
   o.pieces = a.pieces;
   o.sampler = *method;
@@ -201,7 +195,9 @@ void add_fracture_command(CLI::App& app, int& rc) {
       ->check(number_in(0, 1e300))->capture_default_str();
   sub->add_option("--explode", args->explode, "exploded.obj: move pieces by this times their centroid offset")
       ->check(number_in(0, 1000))->capture_default_str();
-  sub->add_option("--recurse", args->recurse, "pieces to fracture again (ids of the first level)")->delimiter(',');
+  sub->add_option("--recurse", args->recurse, "pieces to fracture again (ids of the first level)")
+      ->delimiter(',')
+      ->transform(count_in(0, 1e9));
   sub->add_option("--recurse-pieces", args->recurse_pieces, "pieces each --recurse piece is split into")
       ->transform(count_in(1, 10000))->capture_default_str();
   sub->add_option("--threads", args->threads, "threads for the booleans (0: all)")->transform(count_in(0, 1024))->capture_default_str();
