@@ -159,7 +159,8 @@ void add_leaderboard_command(CLI::App* sub, int& rc) {
       ->delimiter(',');
   l->add_option("--voronoi-speed", board->voronoi_speed_sizes,
                 "sizes of the Voronoi speed table (default 100000; 10000 with --quick; 1000000 is slow)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->transform(count_in(1, 1e9));
   l->add_flag("--no-meshes", *board_no_meshes, "leave out the CGAL demo mesh samples");
   l->add_option("--cgal-data", board->cgal_data, "CGAL demo data.tar.gz (default: libcgal-demo's)")->check(CLI::ExistingFile);
   l->add_flag("--json", *board_json, "print a JSON summary (the report's headline facts) on stdout");

@@ -82,14 +82,8 @@ bool tetrahedralize(const FractureArgs& a, const FractureResult& r, nlohmann::js
   return true;
 }
 
-// The library's options from the command line's; the mesh's size bounds --gap.
-FractureOptions fracture_options(const FractureArgs& a, const TriangleMesh& mesh, SampleMethod method) {
-  if (const Box3 box = bounding_box(mesh); !(a.gap < norm(box.hi - box.lo))) {
-    char why[160];
-    std::snprintf(why, sizeof why, "--gap %g is not smaller than the mesh (bounding box diagonal %g)", a.gap,
-                  norm(box.hi - box.lo));
-    throw UsageError(why);
-  }
+// The library's options from the command line's (fracture_mesh checks --gap against the mesh).
+FractureOptions fracture_options(const FractureArgs& a, SampleMethod method) {
   FractureOptions o;
   o.pieces = a.pieces;
   o.sampler = method;
@@ -185,7 +179,7 @@ int run_fracture(const FractureArgs& a) {
     throw UsageError("--sampler must be rays, sdf or winding (a volume sampler)");
   Progress progress("fracture", a.quiet);
   const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
-  FractureOptions o = fracture_options(a, mesh, *method);
+  FractureOptions o = fracture_options(a, *method);
   o.progress = [&progress](std::size_t done, std::size_t total) { progress.update("booleans", done, total); };
   FractureResult r;
   progress.say("fracturing " + a.mesh + " into " + std::to_string(a.pieces) + " pieces (" + a.sampler +
@@ -242,7 +236,9 @@ void add_fracture_command(CLI::App& app, int& rc) {
   sub->add_option("--explode", args->explode, "exploded.obj: move pieces by this times their centroid offset")
       ->check(number_in(0, 1000))
       ->capture_default_str();
-  sub->add_option("--recurse", args->recurse, "pieces to fracture again (ids of the first level)")->delimiter(',');
+  sub->add_option("--recurse", args->recurse, "pieces to fracture again (ids of the first level)")
+      ->delimiter(',')
+      ->transform(count_in(0, 1e9));
   sub->add_option("--recurse-pieces", args->recurse_pieces, "pieces each --recurse piece is split into")
       ->transform(count_in(1, 10000))
       ->capture_default_str();

@@ -46,8 +46,8 @@ int run_sample(const SampleArgs& a) {
   const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
   if (mesh.triangles.empty()) throw InputError(a.mesh, 0, "mesh has no triangles");
   const MeshReport report = analyze_mesh(mesh);
-  if (report.overflow)
-    throw InputError(a.mesh, 0, "coordinates too large: the mesh's area or volume overflows a double");
+  if (const std::string why = magnitude_problem(report.magnitude, *method == SampleMethod::surface); !why.empty())
+    throw InputError(a.mesh, 0, why);
   const auto t1 = std::chrono::steady_clock::now();
   const MeshSampler sampler(mesh);
   SampleRequest req;

@@ -24,6 +24,7 @@
 #include "voronoi/cell_check.hpp"
 #include "voronoi/voronoi.hpp"
 #include "voronoi/voronoi_io.hpp"
+#include "voronoi/voronoi_range.hpp"
 
 namespace dtlab::cli {
 
@@ -44,49 +45,12 @@ struct VoronoiArgs {
   PeerDefinitionArgs defined;  // --voronoi-peer, --peers
 };
 
-// The cells are clipped in doubles: squared distances of coordinates beyond 1e100 or
-// below 1e-100 overflow or underflow, and so do cell volumes (cubes of the box's
-// extent) near 1e102. Sites are computed for |x| <= 1e100, boxes (default: the sites'
-// bounding box grown by --margin) for |x| <= 1e101; others are refused, naming the
-// range, with or without --check (out of range it could only report broken cells).
-constexpr double kCellCoordinateMax = 1e100, kBoxCoordinateMax = 1e101, kCellExtentMin = 1e-100;
-
-// `box`: the clip box, given (--box) or the sites' bounding box grown by --margin.
+// The ranges of voronoi/voronoi_range.hpp, with or without --check (out of range it
+// could only report broken cells): sites are bad input, a box out of range bad usage.
 void check_voronoi_range(const std::string& input, const std::vector<Point3>& points, const vor::Box& box, bool given,
                          double margin) {
-  Point3 lo = points[0], hi = points[0];
-  for (const Point3& p : points) {
-    if (std::abs(p.x) > kCellCoordinateMax || std::abs(p.y) > kCellCoordinateMax || std::abs(p.z) > kCellCoordinateMax)
-      throw InputError(input, 0, "site coordinates beyond 1e100 in magnitude (their squares overflow a double): Voronoi cells are computed for |x| <= 1e100");
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  if (std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) < kCellExtentMin)
-    throw InputError(input, 0, "sites span less than 1e-100: Voronoi cells need an extent of at least 1e-100");
-  for (double c : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z})
-    if (!(std::abs(c) <= kBoxCoordinateMax)) {
-      char what[96];
-      std::snprintf(what, sizeof what, "--margin %g grows the sites' bounding box", margin);
-      throw UsageError(std::string(given ? "--box: corners" : what) +
-                       " beyond 1e101 in magnitude (cell volumes overflow a double near 1e102): cells are "
-                       "computed in a box within |x| <= 1e101");
-    }
-}
-
-// The last line of defence without --check (which reports them as defects, exit 1): a
-// cell whose volume is NaN, infinite or zero, or cells that do not fill the box, are
-// never written as a result.
-void refuse_lost_cells(const std::string& input, const VoronoiDiagram& vd) {
-  double sum = 0;
-  for (const auto& c : vd.cells) {
-    if (c.duplicate_of >= 0) continue;
-    if (!std::isfinite(c.volume) || c.volume <= 0)
-      throw InputError(input, 0, "a Voronoi cell with no volume (zero or NaN): the sites are too close for cells "
-                                 "in double precision");
-    sum += c.volume;
-  }
-  if (!(std::abs(sum - vd.box.volume()) <= 1e-6 * vd.box.volume()))
-    throw InputError(input, 0, "the cells do not fill the box (double precision lost on these sites)");
+  if (const std::string why = voronoi_sites_problem(points); !why.empty()) throw InputError(input, 0, why);
+  if (const std::string why = voronoi_box_problem(box, given, margin); !why.empty()) throw UsageError(why);
 }
 
 int run_voronoi(const VoronoiArgs& a) {
@@ -124,7 +88,8 @@ int run_voronoi(const VoronoiArgs& a) {
     return kDefect;
   }
   const VoronoiDiagram& vd = *built;
-  if (!a.check) refuse_lost_cells(a.input, vd);
+  // Without --check (which reports them as defects, exit 1) lost cells are never written.
+  if (const std::string why = a.check ? "" : lost_cells_problem(vd); !why.empty()) throw InputError(a.input, 0, why);
   nlohmann::json m = cells_manifest(vd);
   m["input"] = a.input;
   m["timing"] = {{"seconds_delaunay", vd.seconds_dt}, {"seconds_cells", vd.seconds_cells},

@@ -1,6 +1,7 @@
 // CGAL lives here only: conversion, input validation and one corefinement per cell.
 #include "fracture/cell_boolean.hpp"
 #include "fracture/deadline_visitor.hpp"
+#include "fracture/nearest_double.hpp"
 #include "kernel/parallel_for.hpp"
 
 #include <algorithm>
@@ -60,21 +61,13 @@ bool intersect_within(Mesh& a, Mesh& b, Mesh& out, double budget) {
                                                 CGAL::parameters::default_values(), CGAL::parameters::default_values());
 }
 
-// A lazy-exact coordinate to the nearest double or next to it: the interval when it is
-// tight, else the exact value (CGAL's own to_double accepts intervals 1e-5 wide).
-double coordinate(const K::FT& v) {
-  const auto& i = v.approx();
-  if (i.sup() - i.inf() <= 1e-14 * std::max(std::abs(i.inf()), std::abs(i.sup()))) return CGAL::to_double(i);
-  return CGAL::to_double(v.exact());
-}
-
 TriangleMesh to_triangles(const Mesh& m) {
   TriangleMesh out;
   std::vector<std::uint32_t> id(m.number_of_vertices() + m.number_of_removed_vertices(), 0);
   for (auto v : m.vertices()) {
     id[v.idx()] = static_cast<std::uint32_t>(out.vertices.size());
     const P3& p = m.point(v);
-    out.vertices.push_back({coordinate(p.x()), coordinate(p.y()), coordinate(p.z())});
+    out.vertices.push_back({nearest_double(p.x()), nearest_double(p.y()), nearest_double(p.z())});
   }
   for (auto f : m.faces()) {
     std::array<std::uint32_t, 3> t{};
@@ -322,7 +315,7 @@ MeshClipper::ExactTally MeshClipper::exact_tally() const {
   std::lock_guard<std::mutex> g(impl_->progress_mutex);
   ExactTally t;
   t.holds = impl_->tally && impl_->tally_sum == impl_->mesh_volume6;
-  t.difference = CGAL::to_double((impl_->tally_sum - impl_->mesh_volume6) / 6);
+  t.difference = nearest_double(ExactFT((impl_->tally_sum - impl_->mesh_volume6) / 6));
   return t;
 }
 void MeshClipper::set_progress(std::function<void(std::size_t, std::size_t)> progress) {
@@ -522,12 +515,12 @@ PieceMesh MeshClipper::Impl::intersect_with(const Mesh& m, const VoronoiCell& c)
 // cut faces marked.
 void MeshClipper::Impl::finish_piece(const Mesh& out, const VoronoiCell& c, PieceMesh& piece) const {
   const CGAL::Bbox_3 box = cell_box(c);
-  piece.mesh = to_triangles(out);
-  if (tally) {
+  if (tally) {  // first: forcing the exact values must not change the written doubles
     const ExactFT v = exact_volume6(out);
     std::lock_guard<std::mutex> g(progress_mutex);
     tally_sum += v;
   }
+  piece.mesh = to_triangles(out);
   // Cut faces: triangles whose three corners lie on one of the cell's face planes.
   const double tol =
       1e-9 * norm(Point3{box.xmax(), box.ymax(), box.zmax()} - Point3{box.xmin(), box.ymin(), box.zmin()});

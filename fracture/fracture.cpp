@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <thread>
@@ -279,6 +280,13 @@ void resolve_neighbours(const std::vector<std::vector<std::uint32_t>>& ids, Frac
 
 FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o) {
   if (o.pieces == 0) throw std::invalid_argument("--pieces must be at least 1");
+  // A gap as wide as the mesh leaves no piece (the CLI and Python both refuse it here).
+  if (const Box3 box = bounding_box(mesh); o.margin > 0 && !(o.margin < norm(box.hi - box.lo))) {
+    char why[160];
+    std::snprintf(why, sizeof why, "--gap %g is not smaller than the mesh (bounding box diagonal %g)", o.margin,
+                  norm(box.hi - box.lo));
+    throw std::invalid_argument(why);
+  }
   FractureResult r;
   MeshClipper clipper(solid_input(mesh, o, r), MeshClipper::MeshCheck::solid);  // analyzed by solid_input
   clipper.set_time_budget(o.boolean_seconds);

@@ -44,11 +44,10 @@ std::vector<std::string> write_piece_files(const std::string& dir, const Fractur
     char name[32];
     std::snprintf(name, sizeof name, "piece_%04zu.obj", i);
     const std::string path = dir + "/" + name;
-    std::FILE* f = std::fopen(path.c_str(), "w");
-    if (!f) throw std::runtime_error("cannot write " + path);
-    std::fprintf(f, "# dtlab fracture: piece %zu of %zu\nmtllib ../pieces.mtl\n", i, r.pieces.size());
-    write_piece(f, i, r.pieces[i], Point3{0, 0, 0}, 1);
-    std::fclose(f);
+    OutputFile file(path);
+    std::fprintf(file.get(), "# dtlab fracture: piece %zu of %zu\nmtllib ../pieces.mtl\n", i, r.pieces.size());
+    write_piece(file.get(), i, r.pieces[i], Point3{0, 0, 0}, 1);
+    file.close();
     names.push_back(name);
   }
   return names;

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "kernel/output_file.hpp"
+
 namespace dtlab {
 
 namespace {
@@ -63,8 +65,8 @@ void write_png(const std::string& path, int w, int h, const std::vector<std::uin
     if (n == 0) break;
   }
   put32(z, (b << 16) | a);
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw std::runtime_error("cannot write " + path);
+  OutputFile file(path, "wb");  // checked and atomic: a full disk is a named failure
+  std::FILE* f = file.get();
   static const std::uint8_t sig[8] = {137, 80, 78, 71, 13, 10, 26, 10};
   std::fwrite(sig, 1, 8, f);
   std::vector<std::uint8_t> ihdr;
@@ -74,7 +76,7 @@ void write_png(const std::string& path, int w, int h, const std::vector<std::uin
   chunk(f, "IHDR", ihdr);
   chunk(f, "IDAT", z);
   chunk(f, "IEND", {});
-  std::fclose(f);
+  file.close();
 }
 }  // namespace
 

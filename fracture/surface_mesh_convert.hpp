@@ -1,9 +1,7 @@
 #pragma once
 // TriangleMesh <-> CGAL Surface_mesh, for the CGAL translation units of fracture/
-// (mesh_repair.cpp, winding_solid.cpp). Exact (lazy) coordinates are rounded to the
-// nearest double.
-#include <algorithm>
-#include <cmath>
+// (mesh_repair.cpp, winding_solid.cpp, cell_boolean.cpp). Exact (lazy) coordinates are
+// rounded to the nearest double (fracture/nearest_double.hpp).
 #include <cstdint>
 #include <vector>
 
@@ -11,19 +9,14 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "fracture/nearest_double.hpp"
 #include "kernel/ids.hpp"
 #include "sampling/triangle_mesh.hpp"
 
 namespace dtlab::surface_mesh_convert {
 
 inline double coordinate(double v) { return v; }
-// Lazy-exact: the interval when tight, else the exact value (CGAL's to_double accepts
-// intervals 1e-5 wide).
-inline double coordinate(const CGAL::Epeck::FT& v) {
-  const auto& i = v.approx();
-  if (i.sup() - i.inf() <= 1e-14 * std::max(std::abs(i.inf()), std::abs(i.sup()))) return CGAL::to_double(i);
-  return CGAL::to_double(v.exact());
-}
+inline double coordinate(const CGAL::Epeck::FT& v) { return nearest_double(v); }
 
 // The faces of a Surface_mesh as a TriangleMesh; isolated vertices are left out (CGAL's
 // orient_to_bound_a_volume does not accept them).

@@ -32,6 +32,22 @@ nlohmann::json outcome_settings(const CampaignOptions& o) {
           {"--against", against}};
 }
 
+namespace {
+
+// The first results*.jsonl of `dir` holding any record ("" if none).
+std::string results_without_settings(const std::string& dir) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("results", 0) == 0 && e.path().extension() == ".jsonl" && e.is_regular_file(ec) &&
+        e.file_size(ec) > 0)
+      return name;
+  }
+  return "";
+}
+
+}  // namespace
+
 void check_resume_settings(const CampaignOptions& o) {
   const fs::path file = fs::path(o.out_dir) / "settings.json";
   const nlohmann::json now = outcome_settings(o);
@@ -44,6 +60,11 @@ void check_resume_settings(const CampaignOptions& o) {
     }
   }
   if (old.is_null()) {
+    if (const std::string kept = results_without_settings(o.out_dir); !kept.empty())
+      throw std::invalid_argument(
+          "--out " + o.out_dir + " holds results (" + kept +
+          ") but no settings.json (removed, or written before dtlab kept one): the "
+          "settings of those outcomes are unknown, so they are not resumed (use another --out)");
     write_text_file(file.string(), now.dump(2) + "\n");
     return;
   }

@@ -33,6 +33,10 @@ class ByteSource {
   // Lines consumed so far: after next_line, the 1-based number of that line.
   long line() const { return line_; }
   bool at_end() const { return pos_ >= data_.size(); }
+  // Text formats: a UTF-8 byte order mark at the start is skipped (as line_reader does).
+  void skip_text_bom() {
+    if (pos_ == 0 && data_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;
+  }
 
   // Next full line without its terminator ("\n" or "\r\n"); false at end of file.
   bool next_line(std::string_view& out) {

@@ -66,8 +66,10 @@ std::vector<char> nested_same_orientation(const std::vector<TriangleMesh>& shell
 
 bool MeshReport::solid() const {
   return closed && manifold && oriented && self_intersections == 0 && degenerate_triangles == 0 && volume != 0 &&
-         !overflow && nested_shells == 0;  // a NaN or infinite volume proves nothing
+         measurable() && nested_shells == 0;  // a NaN, infinite or underflowing volume proves nothing
 }
+
+bool MeshReport::measurable() const { return magnitude_problem(magnitude, !closed).empty(); }
 
 std::vector<std::string> MeshReport::problems() const {
   std::vector<std::string> p;
@@ -86,8 +88,10 @@ std::vector<std::string> MeshReport::problems() const {
                 at_text(self_intersection_at));
   if (degenerate_triangles > 0)
     p.push_back(count_text(degenerate_triangles, "degenerate triangle", "degenerate triangles") + at_text(degenerate_at));
-  if (triangles > 0 && closed && volume == 0) p.push_back("encloses no volume");
-  if (overflow) p.push_back("coordinates too large: the area or volume overflows a double");
+  if (const std::string m = magnitude_problem(magnitude, !closed); !m.empty())
+    p.push_back(m);
+  else if (triangles > 0 && closed && volume == 0)
+    p.push_back("encloses no volume");
   if (nested_shells > 0)
     p.push_back(count_text(nested_shells, "shell lies", "shells lie") +
                 " inside a shell of the same orientation (an inner shell inside-out, or overlapping solids)");
@@ -226,9 +230,7 @@ void measure_geometry(const TriangleMesh& mesh, const AdaptivePredicates& pred, 
   r.area = surface_area(mesh);
   r.volume = signed_volume(mesh);
   r.box = bounding_box(mesh);
-  const Point3 ext = r.box.hi - r.box.lo;
-  r.overflow = !std::isfinite(r.area) || !std::isfinite(r.volume) || !std::isfinite(ext.x) ||
-               !std::isfinite(ext.y) || !std::isfinite(ext.z);
+  r.magnitude = measure_magnitude(mesh, r.area, r.volume);
   const Bvh bvh(mesh);
   const std::uint64_t limit = self_intersection_limit == 0 ? UINT64_MAX : self_intersection_limit;
   bvh.for_each_overlapping_pair([&](std::uint32_t s, std::uint32_t t) {
@@ -236,7 +238,8 @@ void measure_geometry(const TriangleMesh& mesh, const AdaptivePredicates& pred, 
     ++r.self_intersections;
     note(r.self_intersection_at, (1.0 / 3) * (mesh.corner(s, 0) + mesh.corner(s, 1) + mesh.corner(s, 2)));
   });
-  if (r.closed && r.oriented && r.self_intersections == 0 && !r.overflow) r.nested_shells = count_nested_shells(mesh);
+  if (r.closed && r.oriented && r.self_intersections == 0 && r.measurable())
+    r.nested_shells = count_nested_shells(mesh);
 }
 
 }  // namespace

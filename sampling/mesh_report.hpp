@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sampling/mesh_magnitude.hpp"
 #include "sampling/triangle_mesh.hpp"
 
 namespace dtlab {
@@ -24,7 +25,7 @@ struct MeshReport {
   bool closed = false;    // every edge used exactly twice
   bool manifold = false;  // no edge used more than twice, one fan around every vertex
   bool oriented = false;  // every edge used twice is used once in each direction
-  bool overflow = false;  // area, volume or extent beyond a double: no sampler can work
+  MeshMagnitude magnitude;  // area, volume or extent beyond a double, or below: no sampler can work
   // Shells inside another shell of the same orientation (a second cover of a volume:
   // an inner shell inside-out, or overlapping solids); checked for up to 64 shells.
   std::size_t nested_shells = 0;
@@ -36,6 +37,8 @@ struct MeshReport {
   // Closed, manifold, oriented, no self-intersection, no degenerate triangle, nonzero
   // volume: what a boolean needs (an inward orientation is flipped by the user).
   bool solid() const;
+  // Area and (closed) volume are doubles: magnitude_problem is empty.
+  bool measurable() const;
   // One phrase per problem ("not closed: 12 boundary edges in 2 boundary loops, e.g. at
   // (0, 1, 2)"), solid-breaking problems first; duplicate vertices are listed too.
   std::vector<std::string> problems() const;

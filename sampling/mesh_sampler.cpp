@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "sampling/blue_noise.hpp"
+#include "sampling/mesh_magnitude.hpp"
 #include "sampling/morton_order.hpp"
 
 namespace dtlab {
@@ -31,6 +34,10 @@ MeshSampler::MeshSampler(const TriangleMesh& mesh)
     : mesh_(mesh), box_(bounding_box(mesh)), bvh_(mesh), fwn_(bvh_), sdf_(bvh_) {}
 
 SampleOutput MeshSampler::sample(const SampleRequest& r) const {
+  // Python's sample and fracture's sites come here too: one rule for the magnitudes.
+  const MeshMagnitude mag = measure_magnitude(mesh_, surface_area(mesh_), signed_volume(mesh_));
+  if (const std::string why = magnitude_problem(mag, r.method == SampleMethod::surface); !why.empty())
+    throw std::invalid_argument(why);
   const std::size_t n = r.blue_noise ? static_cast<std::size_t>(std::ceil(r.count * r.blue_noise_ratio)) : r.count;
   SampleOutput out;
   switch (r.method) {

@@ -139,6 +139,7 @@ struct PlyHeader {
 PlyHeader read_ply_header(detail::ByteSource& src, const std::string& path) {
   std::string_view line;
   auto fail = [&](const std::string& why) -> InputError { return InputError(path, src.line(), why); };
+  src.skip_text_bom();
   if (!src.next_line(line) || line != "ply") throw fail("not a PLY file: first line must be 'ply'");
   PlyHeader h;
   bool have_format = false;

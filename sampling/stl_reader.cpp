@@ -1,5 +1,6 @@
 // STL, ASCII and binary. STL stores each triangle with its own three corners, so
 // corners with bit-identical coordinates are welded into shared vertices.
+#include <cctype>
 #include <cstring>
 #include <unordered_map>
 
@@ -122,8 +123,12 @@ TriangleMesh read_stl_ascii(detail::ByteSource& src) {
 
 TriangleMesh read_stl(const std::string& path) {
   detail::ByteSource src(path);
-  // Binary files may also begin with "solid"; their exact size gives them away.
-  bool binary = src.data().compare(0, 5, "solid") != 0;
+  // Binary files may also begin with "solid"; their exact size gives them away. Text
+  // may start with a byte order mark and blanks.
+  const std::string& d = src.data();
+  std::size_t text = d.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  while (text < d.size() && text < 80 && std::isspace(static_cast<unsigned char>(d[text]))) ++text;
+  bool binary = d.compare(text, 5, "solid") != 0;
   if (!binary && src.size() >= 84) {
     std::uint32_t n;
     std::memcpy(&n, src.data().data() + 80, 4);
@@ -134,6 +139,7 @@ TriangleMesh read_stl(const std::string& path) {
     if (src.size() < 84) throw InputError(path, 0, "binary STL shorter than its 84-byte header");
     return read_stl_binary(src);
   }
+  src.skip_text_bom();
   return read_stl_ascii(src);
 }
 

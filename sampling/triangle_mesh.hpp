@@ -1,6 +1,7 @@
 #pragma once
 // An indexed triangle mesh: the input of every sampler.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -20,7 +21,12 @@ struct TriangleMesh {
     const Point3& a = corner(t, 0);
     return cross(corner(t, 1) - a, corner(t, 2) - a);
   }
-  double triangle_area(std::size_t t) const { return 0.5 * norm(area_normal(t)); }
+  // hypot: no square of a component overflows or underflows (a triangle of side 1e80
+  // has an area of 1e160, whatever its components' squares).
+  double triangle_area(std::size_t t) const {
+    const Point3 n = area_normal(t);
+    return 0.5 * std::hypot(n.x, n.y, n.z);
+  }
 };
 
 Box3 bounding_box(const TriangleMesh& mesh);

@@ -224,6 +224,11 @@ expect 2 "fuzz resume with another --eps is refused" -- "$dtlab" fuzz --family n
 says "the refusal names --eps" "with --eps 1e-12"
 expect 2 "fuzz resume with another --points is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 --points 20 --out "$D" --quiet --no-shrink
 says "the refusal names --points" "with --points 64"
+rm "$D/settings.json"
+expect 2 "fuzz resume after settings.json was removed is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 0.1 --out "$D" --quiet --no-shrink
+says "the refusal names the missing settings" "holds results \(results.jsonl\) but no settings.json"
+"$dtlab" fuzz --family near_degenerate --cases 1 --predicates epsilon --eps 1e-12 --out "$tmp/campE" --quiet --no-shrink >/dev/null
+cp "$tmp/campE/settings.json" "$D/"
 expect 2 "fuzz resume with another --order is refused" -- "$dtlab" fuzz --family near_degenerate --cases 3 --predicates epsilon --eps 1e-12 --order input --out "$D" --quiet --no-shrink
 says "the refusal names --order" "with --order"
 # Each setting that changes outcomes (--perturb is part of the backend labels).
@@ -239,6 +244,12 @@ done
 # whole one glued to it; here the cut is made afresh from its first five lines.)
 cp -r "$finds/fuzz_cut_line/campT" "$tmp/campT"
 chmod -R u+w "$tmp/campT"
+# The probe's dtlab kept no settings.json: such results are not resumed (their settings
+# are unknown); with the settings of the run that made them (the defaults) they are.
+expect 2 "resume of results without settings.json is refused" -- "$dtlab" fuzz --family uniform --cases 6 --out "$tmp/campT" --quiet
+says "the missing settings are named" "no settings.json"
+"$dtlab" fuzz --family uniform --cases 1 --out "$tmp/campS" --quiet >/dev/null
+cp "$tmp/campS/settings.json" "$tmp/campT/"
 expect 0 "resume of the probe's folder" -- "$dtlab" fuzz --family uniform --cases 6 --out "$tmp/campT" --quiet
 says "its six cases are there, none rerun" "0 cases run now, 6 resumed"
 head -n 5 "$finds/fuzz_cut_line/campT/results.jsonl" > "$tmp/campT/results.jsonl"

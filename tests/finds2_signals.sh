@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Interrupts of the long commands beyond `oracle` (finds2_cli.sh covers oracle, bench and
-# Python): `fuzz --against`, `fuzz --target`, `experiment leaderboard` with a peer that
-# never answers, and `experiment benchmark` with CGAL and TetGen. Each runs in a session
+# Python): `fuzz --against`, `fuzz --target`, `experiment leaderboard`, `voronoi --against`
+# and `fracture --tets` with a peer that never answers, and `experiment benchmark` with
+# CGAL and TetGen. Each runs in a session
 # of its own and gets SIGINT (to its process group, as Ctrl-C), SIGTERM, SIGHUP or, to
 # dtlab alone, SIGKILL once a child runs; then the exit status is the shell's
 # (130/143/129/137), no process of that session is left (ps) and the temp folder holds
@@ -70,6 +71,11 @@ for s in "INT 130" "TERM 143" "HUP 129" "KILL 137"; do
     --peers slow --peer "slow=$tmp/slow.sh {in} {out}" --out "$tmp/lb-$1" --quiet
   interrupt benchmark "$1" "$2" "$dtlab" experiment benchmark --max-n 1000000 --runs 1 --out "$tmp/bm-$1" \
     --no-figures --quiet
+  # Beyond the probe's rows: a Voronoi peer by command, and fracture's TetGen (--tets).
+  interrupt voronoi-against "$1" "$2" "$dtlab" voronoi "$finds/five.xyz" --against slow \
+    --voronoi-peer "slow=$tmp/slow.sh {in} {out}" --out "$tmp/va-$1" --quiet
+  interrupt fracture-tets "$1" "$2" "$dtlab" fracture builtin --pieces 2 --tets --tetgen "$tmp/slow.sh" \
+    --out "$tmp/fx-$1" --quiet
 done
 
 echo "finds2_signals: $pass passed, $fails failed"

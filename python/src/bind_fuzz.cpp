@@ -4,6 +4,7 @@
 // on a peer name or a Python callable, with progress= per family; _core.wilson_interval: its rates' intervals.
 #include <functional>
 #include <map>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -81,6 +82,11 @@ py::list peer_campaign(const std::string& target, const py::dict& functions, con
                        double memory_mb, const py::object& progress) {
   if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("--timeout: must be a number in [0.001, 1e6]");
   if (!(memory_mb >= 0 && memory_mb <= 1e9)) throw py::value_error("--memory: must be a number in [0, 1e9]");
+  // The CLI's ranges (cli/cmd_fuzz.cpp): 10^12 points ended in std::bad_alloc.
+  for (auto [name, v] : {std::pair{"--points", max_points}, std::pair{"--min-points", min_points}})
+    if (v < 1 || v > 10000000)
+      throw py::value_error(std::string(name) + ": " + std::to_string(v) + " not in [1, 1e7]");
+  if (cases > 1000000000000ull) throw py::value_error("--cases: " + std::to_string(cases) + " not in [0, 1e12]");
   if (min_points > max_points)
     throw py::value_error("--min-points " + std::to_string(min_points) + " is above --points " +
                           std::to_string(max_points));
@@ -114,6 +120,8 @@ py::list peer_campaign(const std::string& target, const py::dict& functions, con
       results = experiments::run_peer_campaign(o);
     } catch (const ChildInterrupted&) {
       interrupted = true;  // the KeyboardInterrupt (or the runner's or progress's error) is pending, raised below
+    } catch (const std::bad_alloc&) {
+      throw;  // MemoryError, not bad input (as the CLI's exit 1)
     } catch (const std::exception& e) {
       py::gil_scoped_acquire gil;
       throw py::value_error(e.what());

@@ -7,7 +7,9 @@
 
 #include "python/src/bindings.hpp"
 #include "python/src/numpy_io.hpp"
+#include "python/src/progress_callback.hpp"
 #include "voronoi/voronoi.hpp"
+#include "voronoi/voronoi_range.hpp"
 
 namespace py = pybind11;
 
@@ -31,11 +33,20 @@ py::dict voronoi(py::handle points, std::optional<std::vector<double>> box, doub
     o.box = vor::Box{{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
   }
   if (!(margin >= 0)) throw py::value_error("--margin must be non-negative");
+  const auto sites = points_of(pts);
+  // The CLI's ranges (voronoi/voronoi_range.hpp): cells right in doubles, or refused.
+  if (std::string why = voronoi_sites_problem(sites); !why.empty()) throw py::value_error(why);
+  if (std::string why = voronoi_box_problem(o.box ? *o.box : default_box(sites, margin), o.box.has_value(), margin);
+      !why.empty())
+    throw py::value_error(why);
   auto vd = std::make_shared<VoronoiDiagram>();
+  std::optional<Progress> listener = python_progress(py::none());  // Ctrl-C during the Delaunay build
   {
     py::gil_scoped_release nogil;
-    *vd = compute_voronoi(points_of(pts), o);
+    const ProgressScope scope(progress_pointer(listener));
+    *vd = compute_voronoi(sites, o);
   }
+  if (std::string why = lost_cells_problem(*vd); !why.empty()) throw py::value_error(why);
   // One owner for every view: the diagram (its cells' spans point into vd->storage).
   py::capsule owner(new std::shared_ptr<const VoronoiDiagram>(vd),
                     [](void* p) { delete static_cast<std::shared_ptr<const VoronoiDiagram>*>(p); });

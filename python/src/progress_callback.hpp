@@ -41,10 +41,18 @@ inline std::function<void(const ProgressEvent&)> pending_callback(const pybind11
   };
 }
 
-// Empty for None.
+// Python's pending signal handlers only (progress=None): Ctrl-C reaches a long call
+// without a callable too, at the same steps (about 1000 per stage).
+inline std::function<void(const ProgressEvent&)> signal_callback() {
+  return [](const ProgressEvent&) {
+    pybind11::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw pybind11::error_already_set();
+  };
+}
+
+// None: a listener that only answers Ctrl-C.
 inline std::optional<Progress> python_progress(const pybind11::object& callback) {
-  if (callback.is_none()) return std::nullopt;
-  return Progress(python_callback(callback));
+  return Progress(callback.is_none() ? signal_callback() : python_callback(callback));
 }
 
 inline Progress* progress_pointer(std::optional<Progress>& p) { return p ? &*p : nullptr; }

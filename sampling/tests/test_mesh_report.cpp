@@ -116,3 +116,33 @@ TEST_CASE("report: holes, duplicates and degenerate triangles with locations") {
   CHECK(r.volume == Approx(1.0 / 6));
   CHECK(r.summary().find("closed, manifold, oriented, 0 self-intersecting pairs") != std::string::npos);
 }
+
+TEST_CASE("report: magnitudes a double cannot measure, above and below", "[magnitude]") {
+  const auto scaled = [](double s) {
+    TriangleMesh m = tetrahedron();
+    for (Point3& p : m.vertices) p = s * p;
+    return m;
+  };
+  // Side 1e80: area 1e160 and volume 1e239 are doubles (the area's squares are not).
+  CHECK(analyze_mesh(scaled(1e80)).solid());
+  CHECK(analyze_mesh(scaled(1e-100)).solid());
+  for (double s : {1e-110, 1e-160, 1e-300}) {
+    INFO("side " << s);
+    const MeshReport r = analyze_mesh(scaled(s));
+    CHECK_FALSE(r.solid());
+    CHECK(r.magnitude.volume_underflow);
+    CHECK(r.why_not_solid().find("coordinates too small") != std::string::npos);
+    CHECK(r.why_not_solid().find("encloses no volume") == std::string::npos);
+  }
+  CHECK(analyze_mesh(scaled(1e103)).magnitude.overflow);
+  // A closed mesh that is flat at a normal scale still encloses no volume.
+  TriangleMesh flat = tetrahedron();
+  flat.vertices[3] = {0.25, 0.25, 0};
+  const MeshReport f = analyze_mesh(flat);
+  CHECK_FALSE(f.magnitude.volume_underflow);
+  CHECK_FALSE(f.solid());
+  // Surface points need the area only: an open triangle of side 1e-90 has one (1e-180).
+  TriangleMesh tri = scaled(1e-90);
+  tri.triangles.resize(1);
+  CHECK(magnitude_problem(measure_magnitude(tri, surface_area(tri), signed_volume(tri)), true).empty());
+}

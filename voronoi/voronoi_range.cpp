@@ -1,0 +1,50 @@
+#include "voronoi/voronoi_range.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace dtlab {
+
+std::string voronoi_sites_problem(std::span<const Point3> sites) {
+  if (sites.empty()) return "";
+  Point3 lo = sites[0], hi = sites[0];
+  for (const Point3& p : sites) {
+    if (!(std::abs(p.x) <= kCellCoordinateMax && std::abs(p.y) <= kCellCoordinateMax &&
+          std::abs(p.z) <= kCellCoordinateMax))
+      return "site coordinates beyond 1e100 in magnitude (their squares overflow a double): Voronoi cells are "
+             "computed for |x| <= 1e100";
+    lo = min3(lo, p);
+    hi = max3(hi, p);
+  }
+  if (std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) < kCellExtentMin)
+    return "sites span less than 1e-100: Voronoi cells need an extent of at least 1e-100";
+  return "";
+}
+
+std::string voronoi_box_problem(const vor::Box& box, bool given, double margin) {
+  for (double c : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z})
+    if (!(std::abs(c) <= kBoxCoordinateMax)) {
+      char what[96];
+      std::snprintf(what, sizeof what, "--margin %g grows the sites' bounding box", margin);
+      return std::string(given ? "--box: corners" : what) +
+             " beyond 1e101 in magnitude (cell volumes overflow a double near 1e102): cells are computed in a box "
+             "within |x| <= 1e101";
+    }
+  return "";
+}
+
+std::string lost_cells_problem(const VoronoiDiagram& vd) {
+  double sum = 0;
+  for (const auto& c : vd.cells) {
+    if (c.duplicate_of >= 0) continue;
+    if (!std::isfinite(c.volume) || c.volume <= 0)
+      return "a Voronoi cell with no volume (zero or NaN): the sites are too close for cells in double precision";
+    sum += c.volume;
+  }
+  if (!(std::abs(sum - vd.box.volume()) <= 1e-6 * vd.box.volume()))
+    return "the cells do not fill the box (double precision lost on these sites)";
+  return "";
+}
+
+}  // namespace dtlab
