@@ -152,6 +152,8 @@ class ClaimedMesh {
   }
 
   std::uint8_t id() const { return me_; }
+  // The view uses the storage's current addresses (attach() ran since its last growth).
+  bool attached() const { return rec_ == shared_->records() && own_ == shared_->owners(); }
   // No insertion in progress: the view holds no live tet.
   bool idle() const { return claimed_.empty() && created_.empty() && destroyed_.empty(); }
   // f(t) for each slot this view keeps for later tets: its pool and the rest of its block.
@@ -211,9 +213,10 @@ class ClaimedMesh {
 };
 
 // The protocol's state between passes (no thread running), for the debug builds' check
-// after every pass and for tests: each slot handed out is either a spare slot (pool or
-// unused block) of exactly one view, owned by it, or a live free tet whose neighbours are
-// live and point back. "" or the first defect found. O(slots).
+// after every pass and for tests: every view on the storage's current addresses; each
+// slot handed out is either a spare slot (pool or unused block) of exactly one view,
+// owned by it, or a live free tet whose neighbours are live and point back. "" or the
+// first defect found. O(slots).
 inline std::string ownership_defect(const SharedTets& store, std::span<const ClaimedMesh* const> views) {
   const std::uint32_t n = store.size();
   const TetRecord* rec = store.records();
@@ -225,6 +228,7 @@ inline std::string ownership_defect(const SharedTets& store, std::span<const Cla
   };
   for (const ClaimedMesh* v : views) {
     if (!v->idle()) note(0, "a view is inside an insertion");
+    if (!v->attached()) note(0, "a view uses the storage's addresses from before it grew");
     v->for_each_spare([&](std::uint32_t t) {
       if (t >= n)
         note(t, "a spare slot beyond the slots handed out");
