@@ -96,15 +96,10 @@ class ClaimedMesh {
   }
 
   // Takes tet t for this insertion (no-op when already held); throws ClaimConflict when
-  // another thread holds it.
+  // another thread holds it. Inline for the test of the usual case (a tet this insertion
+  // holds or created: most calls come from link()); the compare-and-swap out of line.
   void claim(std::uint32_t t) {
-    std::atomic_ref<std::uint8_t> owner(own_[t]);
-    if (owner.load(std::memory_order_relaxed) == me_) return;
-    std::uint8_t free = 0;
-    if (!owner.compare_exchange_strong(free, me_, std::memory_order_acquire, std::memory_order_relaxed))
-      throw ClaimConflict{};
-    claimed_.push_back(t);
-    saved_.push_back(rec_[t]);
+    if (std::atomic_ref<std::uint8_t>(own_[t]).load(std::memory_order_relaxed) != me_) take(t);
   }
 
   // A live tet, claimed, to start a walk at: `hint` (a slot this thread wrote: a tet of
@@ -174,6 +169,15 @@ class ClaimedMesh {
     // Debug builds check the protocol on every access: the thread holds what it touches.
     assert(std::atomic_ref<std::uint8_t>(own_[t]).load(std::memory_order_relaxed) == me_);
     return rec_[t];
+  }
+
+  [[gnu::noinline]] void take(std::uint32_t t) {
+    std::uint8_t free = 0;
+    if (!std::atomic_ref<std::uint8_t>(own_[t]).compare_exchange_strong(free, me_, std::memory_order_acquire,
+                                                                        std::memory_order_relaxed))
+      throw ClaimConflict{};
+    claimed_.push_back(t);
+    saved_.push_back(rec_[t]);
   }
 
   bool try_take_live(std::uint32_t t) {
