@@ -3,6 +3,8 @@
 // (default 20000): a 64-bit hash of the sorted canonical tets (kernel/canonical_order.hpp)
 // of the serial build and of the threaded build at 1, 2, 3, 4 and 8 threads, RUNS runs each
 // (default 2; SOURCE: that point source only), adaptive predicates with --perturb sos.
+// DTLAB_SLOTS_PER_POINT=F starts the threaded builds' storage at F tet slots per point
+// (BuildOptions::parallel_slots_per_point; e.g. 0.01: every input grows many times).
 // Prints a Markdown table; exit 1 when any hash differs from the serial build's (a failing
 // build hashes as 0: only an input the serial build also refuses, a lower-dimensional one,
 // may fail).
@@ -49,6 +51,7 @@ bool row(const std::string& source, std::size_t n, int runs) {
       BuildOptions o;
       o.threads = threads;
       o.parallel_grain = 64;  // small passes split too: more conflicts, more schedules
+      if (const char* f = std::getenv("DTLAB_SLOTS_PER_POINT")) o.parallel_slots_per_point = std::atof(f);
       const BuildResult r = build_delaunay(pts, spec, o);
       const std::uint64_t got = r.failure ? 0 : tets_hash(r.mesh.tets, pts.size());
       if (got != want || r.duplicates != serial.duplicates) {

@@ -20,7 +20,7 @@ struct BuildOptions {
   Boundary boundary = Boundary::infinite;
   double bigtet_factor = 10.0;  // bigtet size; 1 = the smallest one holding the bounding box
   InsertionOrder order = InsertionOrder::brio;
-  std::uint64_t seed = 1;       // walk randomisation and BRIO rounds
+  std::uint64_t seed = 1;  // walk randomisation and BRIO rounds
   // Count which adaptive stage decided each predicate call (BuildStats::stages): an
   // increment through a pointer on every call, so benchmarks turn it off.
   bool count_stages = true;
@@ -33,6 +33,10 @@ struct BuildOptions {
   // points: fewer threads, down to the serial insertion). Tests and fuzz campaigns set
   // it to 1 so that even small inputs run on every thread.
   std::size_t parallel_grain = 2048;
+  // Tet slots per point that the parallel build's shared storage starts with (it grows
+  // by half when full, between passes). 7 holds uniform and mesh samples (6.7 tets per
+  // point); tests set it tiny so that every input grows many times.
+  double parallel_slots_per_point = 7.0;
   // Debug builds: check the whole mesh's invariants after every flip (kernel/mesh_check.hpp;
   // DTLAB_CHECK_COMBINATORICS=1 does the same); serial builds only, slow (a pass over the
   // mesh per flip). Release builds compile the check out and ignore this.
@@ -75,18 +79,19 @@ struct BuildStats {
   // flips and predicate calls are counted above), and the threads used.
   std::uint64_t conflicts = 0;
   unsigned threads = 1;
-  double seconds = 0;  // wall time of the insertion loop
+  std::uint64_t storage_growths = 0;  // parallel build: times the shared tet storage grew
+  double seconds = 0;                 // wall time of the insertion loop
   // Which stage of the adaptive predicates decided how many calls ("insphere:A", ...).
   std::vector<std::pair<std::string, std::uint64_t>> stages;
 };
 
 struct BuildResult {
-  Tetrahedralization mesh;               // compacted finite tets over the input points
-  std::vector<std::uint32_t> duplicates; // inputs equal to an earlier point: not inserted
-  std::vector<std::uint32_t> skipped;    // inputs not inserted because the build failed first
+  Tetrahedralization mesh;                // compacted finite tets over the input points
+  std::vector<std::uint32_t> duplicates;  // inputs equal to an earlier point: not inserted
+  std::vector<std::uint32_t> skipped;     // inputs not inserted because the build failed first
   std::optional<BuildFailure> failure;
   BuildStats stats;
-  std::size_t peak_tets = 0;             // tet slots allocated (incl. infinite and free)
+  std::size_t peak_tets = 0;  // tet slots allocated (incl. infinite and free)
 };
 
 BuildResult build_delaunay(std::span<const Point3> points, const PredicateSpec& predicates,

@@ -154,12 +154,9 @@ void insert_serially(InsertionJob<B>& j) {
   std::vector<TetRecord>().swap(records);
 }
 
-// The threaded build (kernel/parallel_build.hpp); false, with nothing kept, when its
-// storage had to grow: an open defect (kernel/README.md) lets such a build, on
-// quadratic-size outputs such as the moment curve's, return tets other than the serial
-// build's, so the caller redoes it serially.
+// The threaded build (kernel/parallel_build.hpp); fills j.res.
 template <PredicateBackend B>
-bool insert_threaded(InsertionJob<B>& j) {
+void insert_threaded(InsertionJob<B>& j) {
   ParallelInsertion<B> par(j.pts.data(), j.n, j.inf, j.pred, j.opt, j.threads);
   par.start(j.first, 4);
   // BRIO rounds one after the other (the input order is one round).
@@ -176,12 +173,6 @@ bool insert_threaded(InsertionJob<B>& j) {
         if (!j.is_first(static_cast<std::uint32_t>(k))) j.log.skipped.push_back(static_cast<std::uint32_t>(k));
       break;
     }
-    if (par.grew()) break;  // redone serially: no later round is worth inserting
-  }
-  if (par.grew()) {
-    std::free(par.store().release_records());
-    j.log = InsertionLog{};
-    return false;
   }
   j.res.stats = par.finish();
   if (j.infinite) j.res.stats.inserted += 4;
@@ -190,7 +181,6 @@ bool insert_threaded(InsertionJob<B>& j) {
   resolve_log(j.res, j.log, j.order);
   compact_canonical(par.store().records(), par.store().size(), j.n, j.order, j.res.mesh.tets, j.threads);
   std::free(par.store().release_records());
-  return true;
 }
 
 // `pts` holds the input points in input order; the build owns it, permutes it in place
@@ -287,7 +277,10 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
                       {}};
   progress_begin(job.progress, "insert", n);  // stage "insert": points of the order done
   job.t0 = std::chrono::steady_clock::now();
-  if (job.threads <= 1 || !insert_threaded(job)) insert_serially(job);
+  if (job.threads <= 1)
+    insert_serially(job);
+  else
+    insert_threaded(job);
   if (!res.failure) progress_advance(job.progress, n);
   pts.resize(n);
   detail::restore_input_order(pts, order);

@@ -96,15 +96,10 @@ class ClaimedMesh {
   }
 
   // Takes tet t for this insertion (no-op when already held); throws ClaimConflict when
-  // another thread holds it.
+  // another thread holds it. Inline for the test of the usual case (a tet this insertion
+  // holds or created: most calls come from link()); the compare-and-swap out of line.
   void claim(std::uint32_t t) {
-    std::atomic_ref<std::uint8_t> owner(own_[t]);
-    if (owner.load(std::memory_order_relaxed) == me_) return;
-    std::uint8_t free = 0;
-    if (!owner.compare_exchange_strong(free, me_, std::memory_order_acquire, std::memory_order_relaxed))
-      throw ClaimConflict{};
-    claimed_.push_back(t);
-    saved_.push_back(rec_[t]);
+    if (std::atomic_ref<std::uint8_t>(own_[t]).load(std::memory_order_relaxed) != me_) take(t);
   }
 
   // A live tet, claimed, to start a walk at: `hint` (a slot this thread wrote: a tet of
@@ -152,6 +147,8 @@ class ClaimedMesh {
   }
 
   std::uint8_t id() const { return me_; }
+  // The view uses the storage's current addresses (attach() ran since its last growth).
+  bool attached() const { return rec_ == shared_->records() && own_ == shared_->owners(); }
   // No insertion in progress: the view holds no live tet.
   bool idle() const { return claimed_.empty() && created_.empty() && destroyed_.empty(); }
   // f(t) for each slot this view keeps for later tets: its pool and the rest of its block.
@@ -172,6 +169,15 @@ class ClaimedMesh {
     // Debug builds check the protocol on every access: the thread holds what it touches.
     assert(std::atomic_ref<std::uint8_t>(own_[t]).load(std::memory_order_relaxed) == me_);
     return rec_[t];
+  }
+
+  [[gnu::noinline]] void take(std::uint32_t t) {
+    std::uint8_t free = 0;
+    if (!std::atomic_ref<std::uint8_t>(own_[t]).compare_exchange_strong(free, me_, std::memory_order_acquire,
+                                                                        std::memory_order_relaxed))
+      throw ClaimConflict{};
+    claimed_.push_back(t);
+    saved_.push_back(rec_[t]);
   }
 
   bool try_take_live(std::uint32_t t) {
@@ -211,9 +217,10 @@ class ClaimedMesh {
 };
 
 // The protocol's state between passes (no thread running), for the debug builds' check
-// after every pass and for tests: each slot handed out is either a spare slot (pool or
-// unused block) of exactly one view, owned by it, or a live free tet whose neighbours are
-// live and point back. "" or the first defect found. O(slots).
+// after every pass and for tests: every view on the storage's current addresses; each
+// slot handed out is either a spare slot (pool or unused block) of exactly one view,
+// owned by it, or a live free tet whose neighbours are live and point back. "" or the
+// first defect found. O(slots).
 inline std::string ownership_defect(const SharedTets& store, std::span<const ClaimedMesh* const> views) {
   const std::uint32_t n = store.size();
   const TetRecord* rec = store.records();
@@ -225,6 +232,7 @@ inline std::string ownership_defect(const SharedTets& store, std::span<const Cla
   };
   for (const ClaimedMesh* v : views) {
     if (!v->idle()) note(0, "a view is inside an insertion");
+    if (!v->attached()) note(0, "a view uses the storage's addresses from before it grew");
     v->for_each_spare([&](std::uint32_t t) {
       if (t >= n)
         note(t, "a spare slot beyond the slots handed out");

@@ -21,8 +21,9 @@ class BasicIdStack {
   Id back() const { return data_[size_ - 1]; }
   void pop_back() { --size_; }
   void clear() { size_ = 0; }
-  void push_back(Id v) {
-    if (size_ == capacity_) [[unlikely]] grow(size_ + 1);
+  [[gnu::always_inline]] void push_back(Id v) {
+    if (size_ == capacity_) [[unlikely]]
+      grow(size_ + 1);
     data_[size_++] = v;
   }
   void reserve(std::size_t n) {

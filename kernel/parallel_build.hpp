@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cassert>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -65,9 +66,7 @@ class ParallelInsertion {
   // corners after the n input points.
   ParallelInsertion(const Point3* pts, std::uint32_t n, std::uint32_t inf, const B& pred, const BuildOptions& opt,
                     unsigned threads)
-      : store_(7 * std::size_t(n) + 64 + 2 * std::size_t(ClaimedMesh::kBlock) * threads),
-        grain_(std::max<std::size_t>(opt.parallel_grain, 1)),
-        stages_(threads) {
+      : store_(initial_slots(n, opt, threads)), grain_(std::max<std::size_t>(opt.parallel_grain, 1)), stages_(threads) {
     B mine = pred;
     AdaptiveStats** counter = detail::stage_counter(mine);
     caller_stages_ = counter ? *counter : nullptr;
@@ -80,8 +79,17 @@ class ParallelInsertion {
   }
 
   SharedTets& store() { return store_; }
-  // True once the storage had to grow (build_impl.hpp's insert_threaded then gives up).
-  bool grew() const { return grew_; }
+
+  // The storage's first capacity: opt.parallel_slots_per_point per point and room for
+  // the first tets and two blocks per thread.
+  static std::size_t initial_slots(std::uint32_t n, const BuildOptions& opt, unsigned threads) {
+    const double per_point = std::isfinite(opt.parallel_slots_per_point) && opt.parallel_slots_per_point > 0
+                                 ? std::min(opt.parallel_slots_per_point, 1e3)
+                                 : 7.0;
+    return static_cast<std::size_t>(per_point * n) + 64 + 2 * std::size_t(ClaimedMesh::kBlock) * threads;
+  }
+  // How many times the storage grew.
+  std::size_t growths() const { return growths_; }
 
   // The first tet (and its infinite neighbours) on thread 0's view; every thread's
   // geometry learns it (it defines the symbolic inner point O).
@@ -132,6 +140,7 @@ class ParallelInsertion {
       s.insphere_calls += w->geometry().insphere_calls;
     }
     s.conflicts = conflicts_;
+    s.storage_growths = growths_;
     s.threads = static_cast<unsigned>(workers_.size());
     if (caller_stages_)
       for (const AdaptiveStats& st : stages_) detail::add_stages(*caller_stages_, st);
@@ -154,10 +163,7 @@ class ParallelInsertion {
       switch (w.insert(k)) {
         case Outcome::inserted: ++vertices_; break;
         case Outcome::duplicate: log.duplicates.push_back({k, w.found()}); break;
-        case Outcome::no_room:
-          grow();
-          w.mesh().attach();
-          continue;  // the same point again
+        case Outcome::no_room: grow(); continue;  // the same point again
         case Outcome::conflict:
           log.failure =
               InsertionLog::Failure{k, FailureKind::inconsistent_adjacency, "the adjacency leads to a freed tet"};
@@ -251,9 +257,14 @@ class ParallelInsertion {
 #endif
   }
 
+  // The storage grows by half; every view, not only the ones of the next pass, learns
+  // the new addresses: a view left on the old ones would write its block's unused
+  // slots there at finish() (the defect of 2026-12-02: those slots, never marked dead,
+  // came out of the compaction as tets (0, 0, 0, 0)).
   void grow() {
     store_.grow(store_.capacity() + store_.capacity() / 2 + ClaimedMesh::kBlock * workers_.size());
-    grew_ = true;
+    for (auto& w : workers_) w->mesh().attach();
+    ++growths_;
   }
 
   SharedTets store_;
@@ -263,7 +274,7 @@ class ParallelInsertion {
   std::vector<std::unique_ptr<Worker>> workers_;
   std::size_t vertices_ = 0;  // in the mesh (the infinite vertex counted)
   std::uint64_t conflicts_ = 0;
-  bool grew_ = false;
+  std::size_t growths_ = 0;
 };
 
 }  // namespace dtlab

@@ -19,7 +19,8 @@ nlohmann::json tetra_summary(const BuildResult& r, const KernelOptions& k) {
   j["orient3d_calls"] = r.stats.orient3d_calls;
   j["insphere_calls"] = r.stats.insphere_calls;
   j["build_threads"] = r.stats.threads;
-  j["conflicts"] = r.stats.conflicts;  // parallel build: insertions rolled back and retried
+  j["conflicts"] = r.stats.conflicts;              // parallel build: insertions rolled back and retried
+  j["storage_growths"] = r.stats.storage_growths;  // parallel build: the shared tet storage grew
   for (const auto& [stage, count] : r.stats.stages) j["adaptive_stages"][stage] = count;
   if (r.failure)
     j["failure"] = {

@@ -62,6 +62,13 @@ TEST_CASE("claimed mesh: the between-pass check finds broken ownership", "[threa
     store.records()[2].adj[1] = Facet(1024, 3);
     CHECK(ownership_defect(store, views) == "slot 2: an adjacency that does not point back");
   }
+  SECTION("a view left on the addresses from before a growth") {
+    store.grow(1 << 24);  // the 4 KiB of owner bytes move to a new block
+    a.attach();           // b is not told
+    CHECK(ownership_defect(store, views) == "slot 0: a view uses the storage's addresses from before it grew");
+    b.attach();
+    CHECK(ownership_defect(store, views) == "");
+  }
   SECTION("an insertion in progress") {
     a.claim(4);
     CHECK(ownership_defect(store, views) == "slot 0: a view is inside an insertion");
