@@ -22,7 +22,8 @@ std::string line_of(const VoronoiPeerRun& r) {
   if (r.report) {
     const auto text = voronoi_counts_text(*r.report);
     if (!text.empty()) s << " (" << text << ")";
-    if (r.report->largest_wrong_face > 0) s << ", largest wrong face " << r.report->largest_wrong_face << " of extent^2";
+    if (r.report->largest_wrong_face > 0)
+      s << ", largest wrong face " << r.report->largest_wrong_face << " of extent^2";
     if (r.report->largest_small_face > 0) s << ", largest small face " << r.report->largest_small_face;
     s << ", vertices within " << r.report->max_vertex_ulps << " ulps";
   }
@@ -51,11 +52,13 @@ int judge_voronoi_peers(const std::vector<Point3>& sites, const VoronoiDiagram& 
   VoronoiPeerOptions o;
   o.timeout_s = a.timeout;
   o.check.dt = diagram.dt;  // null unless our DT came from exact predicates: then built by the checker
+  o.check.relation = voronoi_relation(sites, o.check);  // one relation for ours and every peer
   const VoronoiCheckReport ours = check_voronoi(sites, diagram.box, tool_cells_of(diagram), o.check);
   out["exact_check"] = to_json(ours);
   if (!json) {
     const std::string counts = voronoi_counts_text(ours);
-    std::printf("dtlab: %s%s\n", voronoi_verdict_name(ours.verdict), counts.empty() ? "" : (" (" + counts + ")").c_str());
+    std::printf("dtlab: %s%s\n", voronoi_verdict_name(ours.verdict),
+                counts.empty() ? "" : (" (" + counts + ")").c_str());
   }
   out["peers"] = nlohmann::json::object();
   bool all_answered = true;

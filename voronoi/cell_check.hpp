@@ -10,6 +10,10 @@
 #include <utility>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "voronoi/voronoi.hpp"
 
 namespace dtlab {
@@ -56,11 +60,41 @@ inline std::string check_cell_closed(const VoronoiCell& c) {
   return {};
 }
 
+// Whether n . (p_i - o) > tol for some i < count (p_i = (X[i], Y[i], Z[i])), with the
+// products and sums of dot(n, p - o) in that order: two points at a time with SSE2,
+// the rest (or every point without SSE2) one at a time, the same answer either way.
+inline bool any_above_plane(const double* X, const double* Y, const double* Z, std::size_t count, const Point3& n,
+                            const Point3& o, double tol) {
+  std::size_t i = 0;
+  bool above = false;
+#if defined(__SSE2__)
+  const __m128d nx = _mm_set1_pd(n.x), ny = _mm_set1_pd(n.y), nz = _mm_set1_pd(n.z);
+  const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z), t = _mm_set1_pd(tol);
+  __m128d any = _mm_setzero_pd();
+  for (; i + 2 <= count; i += 2) {
+    const __m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, _mm_sub_pd(_mm_loadu_pd(X + i), ox)),
+                                            _mm_mul_pd(ny, _mm_sub_pd(_mm_loadu_pd(Y + i), oy))),
+                                 _mm_mul_pd(nz, _mm_sub_pd(_mm_loadu_pd(Z + i), oz)));
+    any = _mm_or_pd(any, _mm_cmpgt_pd(d, t));
+  }
+  above = _mm_movemask_pd(any) != 0;
+#endif
+  for (; i < count; ++i) above |= n.x * (X[i] - o.x) + n.y * (Y[i] - o.y) + n.z * (Z[i] - o.z) > tol;
+  return above;
+}
+
 // Planar faces and convex (every vertex behind every face plane), within `tol`
 // (absolute length). With `skip_tiny`, faces of area below tol^2 (whose plane rounding
 // does not define) are not tested; otherwise they are a defect ("zero-area face").
+// The vertices are copied once per cell into per-thread coordinate arrays for
+// any_above_plane.
 inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip_tiny = false) {
   using namespace vor;
+  thread_local std::vector<double> xs, ys, zs;
+  const std::size_t nv = c.vertices.size();
+  xs.resize(nv), ys.resize(nv), zs.resize(nv);
+  double *X = xs.data(), *Y = ys.data(), *Z = zs.data();
+  for (std::size_t i = 0; i < nv; ++i) X[i] = c.vertices[i].x, Y[i] = c.vertices[i].y, Z[i] = c.vertices[i].z;
   for (std::size_t f = 0; f < c.face_count(); ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
     Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
@@ -74,8 +108,7 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
     n = 1.0 / area2 * n;
     for (auto k = b; k < e; ++k)
       if (std::abs(dot(n, c.vertices[c.face_vertices[k]] - o)) > tol) return "non-planar face";
-    for (const auto& p : c.vertices)
-      if (dot(n, p - o) > tol) return "not convex";
+    if (any_above_plane(X, Y, Z, nv, n, o, tol)) return "not convex";
   }
   return {};
 }

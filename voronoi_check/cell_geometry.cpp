@@ -77,20 +77,22 @@ void faces_by_vertex(const VoronoiCell& c, VertexScratch& s) {
 // The distance of vertex p (relative to the site) to the point where the three
 // best-conditioned planes of s.planes meet; nullopt when they do not fix a point.
 std::optional<L> vertex_error(const Point3& p, const Point3& site, const VertexScratch& s) {
-  L best = 0;
+  L best = 0, det = 0;
+  std::array<L, 3> bd{};
   std::array<std::size_t, 3> pick{};
   const auto& pl = s.planes;
   for (std::size_t i = 0; i < pl.size(); ++i)
     for (std::size_t j = i + 1; j < pl.size(); ++j)
       for (std::size_t k = j + 1; k < pl.size(); ++k) {
-        const L d = std::abs(ldot(s.face_plane[pl[i]].n, lcross(s.face_plane[pl[j]].n, s.face_plane[pl[k]].n))) /
-                    (s.face_norm[pl[i]] * s.face_norm[pl[j]] * s.face_norm[pl[k]]);
-        if (d > best) best = d, pick = {pl[i], pl[j], pl[k]};
+        const auto jk = lcross(s.face_plane[pl[j]].n, s.face_plane[pl[k]].n);
+        const L dt = ldot(s.face_plane[pl[i]].n, jk);
+        const L d = std::abs(dt) / (s.face_norm[pl[i]] * s.face_norm[pl[j]] * s.face_norm[pl[k]]);
+        if (d > best) best = d, det = dt, bd = jk, pick = {pl[i], pl[j], pl[k]};
       }
   if (!(best > 1e-9L)) return std::nullopt;
+  // Cramer's rule with the chosen triple's determinant and first cross product kept.
   const Plane &a = s.face_plane[pick[0]], &b = s.face_plane[pick[1]], &d = s.face_plane[pick[2]];
-  const L det = ldot(a.n, lcross(b.n, d.n));
-  const auto bd = lcross(b.n, d.n), da = lcross(d.n, a.n), ab = lcross(a.n, b.n);
+  const auto da = lcross(d.n, a.n), ab = lcross(a.n, b.n);
   const L x[3] = {(a.c * bd[0] + b.c * da[0] + d.c * ab[0]) / det, (a.c * bd[1] + b.c * da[1] + d.c * ab[1]) / det,
                   (a.c * bd[2] + b.c * da[2] + d.c * ab[2]) / det};
   return std::max(

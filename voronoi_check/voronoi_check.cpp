@@ -18,9 +18,8 @@ using namespace vor;
 
 const char* voronoi_defect_name(VoronoiDefect d) {
   static const char* names[kVoronoiDefects] = {
-      "missing-cell",       "extra-cell",      "missing-face", "spurious-face", "small-missing-face",
-      "small-spurious-face", "degenerate-face", "bad-neighbor", "vertex-off",    "not-convex",
-      "volume-mismatch"};
+      "missing-cell",    "extra-cell",   "missing-face", "spurious-face", "small-missing-face", "small-spurious-face",
+      "degenerate-face", "bad-neighbor", "vertex-off",   "not-convex",    "volume-mismatch"};
   return names[static_cast<int>(d)];
 }
 
@@ -64,9 +63,12 @@ double sites_extent(std::span<const Point3> sites, const Box& box) {
 }
 
 // One directed face of a tool's cell, merged by neighbour (a tool may split a face).
+// Its area is needed only for a face that is not expected: computed then (area < 0:
+// not yet; a split face's parts are summed at once).
 struct ToolFace {
   std::uint32_t neighbor;  // representative site
   std::int64_t id;         // the id the tool wrote
+  std::uint32_t face;      // the tool's face (the first one of a split face)
   double area;
 };
 
@@ -93,8 +95,10 @@ struct Scratch {
 
 constexpr std::size_t kChunk = 256;  // sites or cells per chunk
 
-VoronoiNeighbors relation(std::span<const Point3> sites, const VoronoiCheckOptions& o) {
-  return o.dt ? VoronoiNeighbors(sites, o.dt, o.threads) : VoronoiNeighbors(sites, o.threads);
+std::shared_ptr<const VoronoiNeighbors> relation(std::span<const Point3> sites, const VoronoiCheckOptions& o) {
+  if (!o.relation) return voronoi_relation(sites, o);
+  if (o.relation->site_count() != sites.size()) throw std::invalid_argument("the relation is not of these sites");
+  return o.relation;
 }
 
 // The state of one check: the exact relation, the tool's cells by site, the report.
@@ -102,7 +106,7 @@ class Judge {
  public:
   Judge(std::span<const Point3> sites, const Box& box, const ToolCells& cells, const VoronoiCheckOptions& o,
         VoronoiCheckReport& r)
-      : sites_(sites), box_(box), cells_(cells), o_(o), r_(r), nb_(relation(sites, o)) {
+      : sites_(sites), box_(box), cells_(cells), o_(o), r_(r), shared_(relation(sites, o)), nb_(*shared_) {
     extent2_ = sites_extent(sites, box);
     extent2_ *= extent2_;
     for (double v : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z})
@@ -123,8 +127,7 @@ class Judge {
     t = Clock::now();
     stage(cells_.size(), threads, [&](std::size_t c, Partial& p, Scratch& s) { judge_geometry(c, p, s); });
     r_.seconds_geometry = since(t);
-    r_.seconds_dt = nb_.seconds_dt;
-    r_.seconds_tables = nb_.seconds_tables;
+    if (!o_.relation) r_.seconds_dt = nb_.seconds_dt, r_.seconds_tables = nb_.seconds_tables;
   }
 
  private:
@@ -190,14 +193,15 @@ class Judge {
         add(p, VoronoiDefect::bad_neighbor, a, id, 0, "neighbour id is no site");
         continue;
       }
-      out.push_back({nb_.rep(static_cast<std::uint32_t>(id)), id, face_area(c, f)});
+      out.push_back({nb_.rep(static_cast<std::uint32_t>(id)), id, static_cast<std::uint32_t>(f), -1.0});
     }
     std::sort(out.begin(), out.end(), [](const ToolFace& x, const ToolFace& y) { return x.neighbor < y.neighbor; });
     std::size_t k = 0;
     for (std::size_t i = 0; i < out.size(); ++i) {
-      if (k > 0 && out[k - 1].neighbor == out[i].neighbor)
-        out[k - 1].area += out[i].area;
-      else
+      if (k > 0 && out[k - 1].neighbor == out[i].neighbor) {
+        if (out[k - 1].area < 0) out[k - 1].area = face_area(c, out[k - 1].face);
+        out[k - 1].area += face_area(c, out[i].face);
+      } else
         out[k++] = out[i];
     }
     out.resize(k);
@@ -284,27 +288,29 @@ class Judge {
       judge_cellless(a, p, s);
       return;
     }
-    tool_faces(cells_.view(static_cast<std::size_t>(c)), a, s.tf, p);
+    const VoronoiCell cell = cells_.view(static_cast<std::size_t>(c));
+    tool_faces(cell, a, s.tf, p);
     std::size_t i = 0;
     for (auto b : s.pos) {
-      while (i < s.tf.size() && s.tf[i].neighbor < b) unexpected(a, s.tf[i++], p, s);
+      while (i < s.tf.size() && s.tf[i].neighbor < b) unexpected(a, cell, s.tf[i++], p, s);
       if (i < s.tf.size() && s.tf[i].neighbor == b) {
         ++i;
         continue;
       }
       if (const auto area = true_area(a, b, s)) face_defect(p, true, a, b, *area);
     }
-    while (i < s.tf.size()) unexpected(a, s.tf[i++], p, s);
+    while (i < s.tf.size()) unexpected(a, cell, s.tf[i++], p, s);
   }
 
   // A tool face towards a site that is no Voronoi neighbour of a.
-  void unexpected(std::uint32_t a, const ToolFace& f, Partial& p, const Scratch& s) const {
+  void unexpected(std::uint32_t a, const VoronoiCell& c, const ToolFace& f, Partial& p, const Scratch& s) const {
+    const double area = f.area < 0 ? face_area(c, f.face) : f.area;
     const bool dt_edge = std::binary_search(s.deg.begin(), s.deg.end(), f.neighbor);
-    if (dt_edge && f.area / extent2_ <= o_.small_face) {
-      add(p, VoronoiDefect::degenerate_face, a, f.id, f.area / extent2_, "exact face has zero area");
+    if (dt_edge && area / extent2_ <= o_.small_face) {
+      add(p, VoronoiDefect::degenerate_face, a, f.id, area / extent2_, "exact face has zero area");
       return;
     }
-    face_defect(p, false, a, f.id, f.area);
+    face_defect(p, false, a, f.id, area);
   }
 
   // Stage 3: one cell's shape, vertices and volume.
@@ -336,7 +342,8 @@ class Judge {
   const ToolCells& cells_;
   const VoronoiCheckOptions& o_;
   VoronoiCheckReport& r_;
-  VoronoiNeighbors nb_;
+  std::shared_ptr<const VoronoiNeighbors> shared_;
+  const VoronoiNeighbors& nb_;
   double extent2_ = 1, coord_max_ = 0;
   std::vector<std::int64_t> cell_of_;
   std::vector<Scratch> scratch_;
@@ -361,6 +368,11 @@ void decide(VoronoiCheckReport& r, const VoronoiCheckOptions& o) {
 }
 
 }  // namespace
+
+std::shared_ptr<const VoronoiNeighbors> voronoi_relation(std::span<const Point3> sites, const VoronoiCheckOptions& o) {
+  return o.dt ? std::make_shared<const VoronoiNeighbors>(sites, o.dt, o.threads)
+              : std::make_shared<const VoronoiNeighbors>(sites, o.threads);
+}
 
 VoronoiCheckReport check_voronoi(std::span<const Point3> sites, const Box& box, const ToolCells& cells,
                                  const VoronoiCheckOptions& options) {

@@ -26,18 +26,20 @@
 
 namespace dtlab {
 
+class VoronoiNeighbors;  // voronoi_check/voronoi_neighbors.hpp
+
 enum class VoronoiDefect {
-  missing_cell,         // a site (inside the box) with no cell
-  extra_cell,           // a second cell for one site (or its copies), or a cell of no site
-  missing_face,         // a Voronoi face meeting the box that the cell lacks (large)
-  spurious_face,        // a face towards a site that is no Voronoi neighbour (large)
-  small_missing_face,   // the same, at most small_face * extent^2
+  missing_cell,        // a site (inside the box) with no cell
+  extra_cell,          // a second cell for one site (or its copies), or a cell of no site
+  missing_face,        // a Voronoi face meeting the box that the cell lacks (large)
+  spurious_face,       // a face towards a site that is no Voronoi neighbour (large)
+  small_missing_face,  // the same, at most small_face * extent^2
   small_spurious_face,
-  degenerate_face,      // a face of a DT edge whose exact face has zero area (not wrong)
-  bad_neighbor,         // a neighbour id that is no site
-  vertex_off,           // a vertex farther than vertex_tolerance from its exact position
-  not_convex,           // not closed, Euler != 2, or a vertex outside a face plane
-  volume_mismatch,      // the cells' volumes do not sum to the box volume
+  degenerate_face,  // a face of a DT edge whose exact face has zero area (not wrong)
+  bad_neighbor,     // a neighbour id that is no site
+  vertex_off,       // a vertex farther than vertex_tolerance from its exact position
+  not_convex,       // not closed, Euler != 2, or a vertex outside a face plane
+  volume_mismatch,  // the cells' volumes do not sum to the box volume
 };
 inline constexpr int kVoronoiDefects = 11;
 const char* voronoi_defect_name(VoronoiDefect d);
@@ -70,16 +72,20 @@ struct VoronoiWitness {
 };
 
 struct VoronoiCheckOptions {
-  double small_face = 1e-9;         // of the sites' extent squared
-  double vertex_tolerance = 1e-9;   // of the box diagonal
-  double convex_tolerance = 1e-9;   // of the box diagonal
-  double volume_tolerance = 1e-9;   // relative to the box volume
+  double small_face = 1e-9;        // of the sites' extent squared
+  double vertex_tolerance = 1e-9;  // of the box diagonal
+  double convex_tolerance = 1e-9;  // of the box diagonal
+  double volume_tolerance = 1e-9;  // relative to the box volume
   std::size_t witnesses_per_kind = 16;
   unsigned threads = 1;  // sites judged in parallel (0: all hardware threads); the report is the same for any count
   // The sites' Delaunay tetrahedralization by exact predicates with symbolic
   // perturbation (compute_voronoi's with keep_dt), read instead of built: the same
   // tets (the perturbed DT is unique), so the same report. Null: built here.
   std::shared_ptr<const Tetrahedralization> dt;
+  // The sites' exact relation (DT and its tables, voronoi_relation below), built once and
+  // shared by the checks of several tools' cells of the same sites: then neither is
+  // built (seconds_dt and seconds_tables 0). Null: built here (from `dt` when given).
+  std::shared_ptr<const VoronoiNeighbors> relation;
 };
 
 struct VoronoiCheckReport {
@@ -87,13 +93,13 @@ struct VoronoiCheckReport {
   std::vector<VoronoiWitness> witnesses;
   Topology topology = Topology::exact;
   VoronoiVerdict verdict = VoronoiVerdict::exact_topology;
-  double largest_wrong_face = 0;     // / extent^2, over missing_face and spurious_face
-  double largest_small_face = 0;     // / extent^2, over the small ones
-  double max_vertex_ulps = 0;        // ulps of the box's largest coordinate
-  double max_vertex_error = 0;       // / box diagonal
+  double largest_wrong_face = 0;                            // / extent^2, over missing_face and spurious_face
+  double largest_small_face = 0;                            // / extent^2, over the small ones
+  double max_vertex_ulps = 0;                               // ulps of the box's largest coordinate
+  double max_vertex_error = 0;                              // / box diagonal
   double volume_sum = 0, box_volume = 0, volume_error = 0;  // error relative to the box volume
   std::uint64_t sites = 0, distinct_sites = 0, cells = 0, faces = 0, vertices = 0;
-  std::uint64_t voronoi_edges = 0;   // directed Voronoi neighbour pairs (positive faces)
+  std::uint64_t voronoi_edges = 0;     // directed Voronoi neighbour pairs (positive faces)
   std::uint64_t degenerate_edges = 0;  // directed DT edges with a zero-area face
   // Wall time of the stages: the DT, its tables (flat and cospherical tets, hull
   // edges), the neighbour sets against the exact ones, the cells' shape and vertices;
@@ -106,6 +112,11 @@ struct VoronoiCheckReport {
 // sites, or an empty or non-finite box. A cell of no site is an extra_cell, not an error.
 VoronoiCheckReport check_voronoi(std::span<const Point3> sites, const vor::Box& box, const ToolCells& cells,
                                  const VoronoiCheckOptions& options = {});
+
+// The exact relation check_voronoi reads (from options.dt when given), to be shared
+// through VoronoiCheckOptions::relation. Throws as check_voronoi for the sites.
+std::shared_ptr<const VoronoiNeighbors> voronoi_relation(std::span<const Point3> sites,
+                                                         const VoronoiCheckOptions& options = {});
 
 // "missing-face 3, small-missing-face 1": the non-zero counts.
 std::string voronoi_counts_text(const VoronoiCheckReport& r);

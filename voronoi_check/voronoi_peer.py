@@ -84,18 +84,43 @@ def walls(cell, lo, hi):
     return cell
 
 
-def cells_from_ridges(pts, V, ridges, lo, hi):
-    """ridges: (p, q, [vertex ids, -1 = infinity]). Returns {site: (verts, faces, tags)}."""
+def tet_neighbors(regions):
+    """{site: sites} from the Voronoi vertices that lie in exactly four regions: such a
+    vertex is the centre of one Delaunay tet, and its six edges are Delaunay edges. A
+    vertex in more regions (a merged, cospherical facet) tells nothing about its edges."""
+    at = {}
+    for i, reg in enumerate(regions):
+        for v in reg:
+            if v >= 0:
+                at.setdefault(v, []).append(i)
+    out = {}
+    for sites in at.values():
+        if len(sites) == 4:
+            for i in sites:
+                out.setdefault(i, set()).update(j for j in sites if j != i)
+    return out
+
+
+def cells_from_ridges(pts, V, ridges, regions, lo, hi):
+    """ridges: (p, q, [vertex ids, -1 = infinity]); regions: per site its vertex ids
+    (-1 = infinity; empty for a duplicate). Returns {site: (verts, faces, tags)}.
+    Qhull lists a ridge only with three vertices or more, infinity counted once, so
+    the face of a hull edge with one tet around it (one finite vertex and rays, a
+    wedge of positive area) is in no ridge; an unbounded cell also takes the
+    neighbours of its tets (tet_neighbors: the tool's own regions)."""
     by_site = {}
     for p, q, vs in ridges:
         by_site.setdefault(p, []).append((q, vs))
         by_site.setdefault(q, []).append((p, vs))
+    tets = tet_neighbors(regions)
     cells = {}
-    for i, rs in by_site.items():
-        s = pts[i]
-        if any(-1 in vs for _, vs in rs):
+    for i, reg in enumerate(regions):
+        s, rs = pts[i], by_site.get(i, [])
+        if not reg or (-1 not in reg and not rs):
+            continue
+        if -1 in reg:
             cell = box_cell(lo, hi)
-            for j, _ in rs:
+            for j in sorted({j for j, _ in rs} | tets.get(i, set())):
                 n = pts[j] - s
                 cell = clip(cell[0], cell[1], cell[2], n, float(np.dot(n, (pts[j] + s) / 2)), j) if cell else None
         else:
@@ -122,8 +147,21 @@ def run_scipy(pts):
     t = time.perf_counter()
     vor = Voronoi(pts)
     sec = time.perf_counter() - t
+    return sec, vor.vertices, *scipy_topology(vor)
+
+
+def scipy_topology(vor):
+    """(ridges, regions per site) of a scipy.spatial.Voronoi, as cells_from_ridges takes them."""
     ridges = [(int(p), int(q), [int(v) for v in vs]) for (p, q), vs in zip(vor.ridge_points, vor.ridge_vertices)]
-    return sec, vor.vertices, ridges
+    # scipy gives a copy of a site (a Qhull coplanar point) its original's region: the
+    # site in the ridges keeps it, the other copies get none.
+    in_ridges = {int(i) for i in np.ravel(vor.ridge_points)}
+    owner = {}
+    for i, r in enumerate(vor.point_region):
+        if r not in owner or (i in in_ridges and owner[r] not in in_ridges):
+            owner[r] = i
+    regions = [[int(v) for v in vor.regions[r]] if owner[r] == i else [] for i, r in enumerate(vor.point_region)]
+    return ridges, regions
 
 
 def run_qvoronoi(pts):
@@ -138,12 +176,14 @@ def run_qvoronoi(pts):
     tok = r.stdout.split("\n")
     nv, nr = map(int, tok[1].split()[:2])
     V = np.array([[float(x) for x in tok[2 + k].split()] for k in range(1, nv)]).reshape(-1, 3)
+    # `o`: per site its region's vertices, 0 for infinity
+    regions = [[int(x) - 1 for x in tok[2 + nv + k].split()[1:]] for k in range(nr)]
     at = 2 + nv + nr
     ridges = []
     for line in tok[at + 1: at + 1 + int(tok[at])]:
         f = [int(x) for x in line.split()]
         ridges.append((f[1], f[2], [v - 1 for v in f[3:]]))
-    return sec, V, ridges
+    return sec, V, ridges, regions
 
 
 def write(out, sec, cells):
@@ -189,16 +229,16 @@ def main():
                 import scipy.spatial  # noqa: F401
             except Exception as e:
                 print("not installed: %s" % e, file=sys.stderr); return 4
-            sec, V, ridges = run_scipy(pts)
+            sec, V, ridges, regions = run_scipy(pts)
         else:
-            sec, V, ridges = run_qvoronoi(pts)
+            sec, V, ridges, regions = run_qvoronoi(pts)
     except FileNotFoundError as e:
         print("not installed: %s" % e, file=sys.stderr); return 4
     except Exception as e:
         lines = [l for l in str(e).splitlines() if l.strip()]
         qh = [l for l in lines if l.startswith("QH")]
         print("%s: %s" % (type(e).__name__, (qh or lines or ["?"])[0]), file=sys.stderr); return 3
-    write(sys.argv[3], sec, cells_from_ridges(pts, V, ridges, b[:3], b[3:]))
+    write(sys.argv[3], sec, cells_from_ridges(pts, V, ridges, regions, b[:3], b[3:]))
     return 0
 
 

@@ -13,7 +13,7 @@ import numpy as np
 from scipy.spatial import Voronoi
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "voronoi_check"))
-from voronoi_peer import cells_from_ridges  # noqa: E402
+from voronoi_peer import cells_from_ridges, scipy_topology  # noqa: E402
 
 args = [a for a in sys.argv[1:] if a != "--flip-faces"]
 node, box, out = args[0], [float(x) for x in args[1:7]], args[7]
@@ -23,9 +23,9 @@ pts = np.array([[float(x) for x in r[1:4]] for r in rows[1:1 + int(rows[0][0])]]
 t = time.perf_counter()
 vor = Voronoi(pts)
 seconds = time.perf_counter() - t
-ridges = [(int(p), int(q), [int(v) for v in vs]) for (p, q), vs in zip(vor.ridge_points, vor.ridge_vertices)]
+ridges, regions = scipy_topology(vor)
 cells = []
-for site, (verts, faces, neighbors) in sorted(cells_from_ridges(pts, vor.vertices, ridges, box[:3], box[3:]).items()):
+for site, (verts, faces, neighbors) in sorted(cells_from_ridges(pts, vor.vertices, ridges, regions, box[:3], box[3:]).items()):
     if "--flip-faces" in sys.argv:
         faces = [f[::-1] if k % 2 else f for k, f in enumerate(faces)]
     cells.append({"site": site, "vertices": [[float(c) for c in v] for v in verts],

@@ -226,10 +226,10 @@ def _tool_cells(points: Any, cells: Any, box: list[float]) -> list[tuple[Any, ..
     dtlab VoronoiDiagram, a scipy.spatial.Voronoi (its regions clipped to the box by the
     adapter of the scipy-voronoi peer) or a list of (site, vertices, faces, neighbors)."""
     if hasattr(cells, "ridge_points") and hasattr(cells, "ridge_vertices"):
-        from ._voronoi_regions import cells_from_ridges
+        from ._voronoi_regions import cells_from_ridges, scipy_topology
         pts = np.asarray(points, dtype=np.float64)
-        ridges = [(int(p), int(q), [int(v) for v in vs]) for (p, q), vs in zip(cells.ridge_points, cells.ridge_vertices)]
-        clipped = cells_from_ridges(pts, cells.vertices, ridges, box[:3], box[3:])
+        ridges, regions = scipy_topology(cells)
+        clipped = cells_from_ridges(pts, cells.vertices, ridges, regions, box[:3], box[3:])
         cells = [(i, verts, faces, tags) for i, (verts, faces, tags) in sorted(clipped.items())]
     elif isinstance(cells, VoronoiDiagram):
         cells = [(c.site, c.vertices, c.faces, c.face_neighbors) for c in cells.cells if len(c.faces)]
@@ -249,7 +249,8 @@ def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float
 
     cells: a dtlab VoronoiDiagram, a scipy.spatial.Voronoi (its regions clipped to the
     box as the scipy-voronoi peer does: bounded regions keep scipy's vertices, unbounded
-    ones are the box cut by the bisectors of scipy's ridge neighbours), or a list of
+    ones are the box cut by the bisectors of scipy's ridge neighbours and of the sites of
+    their tets' centres, voronoi_check/README.md), or a list of
     (site, vertices (n, 3), faces (lists of vertex indices, counter-clockwise from
     outside), face neighbours (site ids, -1..-6 for the walls x-lo..z-hi)).
     box: as for voronoi(); default: a VoronoiDiagram's own box, else the bounding box

@@ -26,3 +26,19 @@ def test_a_dropped_cell_is_wrong_topology():
 def test_coplanar_points_are_refused():
     with pytest.raises(ValueError):
         dtlab.check_voronoi(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.0]]), [], box=(-1, -1, -1, 2, 2, 2))
+
+
+def test_scipy_cells_of_hull_edges_with_one_tet():
+    # Qhull lists a ridge only with 3 vertices (infinity once): on one tet scipy has no
+    # ridge at all, and the adapter takes the 6 neighbours from the regions
+    # (voronoi_check/corpus/scipy-voronoi-uniform-n25-1.node).
+    scipy_spatial = pytest.importorskip("scipy.spatial")
+    pts = np.array([[0.9577314449920443, 0.6327793038290165, 0.15208938114568094],
+                    [0.3349229014298386, 0.735562357242233, 0.6843961158156141],
+                    [0.5570683787113921, 0.30868276277966955, 0.6176198020723661],
+                    [0.811109233013189, 0.034099984568699226, 0.4751613964455029]])
+    vor = scipy_spatial.Voronoi(pts)
+    assert len(vor.ridge_points) == 0
+    r = dtlab.check_voronoi(pts, vor)
+    assert r["verdict"] == "exact-topology", r["counts"]
+    assert r["cells"] == 4 and r["voronoi_edges"] == 12

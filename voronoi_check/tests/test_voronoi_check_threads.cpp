@@ -1,6 +1,6 @@
 // The exact Voronoi checker on several threads: the same report as on one (counts,
 // witnesses in order, every measured number), and the same when the relation is read
-// from our cells' DT instead of built.
+// from our cells' DT instead of built, or shared by several checks.
 #include <catch2/catch.hpp>
 
 #include "sites.hpp"
@@ -125,4 +125,28 @@ TEST_CASE("reading the relation from our cells' DT gives the same report as buil
   // Without exact predicates the DT is not kept (the checker builds its own).
   vo.predicates.backend = "naive";
   CHECK_FALSE(compute_voronoi(sites, vo).dt);
+}
+
+TEST_CASE("one relation shared by the checks of several tools gives each the same report", "[threads]") {
+  const auto sites = random_sites(2000, 13);
+  VoronoiOptions vo;
+  vo.box = kBox;
+  const ToolCells whole = tool_cells_of(compute_voronoi(sites, vo));
+  const ToolCells broken = damaged(whole);
+  VoronoiCheckOptions o;
+  o.witnesses_per_kind = 3;
+  const auto whole_alone = check_voronoi(sites, kBox, whole, o);
+  const auto broken_alone = check_voronoi(sites, kBox, broken, o);
+  o.relation = voronoi_relation(sites, o);
+  o.threads = 2;
+  const auto broken_shared = check_voronoi(sites, kBox, broken, o);
+  const auto whole_shared = check_voronoi(sites, kBox, whole, o);
+  CHECK(whole_shared.seconds_dt == 0);
+  CHECK(whole_shared.seconds_tables == 0);
+  CHECK(whole_shared.verdict == VoronoiVerdict::exact_topology);
+  CHECK(broken_shared.verdict == VoronoiVerdict::wrong_topology);
+  require_same(whole_alone, whole_shared);
+  require_same(broken_alone, broken_shared);
+  // A relation of other sites is refused.
+  CHECK_THROWS_AS(check_voronoi(random_sites(100, 1), kBox, whole, o), std::invalid_argument);
 }
