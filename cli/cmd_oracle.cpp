@@ -1,7 +1,8 @@
-// `dtlab oracle INPUT [--against PEERS|all] [kernel options as tetra] [--json]`: builds our DT, runs each peer in its own process (oracle/peers/peers.hpp),
-// judges every answer with the exact checker against the input points, and compares
-// ours canonically (oracle/check/compare.hpp) with every peer whose answer is proven
-// Delaunay.
+// `dtlab oracle INPUT [--against PEERS|all] [kernel options as tetra] [--json]`: builds our
+// DT, runs each peer in its own process (oracle/peers/peers.hpp), judges every answer with
+// the exact checker against the input points, and compares ours canonically
+// (oracle/check/compare.hpp) with every peer whose answer is proven Delaunay.
+//
 // Exit 0: ours is proven Delaunay and agrees with every Delaunay answer, and every
 // requested peer answered; 1: ours is wrong or differs; 2: bad usage or input;
 // 3: ours is fine but some peer gave no answer (crashed, hung, refused, or not
@@ -15,21 +16,21 @@
 
 #include "cli/build_options.hpp"
 #include "cli/command.hpp"
-#include "cli/progress.hpp"
+#include "cli/input_points.hpp"
 #include "cli/number_options.hpp"
 #include "cli/peer_definitions.hpp"
-#include "cli/input_points.hpp"
+#include "cli/progress.hpp"
 #include "kernel/build.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/parallel_for.hpp"
 #include "kernel/point_io.hpp"
 #include "oracle/check/check.hpp"
 #include "oracle/check/compare.hpp"
-#include "oracle/peers/peer_json.hpp"
+#include "oracle/check/report_json.hpp"
 #include "oracle/peers/oracle_session.hpp"
+#include "oracle/peers/peer_json.hpp"
 #include "oracle/peers/peers.hpp"
 #include "oracle/peers/verdict.hpp"
-#include "oracle/check/report_json.hpp"
 
 namespace dtlab::cli {
 namespace {

@@ -4,10 +4,10 @@
 #include <sstream>
 #include <fstream>
 
-#include "kernel/output_file.hpp"
 #include "experiments/point_sources.hpp"
 #include "experiments/thesis_parts.hpp"
 #include "fuzz/shrink.hpp"
+#include "kernel/output_file.hpp"
 #include "oracle/check/check.hpp"
 
 namespace dtlab::experiments {

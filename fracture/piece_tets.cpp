@@ -10,8 +10,8 @@
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
-#include "oracle/peers/child_process.hpp"
 #include "oracle/check/exact_volume.hpp"
+#include "oracle/peers/child_process.hpp"
 #include "oracle/peers/temp_dir.hpp"
 #include "predicates/adaptive.hpp"
 

@@ -30,8 +30,8 @@ void match_edges(BoundarySurface& s, std::size_t n) {
     for (std::size_t i = 0; i < nf; ++i)
       for (int e = 0; e < 3; ++e) {
         const std::uint32_t u = s.facets[i][e], v = s.facets[i][(e + 1) % 3];
-        he[pos[std::min(u, v)]++] = {std::max(u, v), static_cast<std::uint32_t>(i),
-                                     static_cast<std::uint8_t>(e), static_cast<std::uint8_t>(u > v)};
+        he[pos[std::min(u, v)]++] = {std::max(u, v), static_cast<std::uint32_t>(i), static_cast<std::uint8_t>(e),
+                                     static_cast<std::uint8_t>(u > v)};
       }
   }
   s.across.assign(nf, {kNone, kNone, kNone});
@@ -68,8 +68,7 @@ void check_links(BoundarySurface& s, std::size_t n) {
   {
     std::vector<std::uint64_t> pos(off.begin(), off.end() - 1);
     for (std::size_t i = 0; i < nf; ++i)
-      for (int c = 0; c < 3; ++c)
-        link[pos[s.facets[i][c]]++] = {s.facets[i][(c + 1) % 3], s.facets[i][(c + 2) % 3]};
+      for (int c = 0; c < 3; ++c) link[pos[s.facets[i][c]]++] = {s.facets[i][(c + 1) % 3], s.facets[i][(c + 2) % 3]};
   }
   for (std::size_t v = 0; v < n; ++v) {
     auto first = link.begin() + static_cast<std::ptrdiff_t>(off[v]);
@@ -120,8 +119,7 @@ void label_components(BoundarySurface& s) {
 
 }  // namespace
 
-BoundarySurface build_boundary(std::span<const Tet> tets, const FacetTable& table,
-                               std::size_t point_count) {
+BoundarySurface build_boundary(std::span<const Tet> tets, const FacetTable& table, std::size_t point_count) {
   BoundarySurface s;
   s.facets.reserve(table.boundary_refs.size());
   s.tet_of.reserve(table.boundary_refs.size());

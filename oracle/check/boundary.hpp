@@ -25,7 +25,6 @@ struct BoundarySurface {
   std::uint64_t vertices = 0, edges = 0;
 };
 
-BoundarySurface build_boundary(std::span<const Tet> tets, const FacetTable& table,
-                               std::size_t point_count);
+BoundarySurface build_boundary(std::span<const Tet> tets, const FacetTable& table, std::size_t point_count);
 
 }  // namespace dtlab

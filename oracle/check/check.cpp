@@ -45,8 +45,8 @@ namespace check_detail {
 
 std::vector<std::uint32_t> tet_vertices(const Tet& k) { return {k[0], k[1], k[2], k[3]}; }
 
-void check_points(const Tetrahedralization& t, const std::vector<char>& used,
-                  std::span<const std::uint32_t> reported, Collector& out, CheckStats& stats) {
+void check_points(const Tetrahedralization& t, const std::vector<char>& used, std::span<const std::uint32_t> reported,
+                  Collector& out, CheckStats& stats) {
   const auto& P = t.points;
   std::vector<char> is_reported(P.size(), 0);
   for (auto r : reported)

@@ -47,7 +47,7 @@ struct CheckOptions {
   // Input indices the producer reported as duplicates of an earlier point. They
   // need not be vertices; each is verified to have the coordinates of a vertex.
   std::span<const std::uint32_t> duplicates = {};
-  bool delaunay = true;              // run the insphere test on every interior facet
+  bool delaunay = true;                 // run the insphere test on every interior facet
   std::size_t witnesses_per_kind = 16;  // defects listed per kind (all are counted)
   // Also compare the exact sum of tet volumes with the exact volume inside the
   // boundary. Implied by stage 3 (interior facets cancel), so no extra proof: a
@@ -62,22 +62,22 @@ struct CheckStats {
   std::uint64_t points = 0, vertices = 0, tets = 0;
   std::uint64_t interior_facets = 0, boundary_facets = 0, edges = 0;
   std::uint64_t boundary_vertices = 0, boundary_edges = 0, boundary_components = 0;
-  std::int64_t euler = 0;           // V - E + F - T (1 for a ball)
-  std::int64_t boundary_euler = 0;  // V - E + F of the boundary (2 for a sphere)
-  std::uint64_t duplicates = 0;     // input points equal to a vertex but not one
-  std::uint64_t cospherical_facets = 0;  // interior facets with insphere == 0
-  bool degree_checked = false;      // the covering degree of the boundary was decided
-  bool cover_proven = false;        // ... and it is 1: the tets tile the convex hull once
-  bool volume_checked = false;     // the volume identity was computed (volume_identity)
-  bool volume_equal = false;        // exact sum of tet volumes == exact hull volume
-  double volume_tets = 0, volume_hull = 0;  // the exact values, rounded (meaningful only
-                                            // as the hull's volume when cover_proven)
+  std::int64_t euler = 0;                           // V - E + F - T (1 for a ball)
+  std::int64_t boundary_euler = 0;                  // V - E + F of the boundary (2 for a sphere)
+  std::uint64_t duplicates = 0;                     // input points equal to a vertex but not one
+  std::uint64_t cospherical_facets = 0;             // interior facets with insphere == 0
+  bool degree_checked = false;                      // the covering degree of the boundary was decided
+  bool cover_proven = false;                        // ... and it is 1: the tets tile the convex hull once
+  bool volume_checked = false;                      // the volume identity was computed (volume_identity)
+  bool volume_equal = false;                        // exact sum of tet volumes == exact hull volume
+  double volume_tets = 0, volume_hull = 0;          // the exact values, rounded (meaningful only
+                                                    // as the hull's volume when cover_proven)
   AffineSpan input_span = AffineSpan::not_decided;  // decided when there are no tets
   double seconds = 0;
 };
 
 struct CheckReport {
-  std::vector<Defect> defects;                     // witnesses, at most witnesses_per_kind each
+  std::vector<Defect> defects;                       // witnesses, at most witnesses_per_kind each
   std::array<std::uint64_t, kDefectKinds> counts{};  // all defects, per kind
   CheckStats stats;
   // Interior facets whose five points are cospherical (exact insphere == 0), as the

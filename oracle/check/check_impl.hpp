@@ -20,8 +20,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "kernel/progress.hpp"
 #include "kernel/parallel_for.hpp"
+#include "kernel/progress.hpp"
 #include "oracle/check/boundary.hpp"
 #include "oracle/check/check.hpp"
 #include "oracle/check/exact_volume.hpp"
@@ -40,8 +40,8 @@ class Collector {
  public:
   Collector(CheckReport& r, std::size_t per_kind, std::span<const std::uint32_t> original)
       : r_(r), per_kind_(per_kind), original_(original) {}
-  void add(DefectKind k, std::vector<std::uint32_t> tets, std::vector<std::uint32_t> vertices,
-           int sign, std::string detail) {
+  void add(DefectKind k, std::vector<std::uint32_t> tets, std::vector<std::uint32_t> vertices, int sign,
+           std::string detail) {
     const auto i = static_cast<std::size_t>(k);
     if (r_.counts[i]++ < per_kind_) {
       for (auto& v : vertices) v = id(v);
@@ -60,8 +60,8 @@ class Collector {
 
 std::vector<std::uint32_t> tet_vertices(const Tet& k);
 // Stage 7 (no predicates): missing points and duplicate vertices.
-void check_points(const Tetrahedralization& t, const std::vector<char>& used,
-                  std::span<const std::uint32_t> reported, Collector& out, CheckStats& stats);
+void check_points(const Tetrahedralization& t, const std::vector<char>& used, std::span<const std::uint32_t> reported,
+                  Collector& out, CheckStats& stats);
 // The affine hull of the points, exactly, with affinely independent input points that
 // span it (points[0..dimension], the first ones in the array that do).
 struct SpanWitness {
@@ -129,8 +129,7 @@ FacetTable check_facets_and_delaunay(std::span<const Point3> P, std::span<const 
   enum PairCode : int { kDelaunay = 0, kNonDelaunay = 1, kCospherical = 2 };
   auto positive_order = [](const FacetPair& f) {
     // A positive order of tet r1/4 from the facet's own data (no tet lookup).
-    return std::array<std::uint32_t, 5>{f.odd1 ? f.v[1] : f.v[0], f.odd1 ? f.v[0] : f.v[1], f.v[2], f.apex1,
-                                        f.apex2};
+    return std::array<std::uint32_t, 5>{f.odd1 ? f.v[1] : f.v[0], f.odd1 ? f.v[0] : f.v[1], f.v[2], f.apex1, f.apex2};
   };
   auto classify = [&](const FacetPair& f) -> int {
     if (sign[f.r1 / 4] <= 0 || sign[f.r2 / 4] <= 0) return kDelaunay;
@@ -166,8 +165,8 @@ FacetTable check_facets_and_delaunay(std::span<const Point3> P, std::span<const 
   }
   for (const auto& [r1, r2] : table.same_side) {
     const auto f = facet_vertices(T[r1 / 4], static_cast<int>(r1 % 4));
-    out.add(DefectKind::overlap, {r1 / 4, r2 / 4}, {f[0], f[1], f[2], T[r1 / 4][r1 % 4], T[r2 / 4][r2 % 4]},
-            0, "both tets lie on the same side of their shared facet");
+    out.add(DefectKind::overlap, {r1 / 4, r2 / 4}, {f[0], f[1], f[2], T[r1 / 4][r1 % 4], T[r2 / 4][r2 % 4]}, 0,
+            "both tets lie on the same side of their shared facet");
   }
   return table;
 }

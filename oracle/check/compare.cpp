@@ -19,9 +19,8 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) {
 std::vector<std::uint32_t> canonical_ids(const std::vector<Point3>& p) {
   std::vector<std::uint32_t> order(p.size()), canon(p.size());
   std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) {
-    return lex_less(p[a], p[b]) || (p[a] == p[b] && a < b);
-  });
+  std::sort(order.begin(), order.end(),
+            [&](auto a, auto b) { return lex_less(p[a], p[b]) || (p[a] == p[b] && a < b); });
   for (std::size_t i = 0; i < order.size(); ++i)
     canon[order[i]] = (i > 0 && p[order[i]] == p[order[i - 1]]) ? canon[order[i - 1]] : order[i];
   return canon;
@@ -95,15 +94,16 @@ Cells delaunay_complex(const Tetrahedralization& t, const CheckReport& report) {
   Cells out;
   out.offsets.push_back(0);
   for (std::size_t i : idx) {
-    out.vertices.insert(out.vertices.end(), unsorted.vertices.begin() + static_cast<std::ptrdiff_t>(unsorted.offsets[i]),
+    out.vertices.insert(out.vertices.end(),
+                        unsorted.vertices.begin() + static_cast<std::ptrdiff_t>(unsorted.offsets[i]),
                         unsorted.vertices.begin() + static_cast<std::ptrdiff_t>(unsorted.offsets[i + 1]));
     out.offsets.push_back(out.vertices.size());
   }
   return out;
 }
 
-Comparison compare_canonical(const Tetrahedralization& a_in, const CheckReport& ra,
-                             const Tetrahedralization& b_in, const CheckReport& rb, std::size_t witnesses) {
+Comparison compare_canonical(const Tetrahedralization& a_in, const CheckReport& ra, const Tetrahedralization& b_in,
+                             const CheckReport& rb, std::size_t witnesses) {
   const Tetrahedralization a = canonical(a_in), b = canonical(b_in);
   Comparison c;
   c.general_position = ra.cospherical_pairs.empty() && rb.cospherical_pairs.empty();

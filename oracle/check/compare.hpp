@@ -38,12 +38,11 @@ struct Comparison {
   bool complexes_equal = false;   // same Delaunay cells
   bool agree() const { return complexes_equal && (!general_position || tets_equal); }
   std::size_t cells_a = 0, cells_b = 0;
-  std::size_t only_a_count = 0, only_b_count = 0;        // cells in one complex only
+  std::size_t only_a_count = 0, only_b_count = 0;          // cells in one complex only
   std::vector<std::vector<std::uint32_t>> only_a, only_b;  // a few of them, as witnesses
 };
 
-Comparison compare_canonical(const Tetrahedralization& a, const CheckReport& ra,
-                             const Tetrahedralization& b, const CheckReport& rb,
-                             std::size_t witnesses = 8);
+Comparison compare_canonical(const Tetrahedralization& a, const CheckReport& ra, const Tetrahedralization& b,
+                             const CheckReport& rb, std::size_t witnesses = 8);
 
 }  // namespace dtlab

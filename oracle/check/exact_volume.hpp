@@ -11,8 +11,8 @@
 namespace dtlab {
 
 struct VolumeSums {
-  bool equal = false;          // exact comparison
-  double tets = 0, hull = 0;   // the exact sums, rounded (volumes, not 6x)
+  bool equal = false;         // exact comparison
+  double tets = 0, hull = 0;  // the exact sums, rounded (volumes, not 6x)
 };
 
 // tets: sum of orient3d over tets. hull: sum over outward boundary facets (x,y,z)

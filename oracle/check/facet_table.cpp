@@ -155,8 +155,8 @@ void scan_buckets(std::span<const Tet> tets, std::span<const std::uint32_t> rank
         const Entry& y = *(i + 1);
         if ((x.apex_parity & kOdd) == (y.apex_parity & kOdd)) out.same_side.emplace_back(x.ref, y.ref);
         if (classify) {
-          const FacetPair pair{x.ref, y.ref, {va, x.b, x.c}, x.apex_parity & ~kOdd, y.apex_parity & ~kOdd,
-                               (x.apex_parity & kOdd) != 0};
+          const FacetPair pair{
+              x.ref, y.ref, {va, x.b, x.c}, x.apex_parity & ~kOdd, y.apex_parity & ~kOdd, (x.apex_parity & kOdd) != 0};
           if (const int code = classify(pair)) out.flagged.emplace_back(pair, code);
         }
       } else {
@@ -197,7 +197,8 @@ void merge_part(PartResult& part, FacetTable& out, const FacetPairRecorder& reco
 FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uint32_t> rank,
                              const FacetPairVisitor& on_pair) {
   if (!on_pair) return build_facet_table(tets, rank, {}, {}, 1);
-  return build_facet_table(tets, rank, [&](const FacetPair& p) { return on_pair(p), 0; }, {}, 1);
+  return build_facet_table(
+      tets, rank, [&](const FacetPair& p) { return on_pair(p), 0; }, {}, 1);
 }
 
 FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uint32_t> rank,

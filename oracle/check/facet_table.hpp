@@ -67,8 +67,7 @@ FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uin
 using FacetPairClassifier = std::function<int(const FacetPair&)>;
 using FacetPairRecorder = std::function<void(const FacetPair&, int)>;
 FacetTable build_facet_table(std::span<const Tet> tets, std::span<const std::uint32_t> rank,
-                             const FacetPairClassifier& classify, const FacetPairRecorder& record,
-                             unsigned threads);
+                             const FacetPairClassifier& classify, const FacetPairRecorder& record, unsigned threads);
 
 // Number of distinct edges of the tets (rank as above), on `threads` threads (0: all).
 std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32_t> rank, unsigned threads = 1);

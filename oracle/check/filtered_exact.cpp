@@ -32,8 +32,7 @@ bool trusted(double det, double permanent, double bound) {
 
 }  // namespace
 
-int FilteredExact::orient3d(const Point3& a, const Point3& b, const Point3& c,
-                            const Point3& d) const {
+int FilteredExact::orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
   const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
   const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
   const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
@@ -49,8 +48,7 @@ int FilteredExact::orient3d(const Point3& a, const Point3& b, const Point3& c,
   return exact_orient3d(a, b, c, d);
 }
 
-int FilteredExact::insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-                            const Point3& e) const {
+int FilteredExact::insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) const {
   const double aex = a.x - e.x, bex = b.x - e.x, cex = c.x - e.x, dex = d.x - e.x;
   const double aey = a.y - e.y, bey = b.y - e.y, cey = c.y - e.y, dey = d.y - e.y;
   const double aez = a.z - e.z, bez = b.z - e.z, cez = c.z - e.z, dez = d.z - e.z;
@@ -79,8 +77,7 @@ int FilteredExact::insphere(const Point3& a, const Point3& b, const Point3& c, c
                            (da_ * fabs(cez) + ac_ * fabs(dez) + cd_ * fabs(aez)) * blift +
                            (ab_ * fabs(dez) + bd_ * fabs(aez) + da_ * fabs(bez)) * clift +
                            (bc_ * fabs(aez) + ac_ * fabs(bez) + ab_ * fabs(cez)) * dlift;
-  if (in_safe_range({aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez}) &&
-      trusted(det, permanent, kInsBound))
+  if (in_safe_range({aex, aey, aez, bex, bey, bez, cex, cey, cez, dex, dey, dez}) && trusted(det, permanent, kInsBound))
     return det > 0 ? 1 : -1;
   return exact_insphere(a, b, c, d, e);
 }

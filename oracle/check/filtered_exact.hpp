@@ -20,8 +20,7 @@ namespace dtlab {
 struct FilteredExact {
   static constexpr std::string_view name() { return "filtered-exact"; }
   int orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const;
-  int insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-               const Point3& e) const;
+  int insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) const;
 };
 
 static_assert(PredicateBackend<FilteredExact>);

@@ -91,8 +91,7 @@ Approx approx_orient(const Point3& od, const Point3& x, const Point3& y, const P
 // that the perturbed signs say: a regular value of the projection, whose preimage
 // count is the degree. No retry loop is needed, so the computation terminates after
 // one pass over the facets.
-HullDegree hull_degree(std::span<const Point3> points,
-                       std::span<const std::array<std::uint32_t, 3>> boundary,
+HullDegree hull_degree(std::span<const Point3> points, std::span<const std::array<std::uint32_t, 3>> boundary,
                        const Tet& inner_tet, std::uint32_t f0) {
   HullDegree out;
   const auto& F0 = boundary[f0];

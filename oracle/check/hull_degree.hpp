@@ -33,8 +33,7 @@ struct HullDegree {
   std::vector<std::uint32_t> crossed;  // boundary facets the ray crosses (f0 first)
 };
 
-HullDegree hull_degree(std::span<const Point3> points,
-                       std::span<const std::array<std::uint32_t, 3>> boundary,
+HullDegree hull_degree(std::span<const Point3> points, std::span<const std::array<std::uint32_t, 3>> boundary,
                        const Tet& inner_tet, std::uint32_t f0);
 
 }  // namespace dtlab

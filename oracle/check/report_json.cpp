@@ -71,8 +71,11 @@ std::string format_stats(const CheckStats& s) {
 }
 
 nlohmann::json to_json(const Defect& d) {
-  return {{"kind", defect_name(d.kind)}, {"detail", d.detail}, {"tets", d.tets},
-          {"vertices", d.vertices}, {"sign", d.sign}};
+  return {{"kind", defect_name(d.kind)},
+          {"detail", d.detail},
+          {"tets", d.tets},
+          {"vertices", d.vertices},
+          {"sign", d.sign}};
 }
 
 nlohmann::json to_json(const CheckReport& r) {

@@ -9,7 +9,7 @@
 
 namespace dtlab {
 
-std::string format_defect(const Defect& d);   // one line
+std::string format_defect(const Defect& d);     // one line
 std::string format_stats(const CheckStats& s);  // one line
 // "valid Delaunay tetrahedralization", "DEFECTS FOUND", or for a valid mesh with no
 // tets what makes it right: "valid: no tetrahedra; the points are coplanar (decided

@@ -50,8 +50,10 @@ std::atomic<bool (*)()> g_interrupt_check{nullptr};
     const int in = open("/dev/null", O_RDONLY | O_CLOEXEC);
     if (in >= 0) dup2(in, 0);
   }
-  if (reply_fd == 3) fcntl(3, F_SETFD, 0);
-  else if (reply_fd >= 0) dup2(reply_fd, 3);
+  if (reply_fd == 3)
+    fcntl(3, F_SETFD, 0);
+  else if (reply_fd >= 0)
+    dup2(reply_fd, 3);
   if (memory) {
     rlimit r{static_cast<rlim_t>(memory), static_cast<rlim_t>(memory)};
     setrlimit(RLIMIT_AS, &r);
@@ -116,8 +118,8 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   }
   if (pid == 0) {
     close(pipe_fd[0]);
-    exec_child(argv.data(), limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes,
-               stdin_fd, reply_fd, pipe_fd[1]);
+    exec_child(argv.data(), limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes, stdin_fd,
+               reply_fd, pipe_fd[1]);
   }
   // Both sides set the group, so a kill right after fork reaches it.
   setpgid(pid, pid);
@@ -334,7 +336,8 @@ std::string last_line_of(const std::string& path) {
   std::size_t end = text.find_last_not_of(" \t\r\n");
   if (end == std::string::npos) return "";
   const std::size_t begin = text.rfind('\n', end);
-  return text.substr(begin == std::string::npos ? 0 : begin + 1, end - (begin == std::string::npos ? 0 : begin + 1) + 1);
+  return text.substr(begin == std::string::npos ? 0 : begin + 1,
+                     end - (begin == std::string::npos ? 0 : begin + 1) + 1);
 }
 
 }  // namespace dtlab

@@ -16,9 +16,9 @@
 namespace dtlab {
 
 struct ChildLimits {
-  double timeout_s = 600;             // wall clock; must be finite and > 0
-  std::uint64_t memory_bytes = 0;     // RLIMIT_AS of the child; 0: no limit
-  std::string log_path;               // stdout and stderr of the child; "": /dev/null
+  double timeout_s = 600;          // wall clock; must be finite and > 0
+  std::uint64_t memory_bytes = 0;  // RLIMIT_AS of the child; 0: no limit
+  std::string log_path;            // stdout and stderr of the child; "": /dev/null
   // The log (or run_forked's reply) may grow to this size; a child writing more is
   // killed (output_limit). Checked at each poll (every 1-20 ms), so a fast writer may
   // pass it by what it writes in one poll interval. 0: no cap.

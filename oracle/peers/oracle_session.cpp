@@ -6,9 +6,9 @@
 
 #include "kernel/progress.hpp"
 #include "oracle/check/check.hpp"
+#include "oracle/check/report_json.hpp"
 #include "oracle/peers/child_process.hpp"
 #include "oracle/peers/peer_json.hpp"
-#include "oracle/check/report_json.hpp"
 #include "oracle/peers/verdict.hpp"
 
 namespace dtlab {
@@ -28,9 +28,12 @@ std::string cell_text(const std::vector<std::uint32_t>& c) {
 std::string comparison_text(const Comparison& c) {
   std::ostringstream o;
   if (c.agree()) {
-    if (c.general_position) o << "agree (general position: identical tets)";
-    else if (c.tets_equal) o << "agree (identical tets; " << c.cells_a << " Delaunay cells)";
-    else o << "agree (same Delaunay complex, " << c.cells_a << " cells; tets differ inside cospherical cells)";
+    if (c.general_position)
+      o << "agree (general position: identical tets)";
+    else if (c.tets_equal)
+      o << "agree (identical tets; " << c.cells_a << " Delaunay cells)";
+    else
+      o << "agree (same Delaunay complex, " << c.cells_a << " cells; tets differ inside cospherical cells)";
   } else {
     o << "DIFFER: " << c.only_a_count << " cells only in dtlab's, " << c.only_b_count << " only in the peer's";
     if (!c.only_a.empty()) o << "; e.g. dtlab only " << cell_text(c.only_a[0]);

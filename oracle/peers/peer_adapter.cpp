@@ -36,7 +36,8 @@ void normalise_answer(std::span<const Point3> points, const PeerAnswer& answer, 
   std::unordered_map<Point3, std::uint32_t, CoordHash, CoordEq> first;
   first.reserve(n);
   std::vector<std::uint32_t> canon(n + answer.extra.size());
-  for (std::size_t i = 0; i < n; ++i) canon[i] = first.try_emplace(points[i], static_cast<std::uint32_t>(i)).first->second;
+  for (std::size_t i = 0; i < n; ++i)
+    canon[i] = first.try_emplace(points[i], static_cast<std::uint32_t>(i)).first->second;
   for (std::size_t j = 0; j < answer.extra.size(); ++j) {
     const auto it = first.find(answer.extra[j]);
     canon[n + j] = it == first.end() ? kNone : it->second;
@@ -70,7 +71,8 @@ void normalise_answer(std::span<const Point3> points, const PeerAnswer& answer, 
       ++run.collapsed_tets;
       continue;
     }
-    if (orientation == PeerOrientation::swapped) std::swap(k[0], k[1]);
+    if (orientation == PeerOrientation::swapped)
+      std::swap(k[0], k[1]);
     else if (orientation == PeerOrientation::by_sign && distinct &&
              exact.orient3d(points[k[0]], points[k[1]], points[k[2]], points[k[3]]) < 0)
       std::swap(k[0], k[1]);

@@ -43,16 +43,13 @@ std::optional<Verdict> child_failure(const ChildResult& c, const std::string& lo
   run.seconds = c.seconds;
   run.peak_rss_bytes = c.peak_rss_bytes;
   switch (c.status) {
-    case ChildStatus::not_started:
-      run.message = c.message;
-      return Verdict::not_installed;
+    case ChildStatus::not_started: run.message = c.message; return Verdict::not_installed;
     case ChildStatus::timed_out:
       run.message = "killed after " + std::to_string(c.seconds).substr(0, 6) + " s";
       return Verdict::hung;
     case ChildStatus::output_limit: run.message = c.message; return Verdict::refused;
     case ChildStatus::signaled:
-    case ChildStatus::exited:
-      break;
+    case ChildStatus::exited: break;
   }
   const std::string last = last_line_of(log);
   if (c.out_of_memory) {

@@ -42,16 +42,21 @@ void check_template(const std::string& name, const std::vector<std::string>& arg
     for (std::size_t i = a.find('{'); i != std::string::npos; i = a.find('{', i + 1)) {
       const std::size_t j = a.find('}', i);
       const std::string key = j == std::string::npos ? a.substr(i) : a.substr(i, j - i + 1);
-      if (key == "{in}") in = true;
-      else if (key == "{out}") out = true;
-      else throw std::invalid_argument("peer '" + name + "': unknown placeholder '" + key + "' (use {in} and {out})");
+      if (key == "{in}")
+        in = true;
+      else if (key == "{out}")
+        out = true;
+      else
+        throw std::invalid_argument("peer '" + name + "': unknown placeholder '" + key + "' (use {in} and {out})");
     }
   if (!in) throw std::invalid_argument("peer '" + name + "': the command has no {in} (where the input .node goes)");
-  if (!out) throw std::invalid_argument("peer '" + name + "': the command has no {out} (the prefix of the .ele it writes)");
+  if (!out)
+    throw std::invalid_argument("peer '" + name + "': the command has no {out} (the prefix of the .ele it writes)");
 }
 
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (std::size_t i = s.find(from); i != std::string::npos; i = s.find(from, i + to.size())) s.replace(i, from.size(), to);
+  for (std::size_t i = s.find(from); i != std::string::npos; i = s.find(from, i + to.size()))
+    s.replace(i, from.size(), to);
   return s;
 }
 
@@ -76,8 +81,10 @@ int ele_first_index(const std::string& path) {
     const std::size_t b = line.find_first_not_of(" \t\r");
     if (b == std::string::npos || line[b] == '#') continue;
     if (seen++ == 0) continue;  // the header
-    return line.compare(b, 1, "1") == 0 && (b + 1 == line.size() || std::isspace(static_cast<unsigned char>(line[b + 1])))
-               ? 1 : 0;
+    return line.compare(b, 1, "1") == 0 &&
+                   (b + 1 == line.size() || std::isspace(static_cast<unsigned char>(line[b + 1])))
+               ? 1
+               : 0;
   }
   return 0;
 }

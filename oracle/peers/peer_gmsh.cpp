@@ -68,7 +68,9 @@ std::string gmsh_version() {
 
 #else
 
-PeerAnswer peer_gmsh(const std::vector<Point3>&, bool, unsigned) { throw PeerNotInstalled("built without gmsh (Debian libgmsh-dev)"); }
+PeerAnswer peer_gmsh(const std::vector<Point3>&, bool, unsigned) {
+  throw PeerNotInstalled("built without gmsh (Debian libgmsh-dev)");
+}
 std::string gmsh_version() { throw PeerNotInstalled("built without gmsh (Debian libgmsh-dev)"); }
 
 #endif

@@ -15,9 +15,10 @@
 int main(int argc, char** argv) {
   using namespace dtlab;
   const auto usage = [] {
-    std::fprintf(stderr,
-                 "usage: dtlab_peer_gmsh gmsh|gmsh-hxt IN OUT [THREADS] | dtlab_peer_gmsh --serve gmsh|gmsh-hxt [THREADS] | "
-                 "dtlab_peer_gmsh --version gmsh\n");
+    std::fprintf(
+        stderr,
+        "usage: dtlab_peer_gmsh gmsh|gmsh-hxt IN OUT [THREADS] | dtlab_peer_gmsh --serve gmsh|gmsh-hxt [THREADS] | "
+        "dtlab_peer_gmsh --version gmsh\n");
     return 2;
   };
   if (argc == 3 && std::strcmp(argv[1], "--version") == 0) return print_peer_version(gmsh_version, 3);

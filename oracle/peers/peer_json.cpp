@@ -28,9 +28,9 @@ nlohmann::json to_json(const PeerRun& r) {
 std::string peer_line(const PeerRun& r) {
   char buf[160];
   if (no_answer(r.verdict)) {
-    std::snprintf(buf, sizeof buf, "%-15s %10s  %9s  %8s", verdict_name(r.verdict), "-",
-                  r.verdict == Verdict::not_installed ? "-" : (std::to_string(r.wall_seconds).substr(0, 6) + " s").c_str(),
-                  "-");
+    std::snprintf(
+        buf, sizeof buf, "%-15s %10s  %9s  %8s", verdict_name(r.verdict), "-",
+        r.verdict == Verdict::not_installed ? "-" : (std::to_string(r.wall_seconds).substr(0, 6) + " s").c_str(), "-");
     return std::string(buf) + "  " + r.message;
   }
   std::snprintf(buf, sizeof buf, "%-15s %10zu  %7.3f s  %5.0f MB", verdict_name(r.verdict),

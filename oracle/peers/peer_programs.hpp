@@ -75,7 +75,8 @@ int print_peer_version(Version&& version, int error_exit) {
 // A helper's THREADS argument: 1..1024, else std::invalid_argument (exit 2).
 inline unsigned peer_thread_count(const std::string& text) {
   std::size_t used = 0;
-  const unsigned long n = text.empty() || text.size() > 4 || text[0] < '0' || text[0] > '9' ? 0 : std::stoul(text, &used);
+  const unsigned long n =
+      text.empty() || text.size() > 4 || text[0] < '0' || text[0] > '9' ? 0 : std::stoul(text, &used);
   if (used != text.size() || n < 1 || n > 1024) throw std::invalid_argument("bad thread count '" + text + "'");
   return static_cast<unsigned>(n);
 }

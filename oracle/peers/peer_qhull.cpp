@@ -86,7 +86,9 @@ std::string qhull_version() { return std::string("qhull ") + qh_version; }
 
 #else
 
-PeerAnswer peer_qhull(const std::vector<Point3>&, bool) { throw PeerNotInstalled("built without libqhull_r (Debian libqhull-dev)"); }
+PeerAnswer peer_qhull(const std::vector<Point3>&, bool) {
+  throw PeerNotInstalled("built without libqhull_r (Debian libqhull-dev)");
+}
 std::string qhull_version() { throw PeerNotInstalled("built without libqhull_r (Debian libqhull-dev)"); }
 
 #endif

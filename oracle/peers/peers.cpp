@@ -70,7 +70,8 @@ std::optional<PeerSpec> find_peer(const std::string& name) {
   const std::string suffix = "+none";
   if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
     auto base = find_peer(name.substr(0, name.size() - suffix.size()));
-    if (base && std::string(base->name).rfind("dtlab:", 0) == 0) return PeerSpec{"", Runner::helper, PeerOrientation::dtlab};
+    if (base && std::string(base->name).rfind("dtlab:", 0) == 0)
+      return PeerSpec{"", Runner::helper, PeerOrientation::dtlab};
   }
   return std::nullopt;
 }
@@ -211,8 +212,10 @@ PeerRun run_peer(const std::string& name, std::span<const Point3> points, const 
   const std::string in = dir.file("in.bin"), out = dir.file("out.bin");
   write_peer_points(in, pts);
   std::vector<std::string> argv;
-  if (spec->runner == Runner::python) argv = {options.python, "-c", kScipyScript};
-  else argv = {peer_binary(options, name)};
+  if (spec->runner == Runner::python)
+    argv = {options.python, "-c", kScipyScript};
+  else
+    argv = {peer_binary(options, name)};
   ChildResult c;
   if (options.servers && spec->slow_start) {
     argv.push_back("--serve");
@@ -263,8 +266,10 @@ std::string peer_version(const std::string& name, const PeerOptions& options) {
     const std::string v = c.status == ChildStatus::exited && c.exit_code == 0 ? last_line_of(log) : "";
     return "TetGen " + (v.empty() ? std::string("(version unknown)") : v) + (name == "tetgen-flip" ? " -l" : "");
   }
-  if (spec->runner == Runner::python) c = run_child({options.python, "-c", kScipyScript, "--version"}, limits);
-  else c = run_child({peer_binary(options, name), "--version", name}, limits);
+  if (spec->runner == Runner::python)
+    c = run_child({options.python, "-c", kScipyScript, "--version"}, limits);
+  else
+    c = run_child({peer_binary(options, name), "--version", name}, limits);
   if (c.status != ChildStatus::exited || c.exit_code != 0) return "not installed";
   return last_line_of(log);
 }

@@ -35,9 +35,9 @@ struct PeerOptions {
   std::uint64_t memory_bytes = 0;  // 0: half of the machine's memory
   std::string tetgen = "tetgen";
   std::string python = "/usr/bin/python3";  // Debian's, with python3-scipy
-  std::string peer_binary;         // the helper for every helper peer (tests); "": $DTLAB_PEER,
-                                   // $DTLAB_PEER_GMSH (gmsh peers), else those built with dtlab
-  bool check = true;               // judge the answer with the exact checker
+  std::string peer_binary;                  // the helper for every helper peer (tests); "": $DTLAB_PEER,
+                                            // $DTLAB_PEER_GMSH (gmsh peers), else those built with dtlab
+  bool check = true;                        // judge the answer with the exact checker
   // Threads of the parallel peers (cgal-parallel, gmsh-hxt; 0: all hardware threads),
   // and of the checker that judges every answer.
   unsigned threads = 1;
@@ -53,9 +53,9 @@ struct PeerOptions {
 struct PeerRun {
   std::string name;
   Verdict verdict = Verdict::not_installed;
-  std::string message;           // a refusal's message, a signal's name, the peer's note
-  double seconds = 0;            // the triangulation as the peer times it (else the process)
-  double wall_seconds = 0;       // the whole child process, file I/O included
+  std::string message;      // a refusal's message, a signal's name, the peer's note
+  double seconds = 0;       // the triangulation as the peer times it (else the process)
+  double wall_seconds = 0;  // the whole child process, file I/O included
   std::uint64_t peak_rss_bytes = 0;
   std::optional<Tetrahedralization> mesh;  // normalised answer (when there is one)
   std::vector<std::uint32_t> unused;       // inputs in no tet (duplicates, or missing)

@@ -126,8 +126,10 @@ ChildResult ServedChild::ask(const std::string& request, double timeout_s, std::
     char chunk[4096];
     const ssize_t n = read(from_, chunk, sizeof chunk);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) alive = false;  // EOF: it ended
-    else buffer_.append(chunk, static_cast<std::size_t>(n));
+    if (n <= 0)
+      alive = false;  // EOF: it ended
+    else
+      buffer_.append(chunk, static_cast<std::size_t>(n));
   }
   r.seconds = since(t0);
   if (!alive) {

@@ -44,7 +44,9 @@ OracleRun tetgen_delaunay(std::span<const Point3> points, const TetgenOptions& o
   run.seconds = c.seconds;
   switch (c.status) {
     case ChildStatus::not_started: run.note = c.message; return run;
-    case ChildStatus::timed_out: run.note = "tetgen timed out after " + std::to_string(options.timeout_s) + " s"; return run;
+    case ChildStatus::timed_out:
+      run.note = "tetgen timed out after " + std::to_string(options.timeout_s) + " s";
+      return run;
     case ChildStatus::output_limit: run.note = "tetgen " + c.message; return run;
     case ChildStatus::signaled: run.note = "tetgen killed by signal " + std::to_string(c.signal); return run;
     case ChildStatus::exited:

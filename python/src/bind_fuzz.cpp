@@ -84,8 +84,7 @@ py::list peer_campaign(const std::string& target, const py::dict& functions, con
   if (!(memory_mb >= 0 && memory_mb <= 1e9)) throw py::value_error("--memory: must be a number in [0, 1e9]");
   // The CLI's ranges (cli/cmd_fuzz.cpp): 10^12 points ended in std::bad_alloc.
   for (auto [name, v] : {std::pair{"--points", max_points}, std::pair{"--min-points", min_points}})
-    if (v < 1 || v > 10000000)
-      throw py::value_error(std::string(name) + ": " + std::to_string(v) + " not in [1, 1e7]");
+    if (v < 1 || v > 10000000) throw py::value_error(std::string(name) + ": " + std::to_string(v) + " not in [1, 1e7]");
   if (cases > 1000000000000ull) throw py::value_error("--cases: " + std::to_string(cases) + " not in [0, 1e12]");
   if (min_points > max_points)
     throw py::value_error("--min-points " + std::to_string(min_points) + " is above --points " +

@@ -19,10 +19,10 @@
 #include <utility>
 #include <vector>
 
+#include <pybind11/stl.h>
+#include "oracle/check/report_json.hpp"
 #include "oracle/peers/child_process.hpp"
 #include "oracle/peers/oracle_session.hpp"
-#include "oracle/check/report_json.hpp"
-#include <pybind11/stl.h>
 
 #include "python/src/bindings.hpp"
 #include "python/src/function_peers.hpp"

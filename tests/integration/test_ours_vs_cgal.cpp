@@ -6,9 +6,9 @@
 
 #include "fuzz/families.hpp"
 #include "kernel/build.hpp"
-#include "oracle/peers/cgal_oracle.hpp"
 #include "oracle/check/check.hpp"
 #include "oracle/check/compare.hpp"
+#include "oracle/peers/cgal_oracle.hpp"
 
 using namespace dtlab;
 

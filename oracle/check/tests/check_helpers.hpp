@@ -2,9 +2,9 @@
 // Helpers shared by the checker's tests.
 #include <algorithm>
 #include <cstdint>
-#include <vector>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -50,8 +50,8 @@ inline std::string report_key(const CheckReport& r) {
   for (auto c : r.counts) number(key, c);
   const CheckStats& st = r.stats;
   key.append("\nstats");
-  for (auto x : {st.vertices, st.edges, st.interior_facets, st.boundary_facets, st.duplicates,
-                 st.cospherical_facets, std::uint64_t{st.cover_proven}})
+  for (auto x : {st.vertices, st.edges, st.interior_facets, st.boundary_facets, st.duplicates, st.cospherical_facets,
+                 std::uint64_t{st.cover_proven}})
     number(key, x);
   number(key, st.volume_hull);
   key.append("\ncospherical");

@@ -101,8 +101,7 @@ inline std::uint32_t find(std::vector<std::uint32_t>& parent, std::uint32_t x) {
 }  // namespace truth_detail
 
 // `dt` is a Delaunay tetrahedralization of the same points from another program (CGAL).
-inline Truth delaunay_truth(const std::vector<Point3>& P, const std::vector<Tet>& tets,
-                            const std::vector<Tet>& dt) {
+inline Truth delaunay_truth(const std::vector<Point3>& P, const std::vector<Tet>& tets, const std::vector<Tet>& dt) {
   using namespace truth_detail;
   const std::size_t n = P.size();
   std::vector<Q3> q(n);
@@ -150,8 +149,7 @@ inline Truth delaunay_truth(const std::vector<Point3>& P, const std::vector<Tet>
       std::uint32_t apex = o[0];
       for (auto v : o)
         if (v != key[0] && v != key[1] && v != key[2]) apex = v;
-      if (insphere(q[k[0]], q[k[1]], q[k[2]], q[k[3]], q[apex]) == 0)
-        parent[find(parent, ts[0])] = find(parent, ts[1]);
+      if (insphere(q[k[0]], q[k[1]], q[k[2]], q[k[3]], q[apex]) == 0) parent[find(parent, ts[0])] = find(parent, ts[1]);
     }
   }
   std::map<std::uint32_t, std::set<std::uint32_t>> cell_vertices;

@@ -85,10 +85,10 @@ TEST_CASE("the crossing count decides on rays through a vertex or an edge", "[ch
   // o = centroid of the inner tet = origin; q = centroid of facet 0 of the outer tet,
   // on the ray towards -(1,1,1). A second surface has a vertex (or an edge) exactly on
   // that ray: an unperturbed count would be ambiguous there.
-  std::vector<Point3> P = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};  // inner
+  std::vector<Point3> P = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};        // inner
   for (int i = 0; i < 4; ++i) P.push_back({10 * P[i].x, 10 * P[i].y, 10 * P[i].z});  // outer 4..7
-  P.insert(P.end(), {{-2, -2, -2}, {6, -1, -1}, {-1, 6, -1}, {-1, -1, 6}});  // vertex on the ray: 8..11
-  P.insert(P.end(), {{-3, -1, -2}, {-1, -3, -2}, {4, 4, -1}, {0, 0, 5}});    // edge across the ray: 12..15
+  P.insert(P.end(), {{-2, -2, -2}, {6, -1, -1}, {-1, 6, -1}, {-1, -1, 6}});          // vertex on the ray: 8..11
+  P.insert(P.end(), {{-3, -1, -2}, {-1, -3, -2}, {4, 4, -1}, {0, 0, 5}});            // edge across the ray: 12..15
   auto surface = [&](Tet k) {
     if (ExactPredicates{}.orient3d(P[k[0]], P[k[1]], P[k[2]], P[k[3]]) < 0) std::swap(k[0], k[1]);
     std::vector<std::array<std::uint32_t, 3>> s;

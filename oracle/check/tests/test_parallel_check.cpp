@@ -25,10 +25,10 @@ Tetrahedralization built(std::vector<Point3> pts) {
 // Broken copies of a valid mesh, each with a different kind of defect.
 std::vector<Tetrahedralization> broken_copies(const Tetrahedralization& t) {
   std::vector<Tetrahedralization> out(4, t);
-  std::swap(out[0].tets[7][0], out[0].tets[7][1]);                    // inverted
-  out[1].points[t.tets[3][2]].x += 0.01;                              // non-Delaunay, maybe more
+  std::swap(out[0].tets[7][0], out[0].tets[7][1]);                                // inverted
+  out[1].points[t.tets[3][2]].x += 0.01;                                          // non-Delaunay, maybe more
   out[2].tets.erase(out[2].tets.begin() + static_cast<long>(t.tets.size() / 2));  // a hole
-  out[3].tets.push_back(t.tets[11]);                                  // a facet in 3+ tets
+  out[3].tets.push_back(t.tets[11]);                                              // a facet in 3+ tets
   return out;
 }
 
@@ -94,10 +94,10 @@ TEST_CASE("parallel facet table and edge count equal the serial ones", "[check][
   const std::vector<std::uint32_t> rank = first_appearance(t.tets, t.points.size());
   std::vector<std::pair<std::uint32_t, std::uint32_t>> serial_pairs, parallel_pairs;
   auto classify = [](const FacetPair& f) { return (f.r1 ^ f.r2) % 7 == 0 ? 1 + int(f.odd1) : 0; };
-  const FacetTable a = build_facet_table(t.tets, rank, classify,
-                                         [&](const FacetPair& f, int c) { serial_pairs.emplace_back(f.r1, f.r2 + c); }, 1);
-  const FacetTable b = build_facet_table(t.tets, rank, classify,
-                                         [&](const FacetPair& f, int c) { parallel_pairs.emplace_back(f.r1, f.r2 + c); }, 4);
+  const FacetTable a = build_facet_table(
+      t.tets, rank, classify, [&](const FacetPair& f, int c) { serial_pairs.emplace_back(f.r1, f.r2 + c); }, 1);
+  const FacetTable b = build_facet_table(
+      t.tets, rank, classify, [&](const FacetPair& f, int c) { parallel_pairs.emplace_back(f.r1, f.r2 + c); }, 4);
   CHECK(a.boundary_refs == b.boundary_refs);
   CHECK(a.interior == b.interior);
   CHECK(a.boundary == b.boundary);
@@ -110,5 +110,6 @@ TEST_CASE("parallel facet table and edge count equal the serial ones", "[check][
   CHECK(count_edges(t.tets, rank, 5) == edges);
   // Euler: V - E + F - T = 1 for a ball.
   CHECK(std::int64_t(t.points.size()) - std::int64_t(edges) + std::int64_t(a.interior + a.boundary) -
-            std::int64_t(t.tets.size()) == 1);
+            std::int64_t(t.tets.size()) ==
+        1);
 }

@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "oracle/check/tests/point_sets.hpp"
 #include "oracle/peers/child_process.hpp"
 #include "oracle/peers/peer_command.hpp"
 #include "oracle/peers/peers.hpp"
 #include "oracle/peers/temp_dir.hpp"
-#include "oracle/check/tests/point_sets.hpp"
 
 using namespace dtlab;
 

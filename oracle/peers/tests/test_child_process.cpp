@@ -52,8 +52,7 @@ TEST_CASE("run_child kills the whole process group on time-out", "[oracle][child
   TempDir dir;
   const std::string pidfile = dir.file("pid");
   // The grandchild outlives an ordinary kill of its parent; the group kill gets it.
-  const ChildResult r =
-      run_child({"sh", "-c", "sleep 30 & echo $! > " + pidfile + "; wait"}, ChildLimits::of(0.5));
+  const ChildResult r = run_child({"sh", "-c", "sleep 30 & echo $! > " + pidfile + "; wait"}, ChildLimits::of(0.5));
   CHECK(r.status == ChildStatus::timed_out);
   CHECK(r.seconds < 10);
   int grandchild = 0;
@@ -79,8 +78,7 @@ TEST_CASE("run_child measures the program's own peak memory, not the parent's", 
 
 TEST_CASE("run_child applies the memory limit", "[oracle][child]") {
   // 2 GB under a 256 MB address-space limit: the allocation fails in the child.
-  const ChildResult r = run_child({"python3", "-c", "x = bytearray(2 * 10**9)"},
-                                  ChildLimits::of(60, "", 256ull << 20));
+  const ChildResult r = run_child({"python3", "-c", "x = bytearray(2 * 10**9)"}, ChildLimits::of(60, "", 256ull << 20));
   if (r.status == ChildStatus::not_started) {
     WARN("python3 not installed");
     return;

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 
-#include "oracle/peers/cgal_oracle.hpp"
 #include "oracle/check/check.hpp"
 #include "oracle/check/compare.hpp"
-#include "oracle/peers/tetgen_oracle.hpp"
 #include "oracle/check/tests/point_sets.hpp"
+#include "oracle/peers/cgal_oracle.hpp"
+#include "oracle/peers/tetgen_oracle.hpp"
 
 using namespace dtlab;
 
@@ -54,4 +54,3 @@ TEST_CASE("the comparison reports a differing cell with a witness", "[oracle]") 
   std::sort(last.begin(), last.end());
   CHECK(c.only_a[0] == std::vector<std::uint32_t>(last.begin(), last.end()));
 }
-

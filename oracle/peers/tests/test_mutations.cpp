@@ -15,12 +15,12 @@
 #include <set>
 
 #include "kernel/build.hpp"
-#include "oracle/peers/cgal_oracle.hpp"
 #include "oracle/check/check.hpp"
 #include "oracle/check/facet_table.hpp"
 #include "oracle/check/tests/check_helpers.hpp"
 #include "oracle/check/tests/mutation_truth.hpp"
 #include "oracle/check/tests/point_sets.hpp"
+#include "oracle/peers/cgal_oracle.hpp"
 #include "oracle/peers/tetgen_oracle.hpp"
 #include "predicates/exact.hpp"
 
@@ -102,8 +102,7 @@ void flips32(const Mesh& m, std::mt19937_64& rng, int want, std::vector<Mutant>&
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> edges;
   for (std::uint32_t t = 0; t < m.tets.size(); ++t)
     for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        edges[std::minmax(m.tets[t][i], m.tets[t][j])].push_back(t);
+      for (int j = i + 1; j < 4; ++j) edges[std::minmax(m.tets[t][i], m.tets[t][j])].push_back(t);
   std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>>> deg3;
   std::vector<std::size_t> cospherical;  // the five points on one sphere
   const ExactPredicates ex;
@@ -119,9 +118,10 @@ void flips32(const Mesh& m, std::mt19937_64& rng, int want, std::vector<Mutant>&
           cospherical.push_back(deg3.size() - 1);
     }
   for (int i = 0; i < want && !deg3.empty(); ++i) {
-    const std::size_t pick = i % 2 == 0 && !cospherical.empty()
-                                 ? cospherical[std::uniform_int_distribution<std::size_t>(0, cospherical.size() - 1)(rng)]
-                                 : std::uniform_int_distribution<std::size_t>(0, deg3.size() - 1)(rng);
+    const std::size_t pick =
+        i % 2 == 0 && !cospherical.empty()
+            ? cospherical[std::uniform_int_distribution<std::size_t>(0, cospherical.size() - 1)(rng)]
+            : std::uniform_int_distribution<std::size_t>(0, deg3.size() - 1)(rng);
     const auto& [edge, ts] = deg3[pick];
     std::set<std::uint32_t> ring;
     for (auto t : ts)
@@ -267,7 +267,8 @@ void report(const Score& s, const char* label) {
               s.families.size());
   for (const auto& n : s.sources) std::printf(" %s", n.c_str());
   std::printf("\n");
-  for (const auto& [kind, vi] : s.kinds) std::printf("  %-12s %4d valid %4d invalid\n", kind.c_str(), vi.first, vi.second);
+  for (const auto& [kind, vi] : s.kinds)
+    std::printf("  %-12s %4d valid %4d invalid\n", kind.c_str(), vi.first, vi.second);
 }
 
 std::vector<Point3> with_duplicates(std::vector<Point3> p) {

@@ -9,10 +9,10 @@
 #include <random>
 
 #include "kernel/build.hpp"
-#include "oracle/peers/cgal_oracle.hpp"
 #include "oracle/check/check.hpp"
 #include "oracle/check/report_json.hpp"
 #include "oracle/check/tests/mutation_truth.hpp"
+#include "oracle/peers/cgal_oracle.hpp"
 
 using namespace dtlab;
 
@@ -47,7 +47,7 @@ TEST_CASE("the naive backend never crashes or hangs; the checker judges every fi
     CHECK(rep.ok() == truth.valid);
     (rep.ok() ? valid : invalid)++;
   }
-  std::printf("naive on 40 rounded cylinders: %d named failures, %d finished valid, %d finished with defects\n",
-              named, valid, invalid);
+  std::printf("naive on 40 rounded cylinders: %d named failures, %d finished valid, %d finished with defects\n", named,
+              valid, invalid);
   CHECK(named + valid + invalid == 40);
 }

@@ -2,11 +2,11 @@
 // finds them equal, on uniform, lattice and exactly cospherical inputs.
 #include <catch2/catch.hpp>
 
-#include "oracle/peers/cgal_oracle.hpp"
 #include "oracle/check/check.hpp"
 #include "oracle/check/compare.hpp"
-#include "oracle/peers/tetgen_oracle.hpp"
 #include "oracle/check/tests/point_sets.hpp"
+#include "oracle/peers/cgal_oracle.hpp"
+#include "oracle/peers/tetgen_oracle.hpp"
 
 using namespace dtlab;
 
@@ -41,10 +41,8 @@ TEST_CASE("CGAL and TetGen agree with the checker and with each other", "[oracle
   std::vector<Point3> sphere_center = test::sphere_points(41);
   sphere_center.push_back({0, 0, 0});
   const Family families[] = {
-      {"uniform", test::uniform_points(300, 1), true},
-      {"uniform+duplicates", with_dups, true},
-      {"lattice", test::lattice_points(5), false},
-      {"sphere", test::sphere_points(50), false},
+      {"uniform", test::uniform_points(300, 1), true}, {"uniform+duplicates", with_dups, true},
+      {"lattice", test::lattice_points(5), false},     {"sphere", test::sphere_points(50), false},
       {"sphere+center", sphere_center, false},
   };
   for (const Family& f : families) {
@@ -64,8 +62,10 @@ TEST_CASE("CGAL and TetGen agree with the checker and with each other", "[oracle
 TEST_CASE("TetGen failures are no answer", "[oracle]") {
   const std::vector<Point3> collinear = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}};
   const OracleRun r = tetgen_delaunay(collinear);
-  if (r.mesh) CHECK(r.mesh->tets.empty());
-  else CHECK_FALSE(r.note.empty());
+  if (r.mesh)
+    CHECK(r.mesh->tets.empty());
+  else
+    CHECK_FALSE(r.note.empty());
   const OracleRun missing = tetgen_delaunay(collinear, {.binary = "/nonexistent/tetgen"});
   CHECK_FALSE(missing.mesh);
   CHECK_FALSE(missing.note.empty());

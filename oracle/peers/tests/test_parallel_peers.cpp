@@ -6,8 +6,8 @@
 
 #include <algorithm>
 
-#include "oracle/peers/peers.hpp"
 #include "oracle/check/tests/point_sets.hpp"
+#include "oracle/peers/peers.hpp"
 
 using namespace dtlab;
 

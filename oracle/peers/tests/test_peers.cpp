@@ -11,11 +11,11 @@
 #include <set>
 #include <string>
 
+#include "oracle/check/tests/point_sets.hpp"
 #include "oracle/peers/peer_adapter.hpp"
 #include "oracle/peers/peers.hpp"
 #include "oracle/peers/served_child.hpp"
 #include "oracle/peers/temp_dir.hpp"
-#include "oracle/check/tests/point_sets.hpp"
 
 using namespace dtlab;
 
@@ -72,8 +72,8 @@ TEST_CASE("duplicate copies are normalised for every peer that merges or keeps o
   points.push_back(points[77]);
   // Left out: gmsh (hull tets, above) and cgal-inexact, which keeps both copies of a
   // duplicated point as two vertices (measured, CGAL 5.5.1): its answer is invalid.
-  for (const std::string name : {"cgal", "tetgen", "tetgen-flip", "qhull", "qhull-qj", "scipy", "gmsh-hxt",
-                                 "dtlab:adaptive", "dtlab:exact"}) {
+  for (const std::string name :
+       {"cgal", "tetgen", "tetgen-flip", "qhull", "qhull-qj", "scipy", "gmsh-hxt", "dtlab:adaptive", "dtlab:exact"}) {
     INFO(name);
     const auto r = run_installed(name, points);
     if (!r) continue;
