@@ -154,6 +154,18 @@ void insert_serially(InsertionJob<B>& j) {
   std::vector<TetRecord>().swap(records);
 }
 
+// The end of the threaded build: statistics, the log in input indices, the tets compacted.
+template <PredicateBackend B>
+void finish_threaded(InsertionJob<B>& j, ParallelInsertion<B>& par) {
+  j.res.stats = par.finish();
+  if (j.infinite) j.res.stats.inserted += 4;
+  j.res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - j.t0).count();
+  j.res.peak_tets = par.store().size();
+  resolve_log(j.res, j.log, j.order);
+  compact_canonical(par.store().records(), par.store().size(), j.n, j.order, j.res.mesh.tets, j.threads);
+  std::free(par.store().release_records());
+}
+
 // The threaded build (kernel/parallel_build.hpp); fills j.res.
 template <PredicateBackend B>
 void insert_threaded(InsertionJob<B>& j) {
@@ -162,25 +174,51 @@ void insert_threaded(InsertionJob<B>& j) {
   // BRIO rounds one after the other (the input order is one round).
   const std::vector<std::size_t> rounds =
       j.opt.order == InsertionOrder::brio ? brio_rounds(j.n) : std::vector<std::size_t>{0, j.n};
+  // A round is inserted in slices of at most kProgressSlice points so that the progress
+  // hook (which may cancel the build: Ctrl-C in Python) runs every few tenths of a second,
+  // not once per round (the last BRIO round holds 7/8 of the points).
+  constexpr std::size_t kProgressSlice = std::size_t(1) << 17;
   for (std::size_t r = 0; r + 1 < rounds.size(); ++r) {
-    progress_advance(j.progress, rounds[r]);  // on the calling thread, between rounds
-    std::vector<std::uint32_t> list;
-    list.reserve(rounds[r + 1] - rounds[r]);
-    for (std::size_t k = rounds[r]; k < rounds[r + 1]; ++k)
-      if (!j.is_first(static_cast<std::uint32_t>(k))) list.push_back(static_cast<std::uint32_t>(k));
-    if (!par.insert(std::move(list), j.log)) {
-      for (std::size_t k = rounds[r + 1]; k < j.n; ++k)
-        if (!j.is_first(static_cast<std::uint32_t>(k))) j.log.skipped.push_back(static_cast<std::uint32_t>(k));
-      break;
+    for (std::size_t s = rounds[r]; s < rounds[r + 1]; s += kProgressSlice) {
+      const std::size_t e = std::min(rounds[r + 1], s + kProgressSlice);
+      progress_advance(j.progress, s);  // on the calling thread, between passes
+      std::vector<std::uint32_t> list;
+      list.reserve(e - s);
+      for (std::size_t k = s; k < e; ++k)
+        if (!j.is_first(static_cast<std::uint32_t>(k))) list.push_back(static_cast<std::uint32_t>(k));
+      if (!par.insert(std::move(list), j.log)) {
+        for (std::size_t k = e; k < j.n; ++k)
+          if (!j.is_first(static_cast<std::uint32_t>(k))) j.log.skipped.push_back(static_cast<std::uint32_t>(k));
+        return finish_threaded(j, par);
+      }
     }
   }
-  j.res.stats = par.finish();
-  if (j.infinite) j.res.stats.inserted += 4;
-  j.res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - j.t0).count();
-  j.res.peak_tets = par.store().size();
-  resolve_log(j.res, j.log, j.order);
-  compact_canonical(par.store().records(), par.store().size(), j.n, j.order, j.res.mesh.tets, j.threads);
-  std::free(par.store().release_records());
+  finish_threaded(j, par);
+}
+
+// The first four affinely independent points in insertion order, as positions in `pts`
+// (either boundary: a lower-dimensional input has no Delaunay tetrahedralization).
+// Returns why there are none, or nullptr.
+template <PredicateBackend B>
+const char* first_simplex(const std::vector<Point3>& pts, std::uint32_t n, const B& pred, std::uint32_t (&first)[4]) {
+  if (n < 4) return "fewer than 4 points";
+  std::uint32_t k = 1;
+  const auto next = [&](auto accept) {
+    for (; k < n; ++k)
+      if (accept(pts[k])) return true;
+    return false;
+  };
+  first[0] = 0;
+  const Point3 a = pts[0];
+  if (!next([&](const Point3& q) { return !(q == a); })) return "all points coincide";
+  first[1] = k++;
+  const Point3 b = pts[first[1]];
+  if (!next([&](const Point3& q) { return !detail::collinear(pred, a, b, q); })) return "all points are collinear";
+  first[2] = k++;
+  const Point3 c = pts[first[2]];
+  if (!next([&](const Point3& q) { return pred.orient3d(a, b, c, q) != 0; })) return "all points are coplanar";
+  first[3] = k;
+  return nullptr;
 }
 
 // `pts` holds the input points in input order; the build owns it, permutes it in place
@@ -222,28 +260,8 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
 
   std::uint32_t inf = kNone;
   std::uint32_t first[4];
-  // The first four affinely independent points in insertion order (either boundary:
-  // a lower-dimensional input has no Delaunay tetrahedralization). Positions in pts.
-  std::uint32_t k = 0;
-  const auto next = [&](auto accept) {
-    for (; k < n; ++k)
-      if (accept(pts[k])) return true;
-    return false;
-  };
-  if (n < 4) return lower_dimensional("fewer than 4 points");
-  first[0] = 0;
-  k = 1;
-  const Point3 a = pts[0];
-  if (!next([&](const Point3& q) { return !(q == a); })) return lower_dimensional("all points coincide");
-  first[1] = k++;
-  const Point3 b = pts[first[1]];
-  if (!next([&](const Point3& q) { return !detail::collinear(pred, a, b, q); }))
-    return lower_dimensional("all points are collinear");
-  first[2] = k++;
-  const Point3 c = pts[first[2]];
-  if (!next([&](const Point3& q) { return pred.orient3d(a, b, c, q) != 0; }))
-    return lower_dimensional("all points are coplanar");
-  first[3] = k;
+  if (const char* why = first_simplex(pts, n, pred, first)) return lower_dimensional(why);
+  const Point3 a = pts[first[0]], b = pts[first[1]], c = pts[first[2]];
   if (opt.boundary == Boundary::infinite) {
     if (pred.orient3d(a, b, c, pts[first[3]]) < 0) std::swap(first[0], first[1]);
     pts.push_back(a);  // the infinite vertex's slot: its coordinates are never read
