@@ -10,6 +10,7 @@
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
+#include "predicates/backend_choice.hpp"
 
 namespace dtlab::fuzz {
 
@@ -22,6 +23,55 @@ std::string file_stem(const CaseRecord& r) {
   if (r.boundary != "infinite") name += "-" + r.boundary;
   std::replace(name.begin(), name.end(), ':', '_');
   return name;
+}
+
+// The 1-based line of byte `offset` in `text`.
+std::size_t line_at(const std::string& text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  return 1 +
+         static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
+}
+
+// The settings a corpus file was recorded with, from its .json sidecar when there is one.
+// A sidecar that is no JSON, holds a field of the wrong type or names an unknown backend
+// or boundary is refused with its file and line (the line of the field when it is found).
+void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build, std::string& outcome) {
+  fs::path sidecar = file;
+  sidecar.replace_extension(".json");
+  std::string boundary = "infinite";
+  if (fs::is_regular_file(sidecar)) {
+    std::ifstream in(sidecar, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw InputError(sidecar.string(), 0, "read error");
+    const auto field_line = [&](const char* key) {
+      const std::size_t at = text.find('"' + std::string(key) + '"');
+      return at == std::string::npos ? std::size_t(0) : line_at(text, at);
+    };
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw InputError(sidecar.string(), line_at(text, e.byte == 0 ? 0 : e.byte - 1), e.what());
+    }
+    if (!j.is_object()) throw InputError(sidecar.string(), 1, "expected a JSON object");
+    const char* key = "";
+    try {
+      key = "predicates", spec.backend = j.value(key, spec.backend);
+      key = "perturb", spec.perturb = j.value(key, std::string("sos")) == "sos";
+      key = "boundary", boundary = j.value(key, boundary);
+      key = "outcome", outcome = j.value(key, std::string{});
+      key = "case_seed", build.seed = j.value(key, build.seed);
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(sidecar.string(), field_line(key), std::string("'") + key + "': " + e.what());
+    }
+    if (!parse_backend(spec.backend))
+      throw InputError(sidecar.string(), field_line("predicates"),
+                       "unknown predicates '" + spec.backend + "' (expected naive, epsilon, adaptive or exact)");
+    if (!parse_boundary(boundary, build))
+      throw InputError(sidecar.string(), field_line("boundary"), "bad boundary '" + boundary + "'");
+  } else {
+    parse_boundary(boundary, build);
+  }
 }
 
 }  // namespace
@@ -95,24 +145,8 @@ std::vector<ReplayResult> replay_corpus(const std::string& path, const ReplayOpt
     const std::vector<Point3> points = read_points(file.string()).points;
     PredicateSpec recorded_spec;
     BuildOptions build;
-    std::string recorded_outcome, recorded_boundary = "infinite";
-    fs::path sidecar = file;
-    sidecar.replace_extension(".json");
-    if (fs::is_regular_file(sidecar)) {
-      try {
-        std::ifstream in(sidecar);
-        const auto j = nlohmann::json::parse(in);
-        recorded_spec.backend = j.value("predicates", recorded_spec.backend);
-        recorded_spec.perturb = j.value("perturb", std::string("sos")) == "sos";
-        recorded_boundary = j.value("boundary", recorded_boundary);
-        recorded_outcome = j.value("outcome", std::string{});
-        build.seed = j.value("case_seed", build.seed);
-      } catch (const nlohmann::json::exception& e) {
-        throw InputError(sidecar.string(), 0, e.what());
-      }
-    }
-    if (!parse_boundary(recorded_boundary, build))
-      throw InputError(sidecar.string(), 0, "bad boundary '" + recorded_boundary + "'");
+    std::string recorded_outcome;
+    read_sidecar(file, recorded_spec, build, recorded_outcome);
     if (options.boundary) {
       const std::uint64_t seed = build.seed;
       build = *options.boundary;

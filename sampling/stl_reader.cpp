@@ -2,6 +2,7 @@
 // corners with bit-identical coordinates are welded into shared vertices.
 #include <cctype>
 #include <cstring>
+#include <string_view>
 #include <unordered_map>
 
 #include "sampling/byte_source.hpp"
@@ -70,13 +71,22 @@ TriangleMesh read_stl_binary(detail::ByteSource& src) {
   return mesh;
 }
 
+// STL keywords are matched without regard to case: some CAD exporters write
+// "SOLID", "FACET NORMAL", "ENDSOLID".
+bool is_keyword(std::string_view tok, std::string_view word) {
+  if (tok.size() != word.size()) return false;
+  for (std::size_t i = 0; i < tok.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(tok[i])) != word[i]) return false;
+  return true;
+}
+
 TriangleMesh read_stl_ascii(detail::ByteSource& src) {
   TriangleMesh mesh;
   Welder weld(mesh);
   std::string_view tok;
   auto expect = [&](std::string_view word) {
     if (!src.next_token(tok)) throw InputError(src.path(), src.line() + 1, "file ends, expected '" + std::string(word) + "'");
-    if (tok != word)
+    if (!is_keyword(tok, word))
       throw InputError(src.path(), src.token_line(),
                        "expected '" + std::string(word) + "', got '" + std::string(tok) + "'");
   };
@@ -91,16 +101,16 @@ TriangleMesh read_stl_ascii(detail::ByteSource& src) {
   src.next_line(rest);
   for (;;) {
     if (!src.next_token(tok)) throw InputError(src.path(), src.line() + 1, "file ends without 'endsolid'");
-    if (tok == "endsolid") {
+    if (is_keyword(tok, "endsolid")) {
       src.next_line(rest);
       if (!src.next_token(tok)) break;
-      if (tok != "solid")
+      if (!is_keyword(tok, "solid"))
         throw InputError(src.path(), src.token_line(), "expected 'solid' or the end after 'endsolid', got " +
                                                            quote_token(tok));
       src.next_line(rest);
       continue;
     }
-    if (tok != "facet")
+    if (!is_keyword(tok, "facet"))
       throw InputError(src.path(), src.token_line(), "expected 'facet' or 'endsolid', got '" + std::string(tok) + "'");
     expect("normal");
     for (int k = 0; k < 3; ++k) number();
@@ -128,7 +138,7 @@ TriangleMesh read_stl(const std::string& path) {
   const std::string& d = src.data();
   std::size_t text = d.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   while (text < d.size() && text < 80 && std::isspace(static_cast<unsigned char>(d[text]))) ++text;
-  bool binary = d.compare(text, 5, "solid") != 0;
+  bool binary = !is_keyword(std::string_view(d).substr(text, 5), "solid");
   if (!binary && src.size() >= 84) {
     std::uint32_t n;
     std::memcpy(&n, src.data().data() + 80, 4);

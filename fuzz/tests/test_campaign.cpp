@@ -1,12 +1,14 @@
+#include <unistd.h>
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <fstream>
 #include <set>
-#include <unistd.h>
 
 #include "fuzz/campaign.hpp"
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/summary.hpp"
+#include "kernel/input_error.hpp"
 
 using namespace dtlab;
 using namespace dtlab::fuzz;
@@ -187,4 +189,32 @@ TEST_CASE("the committed corpus replays cleanly with robust backends", "[fuzz][c
     INFO(p.file << " " << p.backend << ": " << p.run.outcome << " " << p.run.detail);
     CHECK(p.run.ok());
   }
+}
+
+TEST_CASE("a corpus sidecar that is wrong is refused with its file and line", "[fuzz][campaign]") {
+  TempDir dir;
+  fs::create_directories(dir.path);
+  {
+    std::ofstream node(dir.path / "c.node");
+    node << "5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 0.3 0.3 0.3\n";
+  }
+  const auto refusal = [&](const std::string& sidecar) -> std::string {
+    std::ofstream(dir.path / "c.json") << sidecar;
+    try {
+      replay_corpus((dir.path / "c.node").string(), {});
+    } catch (const InputError& e) {
+      return std::to_string(e.line()) + ":" + e.reason();
+    }
+    return "accepted";
+  };
+  // An unknown backend was run and graded a failing case (exit 1), not bad input.
+  CHECK(
+      refusal("{\n  \"outcome\": \"ok\",\n  \"predicates\": \"bogus\"\n}\n").rfind("3:unknown predicates 'bogus'", 0) ==
+      0);
+  // JSON errors name their line, not line 0.
+  CHECK(refusal("{\n  \"outcome\": \"ok\",\n  \"predicates\": \n").rfind("4:", 0) == 0);
+  CHECK(refusal("{\n  \"outcome\": \"ok\",\n  \"case_seed\": \"x\"\n}\n").rfind("3:'case_seed'", 0) == 0);
+  CHECK(refusal("{\n  \"boundary\": \"moon\"\n}\n") == "2:bad boundary 'moon'");
+  CHECK(refusal("[1, 2]\n") == "1:expected a JSON object");
+  CHECK(refusal("{\"predicates\": \"exact\"}\n") == "accepted");
 }

@@ -151,6 +151,12 @@ TEST_CASE("STL reader: ASCII and binary, corners welded into shared vertices") {
   std::string broken = ascii;
   broken.replace(broken.find("endloop"), 7, "endlop");
   CHECK(input_error([&] { read_stl(write_file("bad.stl", broken)); }) == "7:expected 'endloop', got 'endlop'");
+  // Upper-case keywords (some CAD exporters) are the same file, not a binary one with a
+  // wrong triangle count.
+  std::string upper = ascii;
+  for (char& ch : upper)
+    if (ch >= 'a' && ch <= 'z') ch = static_cast<char>(ch - 'a' + 'A');
+  check_tet(read_stl(write_file("tet_upper.stl", upper)));
 }
 
 TEST_CASE("read_mesh rejects unknown extensions and missing files") {
