@@ -508,6 +508,10 @@ class Leaderboard {
          "seconds, peak RSS, shrunk input), `data/speed.csv`, `corpus/` (shrunk failing inputs with sidecars), "
          "`environment.json` (machine, versions of every peer).\n\n";
     o << environment_markdown(env);
+    if (peers.empty()) {
+      o << "\nDelaunay peers: none (`--peers none`); the Voronoi peers' versions are in their table.\n";
+      return;
+    }
     o << "\nPeer versions: ";
     for (const auto& p : peers) o << "`" << p << "` " << versions[p].get<std::string>() << "; ";
     o << "\n";

@@ -191,7 +191,8 @@ std::string section(const VoronoiBoardOptions& o, const std::map<std::pair<std::
        "0.1 per side (as `dtlab voronoi`) and judged by the exact Voronoi checker (voronoi_check/README.md). A "
        "failure is any verdict but `exact-topology` and `rounded-topology` (only faces below 1e-9 of the extent "
        "squared wrong); coplanar inputs and boxes that overflow are not judged.\n\n";
-  m << table_row({"peer", "cases", "failing", "share [Wilson 95%]", "verdicts", "not judged"}) << table_rule(6, 1);
+  m << table_row({"peer", "version", "cases", "failing", "share [Wilson 95%]", "verdicts", "not judged"})
+    << table_rule(7, 2);
   for (const auto& p : o.peers) {
     Tally sum;
     for (const auto& [key, k] : t)
@@ -201,7 +202,7 @@ std::string section(const VoronoiBoardOptions& o, const std::map<std::pair<std::
       }
     const auto [lo, hi] = wilson_interval(sum.failing, sum.cases);
     m << table_row(
-        {"`" + p + "`", std::to_string(sum.cases), std::to_string(sum.failing),
+        {"`" + p + "`", voronoi_peer_version(p), std::to_string(sum.cases), std::to_string(sum.failing),
          percent(sum.cases ? double(sum.failing) / sum.cases : 0) + " [" + percent(lo) + ", " + percent(hi) + "]",
          verdicts_text(sum.verdicts), std::to_string(sum.not_judged)});
   }

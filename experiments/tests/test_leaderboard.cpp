@@ -14,6 +14,7 @@
 #include "kernel/point_io.hpp"
 #include "oracle/peers/peers.hpp"
 #include "oracle/peers/temp_dir.hpp"
+#include "voronoi_check/voronoi_peers.hpp"
 
 using namespace dtlab;
 
@@ -78,7 +79,8 @@ TEST_CASE("leaderboard: report, csv, environment and shrunk failures", "[experim
   CHECK(report.find("Where the time went") != std::string::npos);
   // The Voronoi section: voro++ judged on the same families, its speed measured with the check's time.
   CHECK(report.find("## Voronoi cells") != std::string::npos);
-  CHECK(report.find("| `voro++` | 9 |") != std::string::npos);  // 3 families x 3 seeds
+  // 3 families x 3 seeds, with the linked voro++'s version
+  CHECK(report.find("| `voro++` | " + voronoi_peer_version("voro++") + " | 9 |") != std::string::npos);
   CHECK(std::filesystem::exists(o.out / "data" / "voronoi.csv"));
   CHECK(std::filesystem::exists(o.out / "data" / "voronoi_speed.csv"));
   CHECK(r.facts["voronoi"]["saved_pairs"] == r.facts["voronoi"]["failing_pairs"]);
