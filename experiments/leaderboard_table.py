@@ -12,20 +12,11 @@ the failing (peer, source) pairs' shrinks counted by how they ended, and each pa
 that is not 1-minimal (leaderboard.csv's shrink columns)."""
 import csv
 import json
-import math
 import os
 import sys
 from collections import Counter, defaultdict
 
-
-def wilson(k, n, z=1.959964):
-    # As experiments/wilson_interval.hpp.
-    if n == 0:
-        return 0.0, 1.0
-    p = k / n
-    centre = (p + z * z / (2 * n)) / (1 + z * z / n)
-    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
-    return max(0.0, centre - half), min(1.0, centre + half)
+from wilson import wilson
 
 
 def failed(row):

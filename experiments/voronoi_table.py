@@ -15,23 +15,14 @@ data/voronoi_speed.csv and environment.json. --readme replaces what lies between
 naming the run and the table."""
 import csv
 import json
-import math
 import os
 import sys
 from collections import Counter, defaultdict
 
+from wilson import wilson
+
 BEGIN, END = "<!-- voronoi-table:begin -->", "<!-- voronoi-table:end -->"
 PASSING = ("exact-topology", "rounded-topology")
-
-
-def wilson(k, n, z=1.959964):
-    # As experiments/wilson_interval.hpp.
-    if n == 0:
-        return 0.0, 1.0
-    p = k / n
-    centre = (p + z * z / (2 * n)) / (1 + z * z / n)
-    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n)
-    return max(0.0, centre - half), min(1.0, centre + half)
 
 
 def pct(x):
