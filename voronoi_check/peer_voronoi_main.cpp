@@ -13,6 +13,7 @@
 #include <CGAL/version.h>
 
 #include "voronoi/voronoi.hpp"
+#include "voronoi/voronoi_range.hpp"
 #include "voronoi_check/voronoi_peer_programs.hpp"
 
 #ifndef DTLAB_VORO_VERSION
@@ -28,12 +29,19 @@ PeerCells run_dtlab(const std::string& backend, const std::vector<Point3>& sites
   o.box = box;
   o.predicates.backend = backend;
   o.threads = 1;
+  // What `dtlab voronoi` refuses (voronoi/voronoi_range.hpp), this peer refuses too: its
+  // cells are the command's, not cells the command would never print.
+  std::string problem = voronoi_sites_problem(sites);
+  if (problem.empty()) problem = voronoi_box_problem(box, true, 0);
+  if (!problem.empty()) throw PeerRefusal(problem);
+  VoronoiDiagram vd;
   try {
-    const VoronoiDiagram vd = compute_voronoi(sites, o);
-    return {vd.seconds_dt + vd.seconds_cells, tool_cells_of(vd)};
+    vd = compute_voronoi(sites, o);
   } catch (const std::exception& e) {
     throw PeerRefusal(e.what());
   }
+  if (problem = lost_cells_problem(vd); !problem.empty()) throw PeerRefusal(problem);
+  return {vd.seconds_dt + vd.seconds_cells, tool_cells_of(vd)};
 }
 
 PeerCells run(const std::string& name, const std::vector<Point3>& sites, const vor::Box& box) {

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "sites.hpp"
@@ -56,6 +57,22 @@ TEST_CASE("voro++ loses both copies of a duplicated site") {
   // dtlab's own cells keep one cell for the pair.
   const VoronoiPeerRun ours = run_voronoi_peer("dtlab:adaptive", sites, kBox, quick());
   CHECK(ours.verdict == VoronoiVerdict::exact_topology);
+}
+
+TEST_CASE("dtlab's own cells as a peer refuse what dtlab voronoi refuses") {
+  // A 4x4x3 grid of sites one ulp of 0.5 apart: the exact Delaunay complex exists, but
+  // cells clipped in doubles collapse. `dtlab voronoi` exits 2 on it; the dtlab:BACKEND
+  // peer answered such cells (wrong-topology) before.
+  std::vector<Point3> sites;
+  const double u = std::nextafter(0.5, 1.0) - 0.5;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 3; ++k) sites.push_back({0.5 + i * u, 0.5 + j * u, 0.5 + k * u});
+  const vor::Box box{{0.5 - 8 * u, 0.5 - 8 * u, 0.5 - 8 * u}, {0.5 + 12 * u, 0.5 + 12 * u, 0.5 + 12 * u}};
+  const VoronoiPeerRun r = run_voronoi_peer("dtlab:adaptive", sites, box, quick());
+  INFO(voronoi_verdict_name(r.verdict) << " " << r.message);
+  CHECK(r.verdict == VoronoiVerdict::refused);
+  CHECK(r.message.find("double precision") != std::string::npos);
 }
 
 TEST_CASE("a peer that is not there, or that writes garbage, is named so") {
