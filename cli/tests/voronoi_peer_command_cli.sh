@@ -92,7 +92,16 @@ if len(pts) >= 9:
     cells = [c for c in cells if c["site"] != 0]
 json.dump({"cells": cells}, open(out + ".json", "w"))
 PY
-drop="drop=$py $tmp/drop.py {in} {box} {out}"
+# Under the asan preset the module drop.py imports is instrumented too: its interpreter
+# needs the runtime preloaded, as python/CMakeLists.txt does for the Python tests.
+droppy="$py"
+if asan=$(ldd "$dtlab" 2>/dev/null | grep -o '/[^ ]*libasan\.so[^ ]*'); then
+  cxx=$(ldd "$dtlab" | grep -o '/[^ ]*libstdc++\.so[^ ]*' || true)
+  printf '#!/bin/sh\nLD_PRELOAD="%s %s" ASAN_OPTIONS=detect_leaks=0 exec %s "$@"\n' "$asan" "$cxx" "$py" >"$tmp/py_asan"
+  chmod +x "$tmp/py_asan"
+  droppy="$tmp/py_asan"
+fi
+drop="drop=$droppy $tmp/drop.py {in} {box} {out}"
 expect 1 "fuzz --target a wrong Voronoi command peer" -- "$dtlab" fuzz --target drop --voronoi-peer "$drop" \
   --family uniform --cases 1 --min-points 14 --points 14 --out "$tmp/f3" --quiet
 has() { grep -qE -- "$1" "$tmp/out" || { echo "FAIL: $2: no '$1' in"; sed 's/^/  | /' "$tmp/out" "$tmp/err" | head -20; fails=$((fails + 1)); }; }
