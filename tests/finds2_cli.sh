@@ -51,32 +51,21 @@ ok "bench + SIGINT: no tetgen left" bash -c "! { ps -eo stat,args | grep -v '^Z'
 # 300000 points run (stages that cannot stop midway: oracle() does not wait for them).
 if [ -n "$pypath" ] && PYTHONPATH="$pypath" "$py" -c "import dtlab" 2>/dev/null; then
   cat > "$tmp/py_int.py" <<EOF
-import os, signal, sys, threading, time, numpy as np
+import sys, numpy as np
 import dtlab
+from sigint_self import interrupted_within
 n, when, against = int(sys.argv[1]), float(sys.argv[2]), sys.argv[3]
 pts = np.random.default_rng(1).random((n, 3))
-sent = []
-def interrupt():
-    sent.append(time.monotonic())
-    os.kill(os.getpid(), signal.SIGINT)
-threading.Timer(when, interrupt).start()
-try:
-    dtlab.oracle(pts, against=(against,), tetgen="$tmp/slowtg.sh", timeout=30)
-    print("no interrupt")
-except KeyboardInterrupt:
-    late = time.monotonic() - sent[0]
-    print("interrupted %.3f s after the signal" % late)
-    sys.exit(0 if late < 1.0 else 1)
-sys.exit(1)
+sys.exit(interrupted_within(when, 1.0, lambda: dtlab.oracle(pts, against=(against,), tetgen="$tmp/slowtg.sh", timeout=30)))
 EOF
   expect 0 "python oracle() + SIGINT during a peer answers within a second" -- \
-    env PYTHONPATH="$pypath" "$py" "$tmp/py_int.py" 20 1.5 tetgen
+    env PYTHONPATH="$pypath:$(dirname "$0")" "$py" "$tmp/py_int.py" 20 1.5 tetgen
   says "python oracle() raised KeyboardInterrupt" "interrupted 0\.[0-9]+ s after the signal"
   for _ in $(seq 30); do running || break; sleep 0.1; done
   ok "python: no peer left running" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[s]leep 5$mark'; }"
   for when in 0.3 1.5; do
     expect 0 "python oracle() + SIGINT at $when s into the build and check of 300000 points" -- \
-      env PYTHONPATH="$pypath" "$py" "$tmp/py_int.py" 300000 "$when" tetgen
+      env PYTHONPATH="$pypath:$(dirname "$0")" "$py" "$tmp/py_int.py" 300000 "$when" tetgen
     says "python oracle() raised KeyboardInterrupt at $when s" "interrupted 0\.[0-9]+ s after the signal"
   done
   ok "python: no peer left after an interrupted build" bash -c "! { ps -eo stat,args | grep -v '^Z' | grep -q '[s]leep 5$mark'; }"
