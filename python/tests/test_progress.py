@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import dtlab
+from proc_children import children
 
 
 def points(n=20000, seed=3):
@@ -113,14 +114,6 @@ def test_tqdm_bar_reaches_the_total():
         assert isinstance(bar._bar, tqdm.tqdm)
         dtlab.tetrahedralize(points(5000), progress=bar)
         assert bar._bar.n == bar._bar.total == 5000
-
-
-def children():
-    """This process's children but the exit watchdog (kernel/exit_guard.hpp)."""
-    out = subprocess.run(["ps", "-o", "pid=,stat=,comm=", "--ppid", str(os.getpid())], capture_output=True,
-                         text=True).stdout.split("\n")
-    rows = [line.split(None, 2) for line in out if line.strip()]
-    return {int(r[0]): r[2] for r in rows if r[2] != "dtlab-watchdog" and r[2] != "ps" and not r[1].startswith("Z")}
 
 
 def no_child_left(before, seconds=3.0):
@@ -231,15 +224,12 @@ def test_oracle_callback_that_raises_stops_our_build_or_check(stage):
 def test_ctrl_c_with_a_progress_callback_answers_at_once(tmp_path):
     marker = tmp_path / "running"
     script = textwrap.dedent(f"""
-        import numpy as np, os, subprocess, sys, time, dtlab
+        import numpy as np, sys, time, dtlab
+        sys.path.insert(0, {os.path.dirname(__file__)!r})
+        from proc_children import children
         def mark(done, total, stage):
             if stage == "tetgen: running":
                 open({str(marker)!r}, "w").write("x")
-        def children():
-            out = subprocess.run(["ps", "-o", "pid=,stat=,comm=", "--ppid", str(os.getpid())],
-                                 capture_output=True, text=True).stdout.split("\\n")
-            return [l for l in out if l.strip() and "dtlab-watchdog" not in l and " ps" not in l
-                    and not l.split()[1].startswith("Z")]
         try:
             dtlab.oracle(np.random.default_rng(3).random((2000, 3)), against=["tetgen"],
                          tetgen={sleeper(tmp_path)!r}, timeout=600, progress=mark)
@@ -248,7 +238,7 @@ def test_ctrl_c_with_a_progress_callback_answers_at_once(tmp_path):
             deadline = time.monotonic() + 3
             while children() and time.monotonic() < deadline:
                 time.sleep(0.02)
-            print("children:", children(), flush=True)
+            print("children:", list(children()), flush=True)
             sys.exit(7)
     """)
     proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
