@@ -12,6 +12,7 @@
 #include "kernel/ids.hpp"
 #include "kernel/parallel_for.hpp"
 #include "voronoi/cell_buffer.hpp"
+#include "voronoi/cell_check.hpp"
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/dual_cell.hpp"
 #include "voronoi/exact_cell.hpp"
@@ -96,6 +97,34 @@ Box default_box(std::span<const Point3> sites, double margin) {
   return b;
 }
 
+namespace {
+
+// The largest face of `a` whose tag `b` lacks (0 if none).
+double largest_face_missing(const ConvexCell& a, const ConvexCell& b) {
+  double largest = 0;
+  const auto tb = b.face_tags();
+  for (std::size_t f = 0; f < a.face_count(); ++f) {
+    if (std::find(tb.begin(), tb.end(), a.face_tag(f)) != tb.end()) continue;
+    const auto fv = a.face(f);
+    const Point3 o = a.vertices()[fv[0]];
+    Point3 n{0, 0, 0};
+    for (std::size_t k = 1; k + 1 < fv.size(); ++k) n = n + cross(a.vertices()[fv[k]] - o, a.vertices()[fv[k + 1]] - o);
+    largest = std::max(largest, 0.5 * norm(n));
+  }
+  return largest;
+}
+
+bool representable(const ConvexCell& c, double tol) {
+  VoronoiCell view;
+  view.vertices = c.vertices();
+  view.face_offsets = c.face_offsets();
+  view.face_vertices = c.face_vertices();
+  view.face_neighbor = c.face_tags();
+  return c.empty() || check_cell_convex(view, tol, true).empty();
+}
+
+}  // namespace
+
 bool compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t i,
                   std::span<const std::uint32_t> neighbors, const Box& box, double tol, double shrink) {
   const Point3 s = sites[i];
@@ -107,12 +136,28 @@ bool compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t
     cell.clip(n, 0.5 * dot(n, n) - shrink * norm(n), static_cast<std::int32_t>(j), band);
     if (cell.empty()) break;
   }
-  // A side decided inside the band (or the rounding) may be wrong and lose a whole
-  // face of two close sites: redo the cell with exact signs.
   const bool exact = cell.ambiguous() && shrink == 0;
-  if (exact) exact_clip_cell(cell, sites, i, neighbors, box);
   cell.translate(s);
-  return exact;
+  if (!exact) return false;
+  // A side decided inside the band (or the rounding) may be wrong and lose a whole
+  // face of two close sites: redo the cell with exact signs. The exact cell is kept
+  // if its rounded vertices still make planar faces and a convex cell (at half the
+  // Voronoi checker's tolerance); else the band's cell if the two differ only by
+  // faces below kSmallFace of the diagonal squared; else the cell is refused.
+  thread_local ConvexCell exact_cell;
+  exact_clip_cell(exact_cell, sites, i, neighbors, box);
+  exact_cell.translate(s);
+  const double diag = box.diagonal();
+  if (representable(exact_cell, 0.5e-9 * diag)) {
+    cell = exact_cell;
+    return true;
+  }
+  constexpr double kSmallFace = 1e-10;
+  const double off = std::max(largest_face_missing(exact_cell, cell), largest_face_missing(cell, exact_cell));
+  if (off <= kSmallFace * diag * diag) return true;
+  throw std::runtime_error("voronoi: the cell of site " + std::to_string(i) +
+                           " has faces that double precision cannot represent (a face of " +
+                           std::to_string(off / (diag * diag)) + " of the box diagonal squared is lost in rounding)");
 }
 
 namespace {
