@@ -92,8 +92,11 @@ int run_voronoi(const VoronoiArgs& a) {
   if (const std::string why = a.check ? "" : lost_cells_problem(vd); !why.empty()) throw InputError(a.input, 0, why);
   nlohmann::json m = cells_manifest(vd);
   m["input"] = a.input;
-  m["timing"] = {{"seconds_delaunay", vd.seconds_dt}, {"seconds_cells", vd.seconds_cells},
-                 {"clipped_cells", vd.clipped}, {"box_clipped_cells", vd.box_clipped}};
+  m["timing"] = {{"seconds_delaunay", vd.seconds_dt},
+                 {"seconds_cells", vd.seconds_cells},
+                 {"clipped_cells", vd.clipped},
+                 {"exact_clipped_cells", vd.exact_clipped},
+                 {"box_clipped_cells", vd.box_clipped}};
   std::size_t defects = 0;
   if (a.check) {
     const double tol = 1e-9 * vd.box.diagonal();

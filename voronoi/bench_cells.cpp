@@ -41,10 +41,13 @@ int main(int argc, char** argv) {
     const double wall = since(w0), cpu_s = cpu() - c0;
     double vs = 0;
     for (const auto& c : vd.cells) vs += c.volume;
-    std::printf("compute_voronoi threads %u: total %.3f s wall %.3f s CPU; DT %.3f s; cells %.3f s wall %.3f s CPU = %.0f cells/s wall %.0f cells/CPU-s"
-                " (clipped %zu, box-clipped %zu); volume sum - 1 = %.2g\n",
-                th ? th : std::thread::hardware_concurrency(), wall, cpu_s, vd.seconds_dt, vd.seconds_cells,
-                vd.cpu_seconds_cells, n / vd.seconds_cells, n / vd.cpu_seconds_cells, vd.clipped, vd.box_clipped, vs - 1);
+    std::printf(
+        "compute_voronoi threads %u: total %.3f s wall %.3f s CPU; DT %.3f s; cells %.3f s wall %.3f s CPU = %.0f "
+        "cells/s wall %.0f cells/CPU-s"
+        " (clipped %zu, exact %zu, box-clipped %zu); volume sum - 1 = %.2g\n",
+        th ? th : std::thread::hardware_concurrency(), wall, cpu_s, vd.seconds_dt, vd.seconds_cells,
+        vd.cpu_seconds_cells, n / vd.seconds_cells, n / vd.cpu_seconds_cells, vd.clipped, vd.exact_clipped,
+        vd.box_clipped, vs - 1);
   }
 
   if (argc > 4 && std::string(argv[4]) == "only") return 0;  // compute_voronoi alone (profiling)

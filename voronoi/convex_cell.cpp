@@ -1,11 +1,17 @@
 #include "voronoi/convex_cell.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "kernel/ids.hpp"
 
 namespace dtlab::vor {
+
+namespace {
+constexpr double kEps = 0x1p-52;
+double max_abs(const Point3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
+}  // namespace
 
 void ConvexCell::reset(const Box& b) {
   v_.clear();
@@ -22,6 +28,10 @@ void ConvexCell::reset(const Box& b) {
     fo_.push_back(static_cast<std::uint32_t>(fv_.size()));
     face_tag_.push_back(-1 - f);
   }
+  // The corners are rounded once (the box moved by the site).
+  err_.resize(8);
+  for (int k = 0; k < 8; ++k) err_[k] = kEps * max_abs(v_[k]);
+  ambiguous_ = false;
 }
 
 void ConvexCell::assign(std::span<const Point3> vertices, std::span<const std::uint32_t> face_offsets,
@@ -32,18 +42,43 @@ void ConvexCell::assign(std::span<const Point3> vertices, std::span<const std::u
   fo_.assign(face_offsets.begin(), face_offsets.end());
   fv_.assign(face_vertices.begin(), face_vertices.end());
   face_tag_.assign(tags.begin(), tags.end());
+  // The caller's band covers the vertices' own error (circumcentres).
+  err_.resize(v_.size());
+  for (std::size_t k = 0; k < v_.size(); ++k) err_[k] = kEps * max_abs(v_[k]);
+  ambiguous_ = false;
 }
 
-std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out) {
+void ConvexCell::clear() {
+  v_.clear();
+  err_.clear();
+  fv_.clear();
+  fo_.assign(1, 0);
+  face_tag_.clear();
+  src_.clear();
+  cut_tags_.clear();
+}
+
+std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out, std::int32_t face_tag) {
   const std::uint64_t key = (std::uint64_t(in) << 32) | out;
   for (std::size_t i = 0; i < cut_key_.size(); ++i)
-    if (cut_key_[i] == key) return cut_val_[i];
+    if (cut_key_[i] == key) {
+      ncut_tags_[cut_val_[i]].second = face_tag;
+      return cut_val_[i];
+    }
   // Interpolate from the inside end: the same edge seen from its two faces gives
   // the same point bit for bit.
   const double t = d_[in] / (d_[in] - d_[out]);
   const Point3 &a = v_[in], &b = v_[out];
-  nv_.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)});
+  const Point3 p{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)};
+  nv_.push_back(p);
+  // An error e of the ends moves the crossing by e |b - a| |n| / |d_in - d_out| along
+  // the edge: large when the edge meets the plane at a grazing angle.
+  const double grow = norm(b - a) * norm_n_ / std::abs(d_[in] - d_[out]);
+  nerr_.push_back(std::max(err_[in], err_[out]) * (1 + grow) + 4 * kEps * (max_abs(a) + max_abs(b)));
+  ambiguous_ |= nerr_.back() > tol_;  // a vertex off by more than the band
   on_.push_back(1);
+  from_.push_back(kNone);
+  ncut_tags_.push_back({face_tag, face_tag});
   const auto id = static_cast<std::uint32_t>(nv_.size() - 1);
   cut_key_.push_back(key);
   cut_val_.push_back(id);
@@ -54,32 +89,57 @@ bool ConvexCell::clip(const Point3& n, double c, std::int32_t tag, double tol) {
   const std::size_t nv = v_.size();
   d_.resize(nv);
   side_.resize(nv);
-  const double band = tol * norm(n);
-  bool any_out = false, any_in = false;
+  norm_n_ = norm(n);
+  tol_ = tol;
+  const double band = tol * norm_n_;
+  bool doubt = false;
   for (std::size_t i = 0; i < nv; ++i) {
     const double d = dot(n, v_[i]) - c;
     d_[i] = d;
-    const signed char s = d > band ? 1 : (d < -band ? -1 : 0);
-    side_[i] = s;
-    any_out |= s > 0;
-    any_in |= s <= 0;
+    side_[i] = d > band ? 1 : (d < -band ? -1 : 0);
+    // Within the band, or so near that the vertex's own error could flip the side
+    // (|c| rounds too: it is |n|^2 / 2 or a wall coordinate).
+    doubt |= std::abs(d) <= band + norm_n_ * err_[i] + 4 * kEps * (std::abs(c) + norm_n_ * max_abs(v_[i]));
+  }
+  ambiguous_ |= doubt;
+  return apply_sides(tag);
+}
+
+bool ConvexCell::clip_signs(std::span<const signed char> side, std::int32_t tag) {
+  side_.assign(side.begin(), side.end());
+  d_.resize(side_.size());
+  for (std::size_t i = 0; i < side_.size(); ++i) d_[i] = side_[i];  // cuts at midpoints
+  norm_n_ = 0;
+  tol_ = INFINITY;
+  return apply_sides(tag);
+}
+
+bool ConvexCell::apply_sides(std::int32_t tag) {
+  const std::size_t nv = v_.size();
+  bool any_out = false, any_in = false;
+  for (std::size_t i = 0; i < nv; ++i) {
+    any_out |= side_[i] > 0;
+    any_in |= side_[i] <= 0;
   }
   if (!any_out) return false;
   if (!any_in) {
-    v_.clear();
-    fv_.clear();
-    fo_.assign(1, 0);
-    face_tag_.clear();
+    clear();
     return true;
   }
   nv_.clear();
+  nerr_.clear();
   on_.clear();
+  from_.clear();
+  ncut_tags_.clear();
   remap_.resize(nv);
   for (std::size_t i = 0; i < nv; ++i) {
     if (side_[i] <= 0) {
       remap_[i] = static_cast<std::uint32_t>(nv_.size());
       nv_.push_back(v_[i]);
+      nerr_.push_back(err_[i]);
       on_.push_back(side_[i] == 0);
+      from_.push_back(static_cast<std::uint32_t>(i));
+      ncut_tags_.push_back({0, 0});
     }
   }
   cut_key_.clear();
@@ -108,8 +168,10 @@ bool ConvexCell::clip(const Point3& n, double c, std::int32_t tag, double tol) {
       for (std::uint32_t k = 0; k < m; ++k) {
         const std::uint32_t a = fv[k], b = fv[(k + 1) % m];
         if (side_[a] <= 0) poly_.push_back(remap_[a]);
-        if ((side_[a] < 0 && side_[b] > 0)) poly_.push_back(cut_vertex(a, b));
-        else if (side_[a] > 0 && side_[b] < 0) poly_.push_back(cut_vertex(b, a));
+        if ((side_[a] < 0 && side_[b] > 0))
+          poly_.push_back(cut_vertex(a, b, face_tag_[f]));
+        else if (side_[a] > 0 && side_[b] < 0)
+          poly_.push_back(cut_vertex(b, a, face_tag_[f]));
       }
       if (poly_.size() < 3) continue;
     }
@@ -130,28 +192,30 @@ bool ConvexCell::clip(const Point3& n, double c, std::int32_t tag, double tol) {
   std::vector<std::uint32_t>& used = remap_;
   used.assign(nv_.size(), kNone);
   v_.clear();
+  err_.clear();
+  src_.clear();
+  cut_tags_.clear();
   for (auto& i : nfv_) {
     if (used[i] == kNone) {
       used[i] = static_cast<std::uint32_t>(v_.size());
       v_.push_back(nv_[i]);
+      err_.push_back(nerr_[i]);
+      src_.push_back(from_[i]);
+      cut_tags_.push_back(ncut_tags_[i]);
     }
     i = used[i];
   }
   std::swap(fv_, nfv_);
   std::swap(fo_, nfo_);
   std::swap(face_tag_, nface_tag_);
-  if (face_tag_.size() < 4) {
-    v_.clear();
-    fv_.clear();
-    fo_.assign(1, 0);
-    face_tag_.clear();
-  }
+  if (face_tag_.size() < 4) clear();
   return true;
 }
 
 // Chains the on-plane edges into the new face; falls back to sorting the on-plane
 // vertices by angle if the chain is not one simple loop (only inside the band).
 void ConvexCell::build_cap(std::int32_t tag) {
+  cap_sorted_ = false;
   const std::size_t k = cap_from_.size();
   if (k < 3) return;
   poly_.clear();
@@ -173,6 +237,7 @@ void ConvexCell::build_cap(std::int32_t tag) {
     }
   }
   if (!ok || cur != cap_from_[0]) {
+    cap_sorted_ = true;
     poly_.assign(cap_from_.begin(), cap_from_.end());
     std::sort(poly_.begin(), poly_.end());
     poly_.erase(std::unique(poly_.begin(), poly_.end()), poly_.end());
@@ -231,6 +296,7 @@ Point3 ConvexCell::centroid() const {
 
 void ConvexCell::translate(const Point3& t) {
   for (auto& p : v_) p = p + t;
+  for (std::size_t k = 0; k < v_.size(); ++k) err_[k] += kEps * max_abs(v_[k]);
 }
 
 }  // namespace dtlab::vor

@@ -10,8 +10,16 @@
 // making a zero-length edge. A clip with no vertex strictly outside changes nothing.
 // The new face is chained from the polygon edges that lie on the plane (each such
 // edge a->b of a kept face contributes b->a), so the result stays closed.
+//
+// A band decision can be wrong: a vertex at 1e-12 from the plane, exactly outside,
+// kept as "on" loses a whole face of a close pair of sites. So clip() also bounds
+// each vertex's error (grown at every cut by how obliquely the edge meets the plane)
+// and flags the cell ambiguous() when a vertex lies within band plus error of a
+// plane: the caller then recomputes it exactly (voronoi/exact_cell.hpp), which
+// drives the same topology through clip_signs() with exact signs.
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "voronoi/box.hpp"
@@ -31,6 +39,18 @@ class ConvexCell {
 
   // Keeps the part with n.x <= c; the new face gets `tag`. Returns true if it cut.
   bool clip(const Point3& n, double c, std::int32_t tag, double tol);
+  // The same clip with each vertex's side given (-1 in, 0 on, 1 out; exact callers).
+  // New vertices are provisional midpoints, to be placed with set_vertex.
+  bool clip_signs(std::span<const signed char> side, std::int32_t tag);
+  // Some clip since reset/assign decided a side within its band or error bound.
+  bool ambiguous() const { return ambiguous_; }
+  // After a clip that cut: per vertex the old vertex it was (kNone for a new one) and,
+  // for a new one, the tags of the two faces whose edge it cut.
+  std::span<const std::uint32_t> kept_from() const { return src_; }
+  std::pair<std::int32_t, std::int32_t> cut_faces(std::size_t v) const { return cut_tags_[v]; }
+  void set_vertex(std::size_t v, const Point3& p) { v_[v] = p; }
+  // The last clip's new face was ordered by angle (its on-plane edges made no loop).
+  bool cap_sorted() const { return cap_sorted_; }
 
   bool empty() const { return face_tag_.size() < 4; }
   std::size_t vertex_count() const { return v_.size(); }
@@ -51,13 +71,20 @@ class ConvexCell {
   void translate(const Point3& t);
 
  private:
-  std::uint32_t cut_vertex(std::uint32_t in, std::uint32_t out);
+  bool apply_sides(std::int32_t tag);
+  std::uint32_t cut_vertex(std::uint32_t in, std::uint32_t out, std::int32_t face_tag);
   void build_cap(std::int32_t tag);
+  void clear();
 
   std::vector<Point3> v_, nv_;
   std::vector<std::uint32_t> fv_, nfv_, fo_, nfo_;
   std::vector<std::int32_t> face_tag_, nface_tag_;
   std::vector<double> d_;
+  std::vector<double> err_, nerr_;  // bound on each vertex's position error
+  double norm_n_ = 0, tol_ = 0;     // |n| and band of the clip in progress
+  bool ambiguous_ = false, cap_sorted_ = false;
+  std::vector<std::uint32_t> from_, src_;  // new (then final) vertex -> old one
+  std::vector<std::pair<std::int32_t, std::int32_t>> ncut_tags_, cut_tags_;
   std::vector<signed char> side_;
   std::vector<std::uint32_t> remap_;
   std::vector<char> on_;                        // new vertex lies on the clip plane

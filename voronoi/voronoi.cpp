@@ -10,10 +10,12 @@
 #include <stdexcept>
 
 #include "kernel/ids.hpp"
+#include "kernel/parallel_for.hpp"
 #include "voronoi/cell_buffer.hpp"
+#include "voronoi/cell_check.hpp"
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/dual_cell.hpp"
-#include "kernel/parallel_for.hpp"
+#include "voronoi/exact_cell.hpp"
 
 namespace dtlab {
 
@@ -95,9 +97,36 @@ Box default_box(std::span<const Point3> sites, double margin) {
   return b;
 }
 
-void compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t i,
-                  std::span<const std::uint32_t> neighbors, const Box& box, double tol,
-                  double shrink) {
+namespace {
+
+// The largest face of `a` whose tag `b` lacks (0 if none).
+double largest_face_missing(const ConvexCell& a, const ConvexCell& b) {
+  double largest = 0;
+  const auto tb = b.face_tags();
+  for (std::size_t f = 0; f < a.face_count(); ++f) {
+    if (std::find(tb.begin(), tb.end(), a.face_tag(f)) != tb.end()) continue;
+    const auto fv = a.face(f);
+    const Point3 o = a.vertices()[fv[0]];
+    Point3 n{0, 0, 0};
+    for (std::size_t k = 1; k + 1 < fv.size(); ++k) n = n + cross(a.vertices()[fv[k]] - o, a.vertices()[fv[k + 1]] - o);
+    largest = std::max(largest, 0.5 * norm(n));
+  }
+  return largest;
+}
+
+bool representable(const ConvexCell& c, double tol) {
+  VoronoiCell view;
+  view.vertices = c.vertices();
+  view.face_offsets = c.face_offsets();
+  view.face_vertices = c.face_vertices();
+  view.face_neighbor = c.face_tags();
+  return c.empty() || check_cell_convex(view, tol, true).empty();
+}
+
+}  // namespace
+
+bool compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t i,
+                  std::span<const std::uint32_t> neighbors, const Box& box, double tol, double shrink) {
   const Point3 s = sites[i];
   cell.reset({box.lo - s, box.hi - s});
   const double band = tol * box.diagonal();
@@ -107,7 +136,28 @@ void compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t
     cell.clip(n, 0.5 * dot(n, n) - shrink * norm(n), static_cast<std::int32_t>(j), band);
     if (cell.empty()) break;
   }
+  const bool exact = cell.ambiguous() && shrink == 0;
   cell.translate(s);
+  if (!exact) return false;
+  // A side decided inside the band (or the rounding) may be wrong and lose a whole
+  // face of two close sites: redo the cell with exact signs. The exact cell is kept
+  // if its rounded vertices still make planar faces and a convex cell (at half the
+  // Voronoi checker's tolerance); else the band's cell if the two differ only by
+  // faces below kSmallFace of the diagonal squared; else the cell is refused.
+  thread_local ConvexCell exact_cell;
+  exact_clip_cell(exact_cell, sites, i, neighbors, box);
+  exact_cell.translate(s);
+  const double diag = box.diagonal();
+  if (representable(exact_cell, 0.5e-9 * diag)) {
+    cell = exact_cell;
+    return true;
+  }
+  constexpr double kSmallFace = 1e-10;
+  const double off = std::max(largest_face_missing(exact_cell, cell), largest_face_missing(cell, exact_cell));
+  if (off <= kSmallFace * diag * diag) return true;
+  throw std::runtime_error("voronoi: the cell of site " + std::to_string(i) +
+                           " has faces that double precision cannot represent (a face of " +
+                           std::to_string(off / (diag * diag)) + " of the box diagonal squared is lost in rounding)");
 }
 
 namespace {
@@ -225,7 +275,7 @@ void all_pairs_cells(std::span<const Point3> sites, const std::vector<std::int64
     for (std::uint32_t w = 0; w < sites.size(); ++w)
       if (w != v && dup[w] < 0) row.push_back(w);
     sort_by_distance(sites, v, row);
-    compute_cell(cell, sites, v, row, vd.box, o.tolerance, o.shrink);
+    vd.exact_clipped += compute_cell(cell, sites, v, row, vd.box, o.tolerance, o.shrink);
     store(storage->front(), cell, vd.cells[v]);
   }
   vd.storage = std::move(storage);
@@ -303,20 +353,22 @@ struct CellScratch {
   CellArena arena;
 };
 
-// The box walls a dual cell crosses strictly (beyond the band): bit 2k the low wall of
-// axis k, bit 2k+1 the high one.
+// The box walls a dual cell crosses or comes within the band of (where the clip
+// decides whether it crosses): bit 2k the low wall of axis k, bit 2k+1 the high one.
 int crossed_walls(const CellBuffer& buf, const Box& box, double band) {
   int walls = 0;
   for (const auto& p : buf.vertices) {
-    walls |= (p.x < box.lo.x - band) << 0 | (p.x > box.hi.x + band) << 1;
-    walls |= (p.y < box.lo.y - band) << 2 | (p.y > box.hi.y + band) << 3;
-    walls |= (p.z < box.lo.z - band) << 4 | (p.z > box.hi.z + band) << 5;
+    walls |= (p.x < box.lo.x + band) << 0 | (p.x > box.hi.x - band) << 1;
+    walls |= (p.y < box.lo.y + band) << 2 | (p.y > box.hi.y - band) << 3;
+    walls |= (p.z < box.lo.z + band) << 4 | (p.z > box.hi.z - band) << 5;
   }
   return walls;
 }
 
-// The dual cell in `sc.buffer` (site s) clipped by the walls it crosses, into `out`.
-void clip_dual_to_walls(CellScratch& sc, const Point3& s, int walls, const Box& box, double tolerance,
+// The dual cell in `sc.buffer` (site s) clipped by the walls it crosses, into `out`;
+// false (nothing stored) when a wall decision was ambiguous: the caller clips the
+// cell from its neighbours instead, with its exact fallback.
+bool clip_dual_to_walls(CellScratch& sc, const Point3& s, int walls, const Box& box, double tolerance,
                         VoronoiCell& out) {
   ConvexCell& cell = sc.cell;
   const CellBuffer& buf = sc.buffer;
@@ -328,12 +380,14 @@ void clip_dual_to_walls(CellScratch& sc, const Point3& s, int walls, const Box& 
     if (walls >> (2 * k) & 1) cell.clip(-1 * axis[k], -los[k], -1 - 2 * k, tolerance * box.diagonal());
     if (walls >> (2 * k + 1) & 1) cell.clip(axis[k], his[k], -2 - 2 * k, tolerance * box.diagonal());
   }
+  if (cell.ambiguous()) return false;
   cell.translate(s);
   store(sc.arena, cell, out);
+  return true;
 }
 
 // What stage 5 did with one cell.
-enum class CellPath { duplicate, dual, dual_box_clipped, clipped };
+enum class CellPath { duplicate, dual, dual_box_clipped, clipped, clipped_exact };
 
 // Stage 5, one cell (rank rk): the dual of its star when it can be trusted (clipped by
 // the box walls it crosses), else clipped from the bisectors of its DT neighbours.
@@ -359,16 +413,16 @@ CellPath one_cell(std::size_t rk, std::span<const Point3> sites, const std::vect
       store(scratch.arena, buf.vertices, buf.face_offsets, buf.face_vertices, buf.face_neighbor, out);
       return CellPath::dual;
     }
-    clip_dual_to_walls(scratch, s, walls, vd.box, o.tolerance, out);
-    return CellPath::dual_box_clipped;
+    if (clip_dual_to_walls(scratch, s, walls, vd.box, o.tolerance, out)) return CellPath::dual_box_clipped;
+  } else if (!dual_ok) {
+    scratch.builder.gather(r, st, dt.tets, sc.bad);
   }
-  if (!dual_ok) scratch.builder.gather(r, st, dt.tets, sc.bad);
   scratch.row.clear();
   for (auto w : scratch.builder.neighbors()) scratch.row.push_back(dt.order[w]);
   sort_by_distance(sites, i, scratch.row);
-  compute_cell(scratch.cell, sites, i, scratch.row, vd.box, o.tolerance, o.shrink);
+  const bool exact = compute_cell(scratch.cell, sites, i, scratch.row, vd.box, o.tolerance, o.shrink);
   store(scratch.arena, scratch.cell, out);
-  return CellPath::clipped;
+  return exact ? CellPath::clipped_exact : CellPath::clipped;
 }
 
 // Stage 5: every cell, in rank order, in chunks over the threads; the cells' storage
@@ -376,20 +430,22 @@ CellPath one_cell(std::size_t rk, std::span<const Point3> sites, const std::vect
 void dual_cells(std::span<const Point3> sites, const std::vector<std::int64_t>& dup, const RankedDelaunay& dt,
                 const StarsAndCentres& sc, const VoronoiOptions& o, unsigned threads, VoronoiDiagram& vd) {
   const double band = o.tolerance * vd.box.diagonal();
-  std::atomic<std::size_t> clipped{0}, box_clipped{0};
+  std::atomic<std::size_t> clipped{0}, box_clipped{0}, exact{0};
   std::vector<std::unique_ptr<CellScratch>> scratch(threads);
   parallel_chunks(sites.size(), threads, 256, [&](std::size_t b, std::size_t e, unsigned w) {
     if (!scratch[w]) scratch[w] = std::make_unique<CellScratch>(sites.size());
-    std::size_t n_clip = 0, n_box = 0;
+    std::size_t n_clip = 0, n_box = 0, n_exact = 0;
     for (std::size_t k = b; k < e; ++k) {
       // The cells are stored by site id, in no spatial order: fetch the next one early.
       if (k + 1 < e) __builtin_prefetch(&vd.cells[dt.order[k + 1]], 1);
       const CellPath path = one_cell(k, sites, dup, dt, sc, o, band, *scratch[w], vd);
-      n_clip += path == CellPath::clipped;
+      n_clip += path == CellPath::clipped || path == CellPath::clipped_exact;
+      n_exact += path == CellPath::clipped_exact;
       n_box += path == CellPath::dual_box_clipped;
     }
     clipped += n_clip;
     box_clipped += n_box;
+    exact += n_exact;
   });
   auto storage = std::make_shared<std::vector<CellArena>>();
   for (auto& s : scratch)
@@ -397,6 +453,7 @@ void dual_cells(std::span<const Point3> sites, const std::vector<std::int64_t>& 
   vd.storage = std::move(storage);
   vd.clipped = clipped;
   vd.box_clipped = box_clipped;
+  vd.exact_clipped = exact;
 }
 
 }  // namespace

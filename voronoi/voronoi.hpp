@@ -62,6 +62,7 @@ struct VoronoiDiagram {
   std::size_t tets = 0;
   std::size_t clipped = 0;          // cells built by clipping (hull sites, doubtful duals, shrink)
   std::size_t box_clipped = 0;      // dual cells then clipped by the box walls
+  std::size_t exact_clipped = 0;    // clipped cells redone exactly (vor::exact_clip_cell)
   double seconds_dt = 0, seconds_cells = 0;  // wall time
   double cpu_seconds_cells = 0;              // process CPU time of the cell phase (all threads)
 };
@@ -82,9 +83,10 @@ vor::Box default_box(std::span<const Point3> sites, double margin);
 // The cell of site i: `cell` is reset to the box and clipped (in coordinates
 // relative to the site, then translated back). `shrink` > 0 moves every bisector
 // plane that distance towards the site (a gap of 2*shrink between neighbours).
-void compute_cell(vor::ConvexCell& cell, std::span<const Point3> sites, std::uint32_t i,
-                  std::span<const std::uint32_t> neighbors, const vor::Box& box, double tol,
-                  double shrink = 0);
+// Without shrink, a cell whose double clip was ambiguous is redone with exact signs
+// (voronoi/exact_cell.hpp); returns whether it was.
+bool compute_cell(vor::ConvexCell& cell, std::span<const Point3> sites, std::uint32_t i,
+                  std::span<const std::uint32_t> neighbors, const vor::Box& box, double tol, double shrink = 0);
 
 // Throws std::invalid_argument on an empty input; fewer than four
 // or coplanar sites fall back to all-pairs clipping (quadratic, fine for small inputs).
