@@ -114,13 +114,72 @@ double largest_face_missing(const ConvexCell& a, const ConvexCell& b) {
   return largest;
 }
 
-bool representable(const ConvexCell& c, double tol) {
+// Whether an edge of `c` joins two vertices that rounded to the same point.
+bool has_collapsed_edge(const ConvexCell& c) {
+  for (std::size_t f = 0; f < c.face_count(); ++f) {
+    const auto fv = c.face(f);
+    for (std::size_t k = 0; k < fv.size(); ++k) {
+      const Point3 &a = c.vertices()[fv[k]], &b = c.vertices()[fv[(k + 1) % fv.size()]];
+      if (a.x == b.x && a.y == b.y && a.z == b.z) return true;
+    }
+  }
+  return false;
+}
+
+VoronoiCell view_of(const ConvexCell& c) {
   VoronoiCell view;
   view.vertices = c.vertices();
   view.face_offsets = c.face_offsets();
   view.face_vertices = c.face_vertices();
   view.face_neighbor = c.face_tags();
-  return c.empty() || check_cell_convex(view, tol, true).empty();
+  return view;
+}
+
+// Whether `c`, rounded to doubles, is still a cell, as the Voronoi checker judges one:
+// no edge collapsed (an exact edge of 1e-17 at a box corner rounds to zero length),
+// closed, planar faces and convex within `tol` (faces below tol^2, whose plane
+// rounding does not define, left out).
+bool representable(const ConvexCell& c, double tol) {
+  if (c.empty()) return true;
+  if (has_collapsed_edge(c)) return false;
+  const VoronoiCell view = view_of(c);
+  return check_cell_closed(view).empty() && check_cell_convex(view, tol, true).empty();
+}
+
+// Whether `c` passes `dtlab voronoi --check`'s cell check at `tol` (no edge shorter,
+// no face smaller than tol^2, planar, convex).
+bool clean(const ConvexCell& c, double tol) { return c.empty() || check_cell(view_of(c), tol).empty(); }
+
+// Whether every vertex of `a` lies within `tol` of a vertex of `b`.
+bool vertices_near(const ConvexCell& a, const ConvexCell& b, double tol) {
+  for (const Point3& p : a.vertices()) {
+    const auto& bv = b.vertices();
+    if (std::none_of(bv.begin(), bv.end(), [&](const Point3& q) { return norm(p - q) <= tol; })) return false;
+  }
+  return true;
+}
+
+enum class CellChoice { exact, band, refused };
+
+// Which of the exact cell and the band's cell an ambiguous cell keeps, in order:
+// - the exact one when it passes the cell check at half `--check`'s tolerance (1e-9 of
+//   the diagonal): no short edge, no tiny face, planar, convex;
+// - the band's when the two differ only by faces below kSmallFace of the diagonal
+//   squared, the band's is closed, planar and convex and its vertices lie where
+//   exact ones are (a grazing cut can move a band vertex by more than the Voronoi
+//   checker's 1e-9);
+// - the exact one when it survives rounding (its short edges are real);
+// - the band's when the two differ only by faces below kSmallFace;
+// - neither. `off` is set to the largest face on which the two differ.
+CellChoice choose_cell(const ConvexCell& band, const ConvexCell& exact, double diag, double& off) {
+  constexpr double kSmallFace = 1e-10;
+  const double tol = 0.5e-9 * diag;
+  off = std::max(largest_face_missing(exact, band), largest_face_missing(band, exact));
+  const bool small = off <= kSmallFace * diag * diag;
+  if (clean(exact, tol)) return CellChoice::exact;
+  if (small && vertices_near(band, exact, tol) && representable(band, tol)) return CellChoice::band;
+  if (representable(exact, tol)) return CellChoice::exact;
+  return small ? CellChoice::band : CellChoice::refused;
 }
 
 }  // namespace
@@ -140,21 +199,18 @@ bool compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t
   cell.translate(s);
   if (!exact) return false;
   // A side decided inside the band (or the rounding) may be wrong and lose a whole
-  // face of two close sites: redo the cell with exact signs. The exact cell is kept
-  // if its rounded vertices still make planar faces and a convex cell (at half the
-  // Voronoi checker's tolerance); else the band's cell if the two differ only by
-  // faces below kSmallFace of the diagonal squared; else the cell is refused.
+  // face of two close sites: redo the cell with exact signs and keep what
+  // choose_cell says.
   thread_local ConvexCell exact_cell;
   exact_clip_cell(exact_cell, sites, i, neighbors, box);
   exact_cell.translate(s);
-  const double diag = box.diagonal();
-  if (representable(exact_cell, 0.5e-9 * diag)) {
-    cell = exact_cell;
-    return true;
+  double off = 0;
+  switch (choose_cell(cell, exact_cell, box.diagonal(), off)) {
+    case CellChoice::exact: cell = exact_cell; return true;
+    case CellChoice::band: return true;
+    case CellChoice::refused: break;
   }
-  constexpr double kSmallFace = 1e-10;
-  const double off = std::max(largest_face_missing(exact_cell, cell), largest_face_missing(cell, exact_cell));
-  if (off <= kSmallFace * diag * diag) return true;
+  const double diag = box.diagonal();
   throw std::runtime_error("voronoi: the cell of site " + std::to_string(i) +
                            " has faces that double precision cannot represent (a face of " +
                            std::to_string(off / (diag * diag)) + " of the box diagonal squared is lost in rounding)");
