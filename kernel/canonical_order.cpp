@@ -223,7 +223,7 @@ void insertion_sort(Tet* first, Tet* last) {
 // tried instead of the insertion sort's mispredicted exits, was slower.)
 void sort_run(Tet* first, Tet* last) {
   if (last - first > 32)
-    std::sort(first, last, tail_less);
+    std::sort(first, last, [](const Tet& a, const Tet& b) { return tail_less(a, b); });
   else
     insertion_sort(first, last);
 }
