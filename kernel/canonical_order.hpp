@@ -24,12 +24,13 @@ void canonical_order(std::vector<Tet>& tets, std::size_t points, unsigned thread
 // The finite live tets among records[0, size) (vertex ids below n are finite), each
 // rotated and the list sorted as canonical_order does, on the vertex ids; then every id v
 // translated to order[v]. A function of the tet set and the ids only, so a parallel build
-// returns the same array at every thread count and in every run. The records' pages are
-// handed back as they are read (the caller frees the buffer). A serial compaction of the
-// rotated tets (the records' pages released as it goes, so the peak stays the mesh's), then
-// three parallel passes: count per (chunk, bucket of first ids), scatter into the buckets
-// (a second array: with the first, 32 bytes per tet, no more than the records took), sort
-// and translate each bucket.
+// returns the same array at every thread count and in every run. The records are
+// overwritten and their pages handed back (the caller frees the buffer). Three parallel
+// passes, no copy beside the output: each chunk of records compacted in place (rotated,
+// 16 bytes per tet at the chunk's start) and counted per bucket of first ids, the rest of
+// its pages released; the output allocated and each chunk scattered into its buckets, its
+// pages released; each bucket sorted (a counting sort on the first id, then each run) and
+// translated. Peak: the records' pages, not the records plus the output.
 void compact_canonical(TetRecord* records, std::size_t size, std::uint32_t n, const std::vector<std::uint32_t>& order,
                        std::vector<Tet>& out, unsigned threads);
 

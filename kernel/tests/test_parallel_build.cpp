@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 
 #include "delaunay_check.hpp"
@@ -110,6 +111,102 @@ TEST_CASE("canonical tets: the smallest vertex first, the orientation kept", "[t
     even += inversions % 2 == 0;
   } while (std::next_permutation(perm.begin(), perm.end()));
   CHECK(even == 12);
+}
+
+namespace {
+
+// canonical_tet's definition, kept here as the reference of its table-driven version.
+Tet canonical_by_definition(Tet r) {
+  int m = 0;
+  for (int i = 1; i < 4; ++i)
+    if (r[i] < r[m]) m = i;
+  if (m != 0) {
+    std::swap(r[0], r[m]);
+    std::swap(r[m == 1 ? 2 : 1], r[m == 3 ? 2 : 3]);
+  }
+  if (r[2] < r[1] && r[2] < r[3]) return {r[0], r[2], r[3], r[1]};
+  if (r[3] < r[1] && r[3] < r[2]) return {r[0], r[3], r[1], r[2]};
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("canonical tets: the table gives the definition's rotation, equal ids included", "[threads]") {
+  for (std::uint32_t code = 0; code < 256; ++code) {
+    const Tet t = {code & 3, code >> 2 & 3, code >> 4 & 3, code >> 6 & 3};
+    INFO(t[0] << t[1] << t[2] << t[3]);
+    CHECK(canonical_tet(t) == canonical_by_definition(t));
+  }
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 10000; ++i) {
+    const Tet t = {std::uint32_t(rng()), std::uint32_t(rng()), std::uint32_t(rng()), std::uint32_t(rng())};
+    CHECK(canonical_tet(t) == canonical_by_definition(t));
+  }
+}
+
+namespace {
+
+// compact_canonical's stages (chunks compacted in place, buckets, runs sorted) against the
+// plain definition: every finite record rotated, the list sorted, the ids translated.
+std::vector<Tet> compact_reference(const std::vector<TetRecord>& records, std::uint32_t n,
+                                   const std::vector<std::uint32_t>& order) {
+  std::vector<Tet> tets;
+  for (const TetRecord& r : records)
+    if (r.v[0] < n && r.v[1] < n && r.v[2] < n && r.v[3] < n)
+      tets.push_back(canonical_tet({r.v[0], r.v[1], r.v[2], r.v[3]}));
+  std::sort(tets.begin(), tets.end());
+  for (Tet& t : tets)
+    for (std::uint32_t& v : t) v = order[v];
+  return tets;
+}
+
+// Records of n ids drawn by `draw`, one in 20 dead and one in 50 with the infinite vertex n.
+template <class Draw>
+std::vector<TetRecord> synthetic_records(std::size_t size, std::uint32_t n, std::uint64_t seed, Draw draw) {
+  std::mt19937_64 rng(seed);
+  std::vector<TetRecord> records(size);
+  for (TetRecord& r : records) {
+    for (std::uint32_t& v : r.v) v = draw(rng);
+    if (rng() % 20 == 0) r.v[0] = kNone;
+    if (rng() % 50 == 0) r.v[rng() % 4] = n;
+  }
+  return records;
+}
+
+}  // namespace
+
+TEST_CASE("compact_canonical: the definition's array at every thread count, whatever the records", "[threads]") {
+  struct Case {
+    const char* name;
+    std::size_t size;
+    std::uint32_t n;
+    bool skewed;  // every tet holds vertex 0: one run of all of them (std::sort, a bucket sorted in place)
+  };
+  for (const Case& c : {Case{"empty", 0, 5, false}, Case{"one record", 1, 5, false}, Case{"few ids", 3000, 5, false},
+                        Case{"one chunk", 20000, 3000, false}, Case{"many chunks", 400000, 60000, false},
+                        Case{"one long run", 1200000, 3000, true}}) {
+    INFO(c.name);
+    std::mt19937_64 rng(c.size);
+    std::vector<std::uint32_t> order(c.n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::shuffle(order.begin(), order.end(), rng);
+    // Distinct ids, or any (equal ids: the definition's rotation; equal tails: the fourth id decides).
+    const auto draw = [&](std::mt19937_64& g) { return std::uint32_t(g() % c.n); };
+    std::vector<TetRecord> records = synthetic_records(c.size, c.n, c.size + 1, draw);
+    if (c.skewed)
+      for (TetRecord& r : records)
+        if (r.v[0] != kNone) r.v[1 + r.v[1] % 3] = 0;
+    const std::vector<Tet> want = compact_reference(records, c.n, order);
+    for (unsigned threads : {1u, 2u, 3u, 4u, 8u}) {
+      INFO("threads " << threads);
+      std::vector<TetRecord> copy = records;  // compact_canonical overwrites the records
+      std::vector<Tet> got = {{9, 9, 9, 9}};  // replaced, not appended to
+      compact_canonical(copy.data(), copy.size(), c.n, order, got, threads);
+      const bool same = got == want;  // as a bool: Catch would print a million tets
+      INFO("tets " << got.size() << ", expected " << want.size());
+      REQUIRE(same);
+    }
+  }
 }
 
 TEST_CASE("parallel build: uniform points, the serial build's tets at 2, 3, 4, 8 threads", "[threads]") {
