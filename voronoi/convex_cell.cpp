@@ -11,7 +11,50 @@ namespace dtlab::vor {
 namespace {
 constexpr double kEps = 0x1p-52;
 double max_abs(const Point3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
+double l1(const Point3& p) { return std::abs(p.x) + std::abs(p.y) + std::abs(p.z); }
+
+// The same plane scaled by a power of two (exactly) to a largest normal component in
+// [1, 2), so that the products of meet_error stay in range.
+ClipPlane normalised(const ClipPlane& p) {
+  const int e = std::ilogb(max_abs(p.n));
+  return {{std::ldexp(p.n.x, -e), std::ldexp(p.n.y, -e), std::ldexp(p.n.z, -e)}, std::ldexp(p.c, -e)};
+}
 }  // namespace
+
+// fl(n.x - c) is off by at most 2.5 eps |n|_1 |x|_inf + 0.5 eps |c| from n.x - c (eps =
+// 2^-52, two products and sums, one subtraction), n from n* by eps/2 per component and
+// c from c* by 2.5 eps |c| (a bisector's |n|^2 / 2; a wall's 0.5 eps |c|).
+double plane_error(const ClipPlane& p, const Point3& x) { return 4 * kEps * (l1(p.n) * max_abs(x) + std::abs(p.c)); }
+
+// With N the exact normals as rows and r* the exact residuals N x - c, x - x* = N^-1 r*,
+// and column i of N^-1 is n_j x n_k / det N ((i, j, k) cyclic). Bounds in doubles: the
+// residual by its value plus plane_error, each cross product by its value plus what
+// rounding and the normals' error can change it by, det N from below likewise (each of
+// its six terms within 4.5 eps of its value, their sum at most the product of the l1
+// norms); the final factor covers rounding in the bound itself.
+double meet_error(const ClipPlane& p, const ClipPlane& q, const ClipPlane& r, const Point3& x) {
+  const ClipPlane pl[3] = {normalised(p), normalised(q), normalised(r)};
+  const Point3 col[3] = {cross(pl[1].n, pl[2].n), cross(pl[2].n, pl[0].n), cross(pl[0].n, pl[1].n)};
+  const double l[3] = {l1(pl[0].n), l1(pl[1].n), l1(pl[2].n)};
+  const double det_lo = std::abs(dot(pl[0].n, col[0])) - 8 * kEps * l[0] * l[1] * l[2];
+  if (!(det_lo > 0)) return INFINITY;
+  double sum = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double res = std::abs(dot(pl[i].n, x) - pl[i].c) + plane_error(pl[i], x);
+    sum += res * (norm(col[i]) + 4 * kEps * l[(i + 1) % 3] * l[(i + 2) % 3]);
+  }
+  const double e = sum / det_lo * (1 + 32 * kEps);
+  return e <= INFINITY ? e : INFINITY;  // NaN: no bound
+}
+
+namespace {
+// side_error with |n| given: |n*| <= (1 + eps) |n|, and norm() rounds.
+double side_error(const ClipPlane& p, double norm_n, const Point3& x, double err) {
+  return (1 + 2 * kEps) * norm_n * err + plane_error(p, x);
+}
+}  // namespace
+
+double side_error(const ClipPlane& p, const Point3& x, double err) { return side_error(p, norm(p.n), x, err); }
 
 void ConvexCell::reset(const Box& b) {
   v_.clear();
@@ -23,14 +66,26 @@ void ConvexCell::reset(const Box& b) {
   fv_.clear();
   fo_.assign(1, 0);
   face_tag_.clear();
+  face_plane_.clear();
+  planes_.clear();
+  const double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
   for (int f = 0; f < 6; ++f) {
     fv_.insert(fv_.end(), quads[f], quads[f] + 4);
     fo_.push_back(static_cast<std::uint32_t>(fv_.size()));
     face_tag_.push_back(-1 - f);
+    face_plane_.push_back(static_cast<std::uint32_t>(f));
+    // Wall f: -x_k <= -lo_k or x_k <= hi_k, k = f / 2.
+    const double sign = f % 2 ? 1 : -1;
+    Point3 n{0, 0, 0};
+    (f < 2 ? n.x : f < 4 ? n.y : n.z) = sign;
+    planes_.push_back({n, f % 2 ? hi[f / 2] : -lo[f / 2]});
   }
-  // The corners are rounded once (the box moved by the site).
   err_.resize(8);
-  for (int k = 0; k < 8; ++k) err_[k] = kEps * max_abs(v_[k]);
+  vplanes_.resize(8);
+  for (std::uint32_t k = 0; k < 8; ++k) {
+    vplanes_[k] = {k & 1, 2 + (k >> 1 & 1), 4 + (k >> 2 & 1)};
+    err_[k] = meet_error(planes_[vplanes_[k][0]], planes_[vplanes_[k][1]], planes_[vplanes_[k][2]], v_[k]);
+  }
   ambiguous_ = false;
 }
 
@@ -42,9 +97,12 @@ void ConvexCell::assign(std::span<const Point3> vertices, std::span<const std::u
   fo_.assign(face_offsets.begin(), face_offsets.end());
   fv_.assign(face_vertices.begin(), face_vertices.end());
   face_tag_.assign(tags.begin(), tags.end());
+  face_plane_.assign(face_tag_.size(), kNone);
+  planes_.clear();
   // The caller's band covers the vertices' own error (circumcentres).
   err_.resize(v_.size());
   for (std::size_t k = 0; k < v_.size(); ++k) err_[k] = kEps * max_abs(v_[k]);
+  vplanes_.assign(v_.size(), {kNone, kNone, kNone});
   ambiguous_ = false;
 }
 
@@ -54,15 +112,19 @@ void ConvexCell::clear() {
   fv_.clear();
   fo_.assign(1, 0);
   face_tag_.clear();
+  face_plane_.clear();
+  vplanes_.clear();
   src_.clear();
   cut_tags_.clear();
 }
 
-std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out, std::int32_t face_tag) {
+std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out, std::size_t face) {
+  const std::int32_t face_tag = face_tag_[face];
   const std::uint64_t key = (std::uint64_t(in) << 32) | out;
   for (std::size_t i = 0; i < cut_key_.size(); ++i)
     if (cut_key_[i] == key) {
       ncut_tags_[cut_val_[i]].second = face_tag;
+      nvplanes_[cut_val_[i]][1] = face_plane_[face];
       return cut_val_[i];
     }
   // Interpolate from the inside end: the same edge seen from its two faces gives
@@ -72,13 +134,14 @@ std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out, std::i
   const Point3 p{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)};
   nv_.push_back(p);
   // An error e of the ends moves the crossing by e |b - a| |n| / |d_in - d_out| along
-  // the edge: large when the edge meets the plane at a grazing angle.
+  // the edge: large when the edge meets the plane at a grazing angle (the bound where
+  // the planes are unknown; bound_new_vertices replaces it where they are known).
   const double grow = norm(b - a) * norm_n_ / std::abs(d_[in] - d_[out]);
   nerr_.push_back(std::max(err_[in], err_[out]) * (1 + grow) + 4 * kEps * (max_abs(a) + max_abs(b)));
-  ambiguous_ |= nerr_.back() > tol_;  // a vertex off by more than the band
   on_.push_back(1);
   from_.push_back(kNone);
   ncut_tags_.push_back({face_tag, face_tag});
+  nvplanes_.push_back({face_plane_[face], face_plane_[face], plane_});
   const auto id = static_cast<std::uint32_t>(nv_.size() - 1);
   cut_key_.push_back(key);
   cut_val_.push_back(id);
@@ -92,17 +155,22 @@ bool ConvexCell::clip(const Point3& n, double c, std::int32_t tag, double tol) {
   norm_n_ = norm(n);
   tol_ = tol;
   const double band = tol * norm_n_;
+  const ClipPlane plane{n, c};
   bool doubt = false;
   for (std::size_t i = 0; i < nv; ++i) {
     const double d = dot(n, v_[i]) - c;
     d_[i] = d;
     side_[i] = d > band ? 1 : (d < -band ? -1 : 0);
-    // Within the band, or so near that the vertex's own error could flip the side
-    // (|c| rounds too: it is |n|^2 / 2 or a wall coordinate).
-    doubt |= std::abs(d) <= band + norm_n_ * err_[i] + 4 * kEps * (std::abs(c) + norm_n_ * max_abs(v_[i]));
+    // Within the band, or so near that the vertex's own error or the plane's rounding
+    // could flip the side.
+    doubt |= std::abs(d) <= band + side_error(plane, norm_n_, v_[i], err_[i]);
   }
   ambiguous_ |= doubt;
-  return apply_sides(tag);
+  plane_ = static_cast<std::uint32_t>(planes_.size());
+  planes_.push_back(plane);
+  const bool cut = apply_sides(tag);
+  if (!cut) planes_.pop_back();
+  return cut;
 }
 
 bool ConvexCell::clip_signs(std::span<const signed char> side, std::int32_t tag) {
@@ -111,6 +179,7 @@ bool ConvexCell::clip_signs(std::span<const signed char> side, std::int32_t tag)
   for (std::size_t i = 0; i < side_.size(); ++i) d_[i] = side_[i];  // cuts at midpoints
   norm_n_ = 0;
   tol_ = INFINITY;
+  plane_ = kNone;
   return apply_sides(tag);
 }
 
@@ -128,6 +197,7 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
   }
   nv_.clear();
   nerr_.clear();
+  nvplanes_.clear();
   on_.clear();
   from_.clear();
   ncut_tags_.clear();
@@ -137,6 +207,7 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
       remap_[i] = static_cast<std::uint32_t>(nv_.size());
       nv_.push_back(v_[i]);
       nerr_.push_back(err_[i]);
+      nvplanes_.push_back(vplanes_[i]);
       on_.push_back(side_[i] == 0);
       from_.push_back(static_cast<std::uint32_t>(i));
       ncut_tags_.push_back({0, 0});
@@ -149,6 +220,7 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
   nfv_.clear();
   nfo_.assign(1, 0);
   nface_tag_.clear();
+  nface_plane_.clear();
   const std::size_t nf = face_tag_.size();
   for (std::size_t f = 0; f < nf; ++f) {
     const std::uint32_t* fv = fv_.data() + fo_[f];
@@ -169,9 +241,9 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
         const std::uint32_t a = fv[k], b = fv[(k + 1) % m];
         if (side_[a] <= 0) poly_.push_back(remap_[a]);
         if ((side_[a] < 0 && side_[b] > 0))
-          poly_.push_back(cut_vertex(a, b, face_tag_[f]));
+          poly_.push_back(cut_vertex(a, b, f));
         else if (side_[a] > 0 && side_[b] < 0)
-          poly_.push_back(cut_vertex(b, a, face_tag_[f]));
+          poly_.push_back(cut_vertex(b, a, f));
       }
       if (poly_.size() < 3) continue;
     }
@@ -186,13 +258,16 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
     nfv_.insert(nfv_.end(), poly_.begin(), poly_.end());
     nfo_.push_back(static_cast<std::uint32_t>(nfv_.size()));
     nface_tag_.push_back(face_tag_[f]);
+    nface_plane_.push_back(face_plane_[f]);
   }
   build_cap(tag);
+  bound_new_vertices();
   // Drop vertices no face uses any more (kept "on" vertices of dropped faces).
   std::vector<std::uint32_t>& used = remap_;
   used.assign(nv_.size(), kNone);
   v_.clear();
   err_.clear();
+  vplanes_.clear();
   src_.clear();
   cut_tags_.clear();
   for (auto& i : nfv_) {
@@ -200,6 +275,7 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
       used[i] = static_cast<std::uint32_t>(v_.size());
       v_.push_back(nv_[i]);
       err_.push_back(nerr_[i]);
+      vplanes_.push_back(nvplanes_[i]);
       src_.push_back(from_[i]);
       cut_tags_.push_back(ncut_tags_[i]);
     }
@@ -208,8 +284,21 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
   std::swap(fv_, nfv_);
   std::swap(fo_, nfo_);
   std::swap(face_tag_, nface_tag_);
+  std::swap(face_plane_, nface_plane_);
   if (face_tag_.size() < 4) clear();
   return true;
+}
+
+// A new vertex whose three planes are known gets meet_error's bound instead of the
+// compounded one; a vertex off by more than the band makes the cell ambiguous.
+void ConvexCell::bound_new_vertices() {
+  for (std::size_t v = 0; v < nv_.size(); ++v) {
+    if (from_[v] != kNone) continue;
+    const PlaneIds& p = nvplanes_[v];
+    if (p[0] != kNone && p[1] != kNone && p[2] != kNone)
+      nerr_[v] = meet_error(planes_[p[0]], planes_[p[1]], planes_[p[2]], nv_[v]);
+    ambiguous_ |= nerr_[v] > tol_;
+  }
 }
 
 // Chains the on-plane edges into the new face; falls back to sorting the on-plane
@@ -261,6 +350,7 @@ void ConvexCell::build_cap(std::int32_t tag) {
   nfv_.insert(nfv_.end(), poly_.begin(), poly_.end());
   nfo_.push_back(static_cast<std::uint32_t>(nfv_.size()));
   nface_tag_.push_back(tag);
+  nface_plane_.push_back(plane_);
 }
 
 double ConvexCell::volume() const {

@@ -13,10 +13,15 @@
 //
 // A band decision can be wrong: a vertex at 1e-12 from the plane, exactly outside,
 // kept as "on" loses a whole face of a close pair of sites. So clip() also bounds
-// each vertex's error (grown at every cut by how obliquely the edge meets the plane)
-// and flags the cell ambiguous() when a vertex lies within band plus error of a
-// plane: the caller then recomputes it exactly (voronoi/exact_cell.hpp), which
-// drives the same topology through clip_signs() with exact signs.
+// each vertex's distance to the exact vertex and flags the cell ambiguous() when a
+// vertex lies within band plus error of a plane: the caller then recomputes it
+// exactly (voronoi/exact_cell.hpp), which drives the same topology through
+// clip_signs() with exact signs. A vertex of reset()'s box and its clips is the meet
+// of three known planes (walls, clip planes), so its bound comes from its residuals
+// to them (meet_error, not compounded over the cuts); a vertex on a face of assign()'s
+// polytope (planes unknown) grows its ends' bound by how obliquely the edge meets the
+// plane.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -25,6 +30,22 @@
 #include "voronoi/box.hpp"
 
 namespace dtlab::vor {
+
+// A clip plane n.x <= c, within a few roundings of an exact one: a box wall moved by
+// the site (c = hi - s rounded once), or the bisector of two double sites, n = p - s
+// and c = |n|^2 / 2 rounded as computed in doubles.
+struct ClipPlane {
+  Point3 n;
+  double c = 0;
+};
+// A bound on |fl(n.x - c) - (n*.x - c*)| at a double point x, (n*, c*) the exact plane.
+double plane_error(const ClipPlane& p, const Point3& x);
+// A bound on the distance from x to the common point of the exact planes near p, q
+// and r, from x's residuals to them; infinite when they nearly fail to meet in a point.
+double meet_error(const ClipPlane& p, const ClipPlane& q, const ClipPlane& r, const Point3& x);
+// A bound on |fl(n.x - c) - (n*.x* - c*)| for a double x within err of x*: the sign of
+// fl(n.x - c) is x*'s exact side of the exact plane when its magnitude is larger.
+double side_error(const ClipPlane& p, const Point3& x, double err);
 
 class ConvexCell {
  public:
@@ -37,7 +58,8 @@ class ConvexCell {
               std::span<const std::uint32_t> face_vertices, std::span<const std::int32_t> tags,
               const Point3& origin);
 
-  // Keeps the part with n.x <= c; the new face gets `tag`. Returns true if it cut.
+  // Keeps the part with n.x <= c (a ClipPlane); the new face gets `tag`. Returns true
+  // if it cut.
   bool clip(const Point3& n, double c, std::int32_t tag, double tol);
   // The same clip with each vertex's side given (-1 in, 0 on, 1 out; exact callers).
   // New vertices are provisional midpoints, to be placed with set_vertex.
@@ -49,6 +71,8 @@ class ConvexCell {
   std::span<const std::uint32_t> kept_from() const { return src_; }
   std::pair<std::int32_t, std::int32_t> cut_faces(std::size_t v) const { return cut_tags_[v]; }
   void set_vertex(std::size_t v, const Point3& p) { v_[v] = p; }
+  // The bound on vertex v's distance to its exact position (clip, before translate).
+  double vertex_error(std::size_t v) const { return err_[v]; }
   // The last clip's new face was ordered by angle (its on-plane edges made no loop).
   bool cap_sorted() const { return cap_sorted_; }
 
@@ -71,8 +95,10 @@ class ConvexCell {
   void translate(const Point3& t);
 
  private:
+  using PlaneIds = std::array<std::uint32_t, 3>;  // into planes_, kNone: unknown
   bool apply_sides(std::int32_t tag);
-  std::uint32_t cut_vertex(std::uint32_t in, std::uint32_t out, std::int32_t face_tag);
+  std::uint32_t cut_vertex(std::uint32_t in, std::uint32_t out, std::size_t face);
+  void bound_new_vertices();
   void build_cap(std::int32_t tag);
   void clear();
 
@@ -82,6 +108,10 @@ class ConvexCell {
   std::vector<double> d_;
   std::vector<double> err_, nerr_;  // bound on each vertex's position error
   double norm_n_ = 0, tol_ = 0;     // |n| and band of the clip in progress
+  std::vector<ClipPlane> planes_;   // walls, then the clips that cut
+  std::uint32_t plane_ = 0;         // the clip in progress in planes_ (kNone: signs)
+  std::vector<std::uint32_t> face_plane_, nface_plane_;
+  std::vector<PlaneIds> vplanes_, nvplanes_;  // the three planes of each vertex
   bool ambiguous_ = false, cap_sorted_ = false;
   std::vector<std::uint32_t> from_, src_;  // new (then final) vertex -> old one
   std::vector<std::pair<std::int32_t, std::int32_t>> ncut_tags_, cut_tags_;
