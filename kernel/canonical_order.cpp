@@ -55,8 +55,10 @@ constexpr Rotations make_rotations() {
 }
 constexpr Rotations kRotations = make_rotations();
 
+// Branch-free (integer &, not &&): the test runs on every tet and is almost always true.
 bool distinct(const Tet& t) {
-  return (t[0] != t[1]) & (t[0] != t[2]) & (t[0] != t[3]) & (t[1] != t[2]) & (t[1] != t[3]) & (t[2] != t[3]);
+  const auto ne = [&](int a, int b) { return static_cast<unsigned>(t[a] != t[b]); };
+  return (ne(0, 1) & ne(0, 2) & ne(0, 3) & ne(1, 2) & ne(1, 3) & ne(2, 3)) != 0;
 }
 
 inline Tet rotate(const Tet& t) {
