@@ -177,6 +177,15 @@ def test_oracle_progress_true_writes_a_line_per_stage(capsys, monkeypatch):
         assert line in err
 
 
+def peer_memory_mb():
+    """The peers' memory limit for these tests: the default (0: half the machine's), but
+    under `make asan` 1e9 MB, since the ASan runtime the test environment preloads is
+    inherited by the peer's shell and reserves about 16 TB of address space for its
+    shadow memory, which any smaller address-space limit refuses (the peer then aborts
+    at once, before the test can end it)."""
+    return 1e9 if "libasan" in os.environ.get("LD_PRELOAD", "") else 0.0
+
+
 def sleeper(tmp_path):
     """A 'tetgen' that never answers (dtlab.oracle(tetgen=...)): it would outlive the
     call unless the call ends it."""
@@ -201,7 +210,7 @@ def test_oracle_callback_that_raises_ends_the_running_peer(tmp_path):
 
     with pytest.raises(Stop):
         dtlab.oracle(points(2000), against=["tetgen", "cgal"], tetgen=sleeper(tmp_path), timeout=600,
-                     progress=stop_while_tetgen_runs)
+                     memory_mb=peer_memory_mb(), progress=stop_while_tetgen_runs)
     assert seen[-1] == "tetgen: running" and "cgal: running" not in seen
     assert running  # the callable raised while the peer's process ran (for 1000 s unless ended)
     assert no_child_left(before)
@@ -232,7 +241,8 @@ def test_ctrl_c_with_a_progress_callback_answers_at_once(tmp_path):
                 open({str(marker)!r}, "w").write("x")
         try:
             dtlab.oracle(np.random.default_rng(3).random((2000, 3)), against=["tetgen"],
-                         tetgen={sleeper(tmp_path)!r}, timeout=600, progress=mark)
+                         tetgen={sleeper(tmp_path)!r}, timeout=600, progress=mark,
+                         memory_mb={peer_memory_mb()!r})
         except KeyboardInterrupt:
             print("KeyboardInterrupt", flush=True)
             deadline = time.monotonic() + 3
