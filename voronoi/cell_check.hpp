@@ -113,16 +113,22 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
   return {};
 }
 
-// All of the above, plus no edge of length <= tol and no face of area <= tol^2.
-inline std::string check_cell(const VoronoiCell& c, double tol) {
-  if (std::string why = check_cell_closed(c); !why.empty()) return why;
+// Whether an edge of `c` has length <= tol (tol = 0: two corners rounded to one point).
+inline bool has_edge_within(const VoronoiCell& c, double tol) {
   for (std::size_t f = 0; f < c.face_count(); ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
     for (auto k = b; k < e; ++k) {
       const auto u = c.face_vertices[k], v = c.face_vertices[k + 1 < e ? k + 1 : b];
-      if (norm(c.vertices[u] - c.vertices[v]) <= tol) return "zero-length edge";
+      if (norm(c.vertices[u] - c.vertices[v]) <= tol) return true;
     }
   }
+  return false;
+}
+
+// All of the above, plus no edge of length <= tol and no face of area <= tol^2.
+inline std::string check_cell(const VoronoiCell& c, double tol) {
+  if (std::string why = check_cell_closed(c); !why.empty()) return why;
+  if (has_edge_within(c, tol)) return "zero-length edge";
   return check_cell_convex(c, tol);
 }
 

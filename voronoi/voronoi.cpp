@@ -114,18 +114,6 @@ double largest_face_missing(const ConvexCell& a, const ConvexCell& b) {
   return largest;
 }
 
-// Whether an edge of `c` joins two vertices that rounded to the same point.
-bool has_collapsed_edge(const ConvexCell& c) {
-  for (std::size_t f = 0; f < c.face_count(); ++f) {
-    const auto fv = c.face(f);
-    for (std::size_t k = 0; k < fv.size(); ++k) {
-      const Point3 &a = c.vertices()[fv[k]], &b = c.vertices()[fv[(k + 1) % fv.size()]];
-      if (a.x == b.x && a.y == b.y && a.z == b.z) return true;
-    }
-  }
-  return false;
-}
-
 VoronoiCell view_of(const ConvexCell& c) {
   VoronoiCell view;
   view.vertices = c.vertices();
@@ -141,9 +129,8 @@ VoronoiCell view_of(const ConvexCell& c) {
 // rounding does not define, left out).
 bool representable(const ConvexCell& c, double tol) {
   if (c.empty()) return true;
-  if (has_collapsed_edge(c)) return false;
   const VoronoiCell view = view_of(c);
-  return check_cell_closed(view).empty() && check_cell_convex(view, tol, true).empty();
+  return !has_edge_within(view, 0) && check_cell_closed(view).empty() && check_cell_convex(view, tol, true).empty();
 }
 
 // Whether `c` passes `dtlab voronoi --check`'s cell check at `tol` (no edge shorter,
