@@ -33,6 +33,9 @@ void run_peer_tool(const std::string& tool, const std::vector<Point3>& points, u
   PeerOptions po;
   po.check = false;
   po.threads = threads;
+  // No address-space limit, as for the other tools' whole runs: HXT reserves more than
+  // half of this machine at 10^7 points (measured: std::bad_alloc under the oracle's limit).
+  po.memory_bytes = PeerOptions::kNoMemoryLimit;
   const PeerRun r = run_peer(tool, points, po);
   rep.ok = r.mesh.has_value() && r.verdict != Verdict::crashed && r.verdict != Verdict::hung;
   rep.seconds = r.seconds;

@@ -32,7 +32,10 @@ class ServedChildren;
 
 struct PeerOptions {
   double timeout_s = 600;
-  std::uint64_t memory_bytes = 0;  // 0: half of the machine's memory
+  // RLIMIT_AS of the peer's process. 0: half of the machine's memory (a runaway peer
+  // cannot take the machine); kNoMemoryLimit: none (a timed whole run, `dtlab bench`).
+  static constexpr std::uint64_t kNoMemoryLimit = ~std::uint64_t{0};
+  std::uint64_t memory_bytes = 0;
   std::string tetgen = "tetgen";
   std::string python = "/usr/bin/python3";  // Debian's, with python3-scipy
   std::string peer_binary;                  // the helper for every helper peer (tests); "": $DTLAB_PEER,
