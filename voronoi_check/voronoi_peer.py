@@ -84,21 +84,65 @@ def walls(cell, lo, hi):
     return cell
 
 
-def tet_neighbors(regions):
-    """{site: sites} from the Voronoi vertices that lie in exactly four regions: such a
-    vertex is the centre of one Delaunay tet, and its six edges are Delaunay edges. A
-    vertex in more regions (a merged, cospherical facet) tells nothing about its edges."""
-    at = {}
-    for i, reg in enumerate(regions):
-        for v in reg:
-            if v >= 0:
-                at.setdefault(v, []).append(i)
+def tet_neighbors(regions, wanted):
+    """{site: sites} for the sites in `wanted`, from the Voronoi vertices that lie in
+    exactly four regions: such a vertex is the centre of one Delaunay tet, and its six
+    edges are Delaunay edges. A vertex in more regions (a merged, cospherical facet)
+    tells nothing about its edges. In numpy: one pass over all region entries."""
     out = {}
-    for sites in at.values():
-        if len(sites) == 4:
-            for i in sites:
-                out.setdefault(i, set()).update(j for j in sites if j != i)
+    if not wanted:
+        return out
+    sizes = np.fromiter((len(r) for r in regions), dtype=np.int64, count=len(regions))
+    flat_v = np.fromiter((v for r in regions for v in r), dtype=np.int64, count=int(sizes.sum()))
+    flat_s = np.repeat(np.arange(len(regions), dtype=np.int64), sizes)
+    finite = flat_v >= 0
+    flat_v, flat_s = flat_v[finite], flat_s[finite]
+    if flat_v.size == 0:
+        return out
+    four = np.bincount(flat_v)[flat_v] == 4
+    flat_v, flat_s = flat_v[four], flat_s[four]
+    order = np.argsort(flat_v, kind="stable")
+    quads = flat_s[order].reshape(-1, 4)  # the four sites of each such vertex
+    mask = np.zeros(len(regions), dtype=bool)
+    mask[list(wanted)] = True
+    for row in quads[mask[quads].any(axis=1)].tolist():
+        for i in row:
+            if mask[i]:
+                out.setdefault(i, set()).update(j for j in row if j != i)
     return out
+
+
+def ridge_sides(pts, V, ridges):
+    """Per ridge (p, q, vs) whose vertices are all finite: the sign of (fan normal of the
+    polygon vs) . (q - p), the normal summed triangle by triangle from vs[0] in the
+    polygon's order; 0 for ridges through infinity. All ridges at once: the k-th fan
+    triangles of every ridge in one numpy step, added in the same order as one ridge's."""
+    m = len(ridges)
+    side = np.zeros(m)
+    lens = np.fromiter((len(vs) for _, _, vs in ridges), dtype=np.int64, count=m)
+    if m == 0 or lens.max() < 3:
+        return side
+    width = int(lens.max())
+    ids = np.full((m, width), -1, dtype=np.int64)
+    for r, (_, _, vs) in enumerate(ridges):
+        ids[r, :len(vs)] = vs
+    finite = (ids >= 0) | (np.arange(width) >= lens[:, None])
+    ok = finite.all(axis=1) & (lens >= 3)
+    rows = np.nonzero(ok)[0]
+    ids, lens = ids[rows], lens[rows]
+    o = V[ids[:, 0]]
+    nrm = np.zeros((len(rows), 3))
+    for k in range(1, width - 1):
+        on = k + 1 < lens
+        if not on.any():
+            break
+        a = V[ids[on, k]] - o[on]
+        b = V[ids[on, k + 1]] - o[on]
+        nrm[on] += np.cross(a, b)
+    pq = np.array([[p, q] for p, q, _ in ridges], dtype=np.int64)[rows]
+    d = pts[pq[:, 1]] - pts[pq[:, 0]]
+    side[rows] = np.sign(nrm[:, 0] * d[:, 0] + nrm[:, 1] * d[:, 1] + nrm[:, 2] * d[:, 2])
+    return side
 
 
 def cells_from_ridges(pts, V, ridges, regions, lo, hi):
@@ -108,11 +152,14 @@ def cells_from_ridges(pts, V, ridges, regions, lo, hi):
     the face of a hull edge with one tet around it (one finite vertex and rays, a
     wedge of positive area) is in no ridge; an unbounded cell also takes the
     neighbours of its tets (tet_neighbors: the tool's own regions)."""
+    sides = ridge_sides(pts, V, ridges)
     by_site = {}
-    for p, q, vs in ridges:
-        by_site.setdefault(p, []).append((q, vs))
-        by_site.setdefault(q, []).append((p, vs))
-    tets = tet_neighbors(regions)
+    for r, (p, q, vs) in enumerate(ridges):
+        # a face of p's cell faces q when its fan normal points to q's side
+        by_site.setdefault(p, []).append((q, vs, sides[r] < 0))
+        by_site.setdefault(q, []).append((p, vs, sides[r] > 0))
+    lo_a, hi_a = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
+    tets = tet_neighbors(regions, {i for i, reg in enumerate(regions) if -1 in reg})
     cells = {}
     for i, reg in enumerate(regions):
         s, rs = pts[i], by_site.get(i, [])
@@ -120,23 +167,23 @@ def cells_from_ridges(pts, V, ridges, regions, lo, hi):
             continue
         if -1 in reg:
             cell = box_cell(lo, hi)
-            for j in sorted({j for j, _ in rs} | tets.get(i, set())):
+            for j in sorted({j for j, _, _ in rs} | tets.get(i, set())):
                 n = pts[j] - s
                 cell = clip(cell[0], cell[1], cell[2], n, float(np.dot(n, (pts[j] + s) / 2)), j) if cell else None
         else:
-            ids = sorted({v for _, vs in rs for v in vs})
+            ids = sorted({v for _, vs, _ in rs for v in vs})
             local = {v: k for k, v in enumerate(ids)}
-            verts = [V[v] for v in ids]
+            verts = V[ids]
             faces, tags = [], []
-            for j, vs in rs:
+            for j, vs, flip in rs:
                 f = [local[v] for v in vs]
-                nrm = np.zeros(3)
-                for k in range(1, len(f) - 1):
-                    nrm += np.cross(verts[f[k]] - verts[f[0]], verts[f[k + 1]] - verts[f[0]])
-                if np.dot(nrm, pts[j] - s) < 0:
+                if flip:
                     f.reverse()
                 faces.append(f); tags.append(j)
-            cell = walls((verts, faces, tags), lo, hi)
+            if ((verts >= lo_a) & (verts <= hi_a)).all():
+                cell = (list(verts), faces, tags)  # inside the box: no wall cuts it
+            else:
+                cell = walls((list(verts), faces, tags), lo, hi)
         if cell:
             cells[i] = cell
     return cells
