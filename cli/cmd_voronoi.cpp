@@ -47,10 +47,12 @@ struct VoronoiArgs {
 
 // The ranges of voronoi/voronoi_range.hpp, with or without --check (out of range it
 // could only report broken cells): sites are bad input, a box out of range bad usage.
-void check_voronoi_range(const std::string& input, const std::vector<Point3>& points, const vor::Box& box, bool given,
-                         double margin) {
-  if (const std::string why = voronoi_sites_problem(points); !why.empty()) throw InputError(input, 0, why);
-  if (const std::string why = voronoi_box_problem(box, given, margin); !why.empty()) throw UsageError(why);
+void check_voronoi_range(const std::string& input, const std::vector<Point3>& points,
+                         const std::optional<vor::Box>& box, double margin) {
+  const auto refusal = voronoi_refusal(points, box, margin);
+  if (!refusal) return;
+  if (refusal->range == VoronoiRefusal::Range::sites) throw InputError(input, 0, refusal->reason);
+  throw UsageError(refusal->reason);
 }
 
 int run_voronoi(const VoronoiArgs& a) {
@@ -71,8 +73,7 @@ int run_voronoi(const VoronoiArgs& a) {
       throw UsageError("--box needs xmin ymin zmin xmax ymax zmax with min < max");
     o.box = vor::Box{{a.box[0], a.box[1], a.box[2]}, {a.box[3], a.box[4], a.box[5]}};
   }
-  check_voronoi_range(a.input, in.points, o.box ? *o.box : default_box(in.points, o.margin), o.box.has_value(),
-                      o.margin);
+  check_voronoi_range(a.input, in.points, o.box, o.margin);
   std::optional<VoronoiDiagram> built;
   try {
     built = compute_voronoi(in.points, o);

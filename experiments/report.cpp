@@ -10,10 +10,11 @@
 
 #include <sys/wait.h>
 
-#include "kernel/output_file.hpp"
 #include "dtlab/build_info.hpp"
 #include "fuzz/rate_interval.hpp"
 #include "fuzz/run_environment.hpp"
+#include "kernel/output_file.hpp"
+#include "kernel/trim.hpp"
 
 #ifndef DTLAB_EXPERIMENTS_DIR
 #define DTLAB_EXPERIMENTS_DIR "experiments"
@@ -24,13 +25,6 @@ namespace dtlab::experiments {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string trim(std::string s) {
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ' || s.back() == '\t')) s.pop_back();
-  std::size_t i = 0;
-  while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
-  return s.substr(i);
-}
 
 // First line printed by a shell command, "" when it fails.
 std::string shell_line(const std::string& command) {

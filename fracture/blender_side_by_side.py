@@ -29,7 +29,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from demo_meshes import closed_manifold, read_off, read_pieces, volume  # noqa: E402
+from demo_meshes import closed_manifold, read_off, read_pieces, volume, write_table  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -136,10 +136,7 @@ def main():
             rows = table_rows(name, sites, runs, loads)
             lines += rows
             print('\n'.join(rows), file=sys.stderr, flush=True)
-    text = '\n'.join(lines) + '\n'
-    if args.out:
-        open(args.out, 'w').write(text)
-    sys.stdout.write(text)
+    write_table(lines, args.out)
 
 
 if __name__ == '__main__':

@@ -198,6 +198,14 @@ def run_one(dtlab, mesh, args):
     return row
 
 
+def write_table(lines, out):
+    """The table's lines to stdout, and to the file `out` too when given."""
+    text = '\n'.join(lines) + '\n'
+    if out:
+        open(out, 'w').write(text)
+    sys.stdout.write(text)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('dtlab')
@@ -235,10 +243,7 @@ def main():
                  f"sum to the repaired solid's ({args.tolerance:g}); {multi} pieces with more than one connected "
                  f"component; {split} pieces more than sites (islands); {cavities} cavity shells inside pieces; "
                  f"exact tiling proven on {exact} of the {ok}; slowest {slowest:.1f} s.")
-    text = '\n'.join(lines) + '\n'
-    if args.out:
-        open(args.out, 'w').write(text)
-    sys.stdout.write(text)
+    write_table(lines, args.out)
 
 
 if __name__ == '__main__':

@@ -8,17 +8,11 @@
 #include <thread>
 
 #include "dtlab/build_info.hpp"
+#include "kernel/trim.hpp"
 
 namespace dtlab::fuzz {
 
 namespace {
-
-std::string trim(std::string s) {
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ' || s.back() == '\t')) s.pop_back();
-  std::size_t i = 0;
-  while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
-  return s.substr(i);
-}
 
 std::string proc_field(const char* file, const std::string& key) {
   std::ifstream in(file);

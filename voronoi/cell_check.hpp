@@ -85,10 +85,11 @@ inline bool any_above_plane(const double* X, const double* Y, const double* Z, s
 
 // Planar faces and convex (every vertex behind every face plane), within `tol`
 // (absolute length). With `skip_tiny`, faces of area below tol^2 (whose plane rounding
-// does not define) are not tested; otherwise they are a defect ("zero-area face").
-// The vertices are copied once per cell into per-thread coordinate arrays for
-// any_above_plane.
-inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip_tiny = false) {
+// does not define) are not tested, and `*skipped` (if given) is set when there was
+// one; otherwise they are a defect ("zero-area face"). The vertices are copied once
+// per cell into per-thread coordinate arrays for any_above_plane.
+inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip_tiny = false,
+                                     bool* skipped = nullptr) {
   using namespace vor;
   thread_local std::vector<double> xs, ys, zs;
   const std::size_t nv = c.vertices.size();
@@ -102,8 +103,9 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
       n = n + cross(c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
     const double area2 = norm(n);
     if (area2 <= tol * tol) {
-      if (skip_tiny) continue;
-      return "zero-area face";
+      if (!skip_tiny) return "zero-area face";
+      if (skipped) *skipped = true;
+      continue;
     }
     n = 1.0 / area2 * n;
     for (auto k = b; k < e; ++k)

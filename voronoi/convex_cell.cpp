@@ -80,11 +80,10 @@ void ConvexCell::reset(const Box& b) {
     (f < 2 ? n.x : f < 4 ? n.y : n.z) = sign;
     planes_.push_back({n, f % 2 ? hi[f / 2] : -lo[f / 2]});
   }
-  err_.resize(8);
-  vplanes_.resize(8);
+  vs_.resize(8);
   for (std::uint32_t k = 0; k < 8; ++k) {
-    vplanes_[k] = {k & 1, 2 + (k >> 1 & 1), 4 + (k >> 2 & 1)};
-    err_[k] = meet_error(planes_[vplanes_[k][0]], planes_[vplanes_[k][1]], planes_[vplanes_[k][2]], v_[k]);
+    const PlaneIds p = {k & 1, 2 + (k >> 1 & 1), 4 + (k >> 2 & 1)};
+    vs_[k] = {meet_error(planes_[p[0]], planes_[p[1]], planes_[p[2]], v_[k]), p, kNone, {0, 0}, false};
   }
   ambiguous_ = false;
 }
@@ -100,22 +99,19 @@ void ConvexCell::assign(std::span<const Point3> vertices, std::span<const std::u
   face_plane_.assign(face_tag_.size(), kNone);
   planes_.clear();
   // The caller's band covers the vertices' own error (circumcentres).
-  err_.resize(v_.size());
-  for (std::size_t k = 0; k < v_.size(); ++k) err_[k] = kEps * max_abs(v_[k]);
-  vplanes_.assign(v_.size(), {kNone, kNone, kNone});
+  vs_.resize(v_.size());
+  for (std::size_t k = 0; k < v_.size(); ++k)
+    vs_[k] = {kEps * max_abs(v_[k]), {kNone, kNone, kNone}, kNone, {0, 0}, false};
   ambiguous_ = false;
 }
 
 void ConvexCell::clear() {
   v_.clear();
-  err_.clear();
+  vs_.clear();
   fv_.clear();
   fo_.assign(1, 0);
   face_tag_.clear();
   face_plane_.clear();
-  vplanes_.clear();
-  src_.clear();
-  cut_tags_.clear();
 }
 
 std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out, std::size_t face) {
@@ -123,8 +119,8 @@ std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out, std::s
   const std::uint64_t key = (std::uint64_t(in) << 32) | out;
   for (std::size_t i = 0; i < cut_key_.size(); ++i)
     if (cut_key_[i] == key) {
-      ncut_tags_[cut_val_[i]].second = face_tag;
-      nvplanes_[cut_val_[i]][1] = face_plane_[face];
+      nvs_[cut_val_[i]].cut_tags.second = face_tag;
+      nvs_[cut_val_[i]].planes[1] = face_plane_[face];
       return cut_val_[i];
     }
   // Interpolate from the inside end: the same edge seen from its two faces gives
@@ -137,11 +133,8 @@ std::uint32_t ConvexCell::cut_vertex(std::uint32_t in, std::uint32_t out, std::s
   // the edge: large when the edge meets the plane at a grazing angle (the bound where
   // the planes are unknown; bound_new_vertices replaces it where they are known).
   const double grow = norm(b - a) * norm_n_ / std::abs(d_[in] - d_[out]);
-  nerr_.push_back(std::max(err_[in], err_[out]) * (1 + grow) + 4 * kEps * (max_abs(a) + max_abs(b)));
-  on_.push_back(1);
-  from_.push_back(kNone);
-  ncut_tags_.push_back({face_tag, face_tag});
-  nvplanes_.push_back({face_plane_[face], face_plane_[face], plane_});
+  const double err = std::max(vs_[in].err, vs_[out].err) * (1 + grow) + 4 * kEps * (max_abs(a) + max_abs(b));
+  nvs_.push_back({err, {face_plane_[face], face_plane_[face], plane_}, kNone, {face_tag, face_tag}, true});
   const auto id = static_cast<std::uint32_t>(nv_.size() - 1);
   cut_key_.push_back(key);
   cut_val_.push_back(id);
@@ -163,7 +156,7 @@ bool ConvexCell::clip(const Point3& n, double c, std::int32_t tag, double tol) {
     side_[i] = d > band ? 1 : (d < -band ? -1 : 0);
     // Within the band, or so near that the vertex's own error or the plane's rounding
     // could flip the side.
-    doubt |= std::abs(d) <= band + side_error(plane, norm_n_, v_[i], err_[i]);
+    doubt |= std::abs(d) <= band + side_error(plane, norm_n_, v_[i], vs_[i].err);
   }
   ambiguous_ |= doubt;
   plane_ = static_cast<std::uint32_t>(planes_.size());
@@ -196,21 +189,13 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
     return true;
   }
   nv_.clear();
-  nerr_.clear();
-  nvplanes_.clear();
-  on_.clear();
-  from_.clear();
-  ncut_tags_.clear();
+  nvs_.clear();
   remap_.resize(nv);
   for (std::size_t i = 0; i < nv; ++i) {
     if (side_[i] <= 0) {
       remap_[i] = static_cast<std::uint32_t>(nv_.size());
       nv_.push_back(v_[i]);
-      nerr_.push_back(err_[i]);
-      nvplanes_.push_back(vplanes_[i]);
-      on_.push_back(side_[i] == 0);
-      from_.push_back(static_cast<std::uint32_t>(i));
-      ncut_tags_.push_back({0, 0});
+      nvs_.push_back({vs_[i].err, vs_[i].planes, static_cast<std::uint32_t>(i), {0, 0}, side_[i] == 0});
     }
   }
   cut_key_.clear();
@@ -250,7 +235,7 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
     const std::size_t pm = poly_.size();
     for (std::size_t k = 0; k < pm; ++k) {
       const std::uint32_t a = poly_[k], b = poly_[(k + 1) % pm];
-      if (on_[a] && on_[b]) {
+      if (nvs_[a].on && nvs_[b].on) {
         cap_from_.push_back(b);
         cap_to_.push_back(a);
       }
@@ -266,18 +251,12 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
   std::vector<std::uint32_t>& used = remap_;
   used.assign(nv_.size(), kNone);
   v_.clear();
-  err_.clear();
-  vplanes_.clear();
-  src_.clear();
-  cut_tags_.clear();
+  vs_.clear();
   for (auto& i : nfv_) {
     if (used[i] == kNone) {
       used[i] = static_cast<std::uint32_t>(v_.size());
       v_.push_back(nv_[i]);
-      err_.push_back(nerr_[i]);
-      vplanes_.push_back(nvplanes_[i]);
-      src_.push_back(from_[i]);
-      cut_tags_.push_back(ncut_tags_[i]);
+      vs_.push_back(nvs_[i]);
     }
     i = used[i];
   }
@@ -293,11 +272,12 @@ bool ConvexCell::apply_sides(std::int32_t tag) {
 // compounded one; a vertex off by more than the band makes the cell ambiguous.
 void ConvexCell::bound_new_vertices() {
   for (std::size_t v = 0; v < nv_.size(); ++v) {
-    if (from_[v] != kNone) continue;
-    const PlaneIds& p = nvplanes_[v];
+    VertexState& s = nvs_[v];
+    if (s.from != kNone) continue;
+    const PlaneIds& p = s.planes;
     if (p[0] != kNone && p[1] != kNone && p[2] != kNone)
-      nerr_[v] = meet_error(planes_[p[0]], planes_[p[1]], planes_[p[2]], nv_[v]);
-    ambiguous_ |= nerr_[v] > tol_;
+      s.err = meet_error(planes_[p[0]], planes_[p[1]], planes_[p[2]], nv_[v]);
+    ambiguous_ |= s.err > tol_;
   }
 }
 
@@ -386,7 +366,7 @@ Point3 ConvexCell::centroid() const {
 
 void ConvexCell::translate(const Point3& t) {
   for (auto& p : v_) p = p + t;
-  for (std::size_t k = 0; k < v_.size(); ++k) err_[k] += kEps * max_abs(v_[k]);
+  for (std::size_t k = 0; k < v_.size(); ++k) vs_[k].err += kEps * max_abs(v_[k]);
 }
 
 }  // namespace dtlab::vor

@@ -66,13 +66,13 @@ class ConvexCell {
   bool clip_signs(std::span<const signed char> side, std::int32_t tag);
   // Some clip since reset/assign decided a side within its band or error bound.
   bool ambiguous() const { return ambiguous_; }
-  // After a clip that cut: per vertex the old vertex it was (kNone for a new one) and,
-  // for a new one, the tags of the two faces whose edge it cut.
-  std::span<const std::uint32_t> kept_from() const { return src_; }
-  std::pair<std::int32_t, std::int32_t> cut_faces(std::size_t v) const { return cut_tags_[v]; }
+  // After a clip that cut: the old vertex vertex v was (kNone for a new one) and, for a
+  // new one, the tags of the two faces whose edge it cut.
+  std::uint32_t kept_from(std::size_t v) const { return vs_[v].from; }
+  std::pair<std::int32_t, std::int32_t> cut_faces(std::size_t v) const { return vs_[v].cut_tags; }
   void set_vertex(std::size_t v, const Point3& p) { v_[v] = p; }
   // The bound on vertex v's distance to its exact position (clip, before translate).
-  double vertex_error(std::size_t v) const { return err_[v]; }
+  double vertex_error(std::size_t v) const { return vs_[v].err; }
   // The last clip's new face was ordered by angle (its on-plane edges made no loop).
   bool cap_sorted() const { return cap_sorted_; }
 
@@ -96,6 +96,14 @@ class ConvexCell {
 
  private:
   using PlaneIds = std::array<std::uint32_t, 3>;  // into planes_, kNone: unknown
+  // What a vertex carries besides its point (v_[i] goes with vs_[i], nv_[i] with nvs_[i]).
+  struct VertexState {
+    double err;                                      // bound on the position error
+    PlaneIds planes;                                 // the three planes it meets
+    std::uint32_t from;                              // after a clip: the old vertex it was, kNone for a new one
+    std::pair<std::int32_t, std::int32_t> cut_tags;  // a new one: the faces of its cut edge
+    bool on;                                         // during a clip: lies on the clip plane
+  };
   bool apply_sides(std::int32_t tag);
   std::uint32_t cut_vertex(std::uint32_t in, std::uint32_t out, std::size_t face);
   void bound_new_vertices();
@@ -103,21 +111,17 @@ class ConvexCell {
   void clear();
 
   std::vector<Point3> v_, nv_;
+  std::vector<VertexState> vs_, nvs_;
   std::vector<std::uint32_t> fv_, nfv_, fo_, nfo_;
   std::vector<std::int32_t> face_tag_, nface_tag_;
   std::vector<double> d_;
-  std::vector<double> err_, nerr_;  // bound on each vertex's position error
   double norm_n_ = 0, tol_ = 0;     // |n| and band of the clip in progress
   std::vector<ClipPlane> planes_;   // walls, then the clips that cut
   std::uint32_t plane_ = 0;         // the clip in progress in planes_ (kNone: signs)
   std::vector<std::uint32_t> face_plane_, nface_plane_;
-  std::vector<PlaneIds> vplanes_, nvplanes_;  // the three planes of each vertex
   bool ambiguous_ = false, cap_sorted_ = false;
-  std::vector<std::uint32_t> from_, src_;  // new (then final) vertex -> old one
-  std::vector<std::pair<std::int32_t, std::int32_t>> ncut_tags_, cut_tags_;
   std::vector<signed char> side_;
   std::vector<std::uint32_t> remap_;
-  std::vector<char> on_;                        // new vertex lies on the clip plane
   std::vector<std::uint64_t> cut_key_;          // edge (in,out) -> new vertex, small
   std::vector<std::uint32_t> cut_val_;
   std::vector<std::uint32_t> cap_from_, cap_to_;

@@ -171,11 +171,10 @@ Plane bisector(ExactState& st, const Point3& p) {
 // After a clip that cut: kept vertices keep their point, new ones meet the clip plane
 // and the two faces of their edge.
 void update_vertices(ExactState& st, ConvexCell& cell, const Plane& clip_plane, std::uint32_t site) {
-  const auto from = cell.kept_from();
-  st.nh.resize(from.size());
-  for (std::size_t v = 0; v < from.size(); ++v) {
-    if (from[v] != kNone) {
-      std::swap(st.nh[v], st.h[from[v]]);  // a kept vertex appears once
+  st.nh.resize(cell.vertex_count());
+  for (std::size_t v = 0; v < cell.vertex_count(); ++v) {
+    if (const std::uint32_t from = cell.kept_from(v); from != kNone) {
+      std::swap(st.nh[v], st.h[from]);  // a kept vertex appears once
     } else {
       const auto [fa, fb] = cell.cut_faces(v);
       if (fa == fb || !meet(st.nh[v], st.plane(fa), st.plane(fb), clip_plane, st.t))

@@ -123,19 +123,25 @@ VoronoiCell view_of(const ConvexCell& c) {
   return view;
 }
 
-// Whether `c`, rounded to doubles, is still a cell, as the Voronoi checker judges one:
-// no edge collapsed (an exact edge of 1e-17 at a box corner rounds to zero length),
-// closed, planar faces and convex within `tol` (faces below tol^2, whose plane
-// rounding does not define, left out).
-bool representable(const ConvexCell& c, double tol) {
-  if (c.empty()) return true;
+// `c` rounded to doubles as the checkers judge it, each part of the cell check run
+// once: `clean` when it passes `dtlab voronoi --check`'s cell check at `tol` (no edge
+// shorter, no face smaller than tol^2, planar, convex); `representable` when it is
+// still a cell to the Voronoi checker: no edge collapsed (an exact edge of 1e-17 at a
+// box corner rounds to zero length), closed, planar faces and convex within `tol`
+// (faces below tol^2, whose plane rounding does not define, left out).
+struct Rounded {
+  bool clean, representable;
+};
+Rounded judge_rounded(const ConvexCell& c, double tol) {
+  if (c.empty()) return {true, true};
   const VoronoiCell view = view_of(c);
-  return !has_edge_within(view, 0) && check_cell_closed(view).empty() && check_cell_convex(view, tol, true).empty();
+  if (!check_cell_closed(view).empty()) return {false, false};
+  bool tiny_face = false;
+  const bool convex = check_cell_convex(view, tol, true, &tiny_face).empty();
+  const bool short_edge = has_edge_within(view, tol);  // implied by a collapsed one
+  const bool representable = convex && !(short_edge && has_edge_within(view, 0));
+  return {representable && !short_edge && !tiny_face, representable};
 }
-
-// Whether `c` passes `dtlab voronoi --check`'s cell check at `tol` (no edge shorter,
-// no face smaller than tol^2, planar, convex).
-bool clean(const ConvexCell& c, double tol) { return c.empty() || check_cell(view_of(c), tol).empty(); }
 
 // Whether every vertex of `a` lies within `tol` of a vertex of `b`.
 bool vertices_near(const ConvexCell& a, const ConvexCell& b, double tol) {
@@ -163,9 +169,10 @@ CellChoice choose_cell(const ConvexCell& band, const ConvexCell& exact, double d
   const double tol = 0.5e-9 * diag;
   off = std::max(largest_face_missing(exact, band), largest_face_missing(band, exact));
   const bool small = off <= kSmallFace * diag * diag;
-  if (clean(exact, tol)) return CellChoice::exact;
-  if (small && vertices_near(band, exact, tol) && representable(band, tol)) return CellChoice::band;
-  if (representable(exact, tol)) return CellChoice::exact;
+  const Rounded e = judge_rounded(exact, tol);
+  if (e.clean) return CellChoice::exact;
+  if (small && vertices_near(band, exact, tol) && judge_rounded(band, tol).representable) return CellChoice::band;
+  if (e.representable) return CellChoice::exact;
   return small ? CellChoice::band : CellChoice::refused;
 }
 

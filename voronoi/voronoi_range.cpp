@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace dtlab {
+
+namespace {
 
 std::string voronoi_sites_problem(std::span<const Point3> sites) {
   if (sites.empty()) return "";
@@ -32,6 +35,18 @@ std::string voronoi_box_problem(const vor::Box& box, bool given, double margin) 
              "within |x| <= 1e101";
     }
   return "";
+}
+
+}  // namespace
+
+std::optional<VoronoiRefusal> voronoi_refusal(std::span<const Point3> sites, const std::optional<vor::Box>& box,
+                                              double margin) {
+  if (std::string why = voronoi_sites_problem(sites); !why.empty())
+    return VoronoiRefusal{VoronoiRefusal::Range::sites, std::move(why)};
+  if (std::string why = voronoi_box_problem(box ? *box : default_box(sites, margin), box.has_value(), margin);
+      !why.empty())
+    return VoronoiRefusal{VoronoiRefusal::Range::box, std::move(why)};
+  return std::nullopt;
 }
 
 std::string lost_cells_problem(const VoronoiDiagram& vd) {

@@ -4,7 +4,9 @@
 // coordinates beyond 1e100 or below 1e-100 overflow or underflow, and so do cell
 // volumes (cubes of the box's extent) near 1e102. Sites are computed for |x| <= 1e100,
 // boxes (default: the sites' bounding box grown by the margin) for |x| <= 1e101.
-// Each function returns "" or the reason, for the caller to raise in its own style.
+// Each function returns the reason (none: "" or nullopt), for the caller to raise in
+// its own style.
+#include <optional>
 #include <span>
 #include <string>
 
@@ -14,14 +16,21 @@ namespace dtlab {
 
 inline constexpr double kCellCoordinateMax = 1e100, kBoxCoordinateMax = 1e101, kCellExtentMin = 1e-100;
 
-// Sites beyond 1e100 in magnitude or spanning less than 1e-100.
-std::string voronoi_sites_problem(std::span<const Point3> sites);
+// Why a Voronoi run is refused before its cells, and which range refused it (the CLI
+// reports bad sites as bad input, a box out of range as bad usage).
+struct VoronoiRefusal {
+  enum class Range { sites, box } range;
+  std::string reason;
+};
 
-// A clip box with a corner beyond 1e101 (`given`: --box, else grown by `margin`).
-std::string voronoi_box_problem(const vor::Box& box, bool given, double margin);
+// The sites' range (beyond 1e100 in magnitude, or spanning less than 1e-100), then the
+// clip box's (a corner beyond 1e101): `box`, or if none the sites' bounding box grown
+// by `margin` (default_box); nothing when both are in range.
+std::optional<VoronoiRefusal> voronoi_refusal(std::span<const Point3> sites, const std::optional<vor::Box>& box,
+                                              double margin);
 
-// Computed cells that are no result: a cell of NaN, infinite or zero volume, or cells
-// that do not fill the box (double precision lost on these sites).
+// After the cells: computed cells that are no result: a cell of NaN, infinite or zero
+// volume, or cells that do not fill the box (double precision lost on these sites).
 std::string lost_cells_problem(const VoronoiDiagram& vd);
 
 }  // namespace dtlab

@@ -31,16 +31,14 @@ PeerCells run_dtlab(const std::string& backend, const std::vector<Point3>& sites
   o.threads = 1;
   // What `dtlab voronoi` refuses (voronoi/voronoi_range.hpp), this peer refuses too: its
   // cells are the command's, not cells the command would never print.
-  std::string problem = voronoi_sites_problem(sites);
-  if (problem.empty()) problem = voronoi_box_problem(box, true, 0);
-  if (!problem.empty()) throw PeerRefusal(problem);
+  if (const auto refusal = voronoi_refusal(sites, box, 0)) throw PeerRefusal(refusal->reason);
   VoronoiDiagram vd;
   try {
     vd = compute_voronoi(sites, o);
   } catch (const std::exception& e) {
     throw PeerRefusal(e.what());
   }
-  if (problem = lost_cells_problem(vd); !problem.empty()) throw PeerRefusal(problem);
+  if (const std::string why = lost_cells_problem(vd); !why.empty()) throw PeerRefusal(why);
   return {vd.seconds_dt + vd.seconds_cells, tool_cells_of(vd)};
 }
 

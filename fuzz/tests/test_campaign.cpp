@@ -1,4 +1,3 @@
-#include <unistd.h>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -8,6 +7,7 @@
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/summary.hpp"
+#include "fuzz/tests/test_folder.hpp"
 #include "kernel/input_error.hpp"
 
 using namespace dtlab;
@@ -15,18 +15,6 @@ using namespace dtlab::fuzz;
 namespace fs = std::filesystem;
 
 namespace {
-
-// A fresh folder under the temp dir, removed at scope exit.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() /
-           ("dtlab_fuzz_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 PredicateSpec spec(const std::string& backend, bool perturb) {
   PredicateSpec s;
@@ -75,7 +63,7 @@ TEST_CASE("boundary labels parse and print", "[fuzz][campaign]") {
 
 TEST_CASE("a tiny campaign with robust backends finds no defect on any family",
           "[fuzz][campaign]") {
-  TempDir dir;
+  TestFolder dir;
   CampaignOptions o;
   o.families = all_families();
   o.cases = 3;
@@ -97,7 +85,7 @@ TEST_CASE("a tiny campaign with robust backends finds no defect on any family",
 }
 
 TEST_CASE("campaigns are deterministic, resumable and shardable", "[fuzz][campaign]") {
-  TempDir a, b;
+  TestFolder a, b;
   CampaignOptions o;
   o.families = {"uniform", "lattice", "cospherical"};
   o.cases = 4;
@@ -137,7 +125,7 @@ TEST_CASE("campaigns are deterministic, resumable and shardable", "[fuzz][campai
 
 TEST_CASE("naive predicates fail on near-degenerate inputs, and failures shrink to a replayable corpus",
           "[fuzz][campaign]") {
-  TempDir dir;
+  TestFolder dir;
   CampaignOptions o;
   o.families = {"near_degenerate", "kettner_grid", "extreme_scale", "subnormal"};
   o.cases = 6;
@@ -192,7 +180,7 @@ TEST_CASE("the committed corpus replays cleanly with robust backends", "[fuzz][c
 }
 
 TEST_CASE("a corpus sidecar that is wrong is refused with its file and line", "[fuzz][campaign]") {
-  TempDir dir;
+  TestFolder dir;
   fs::create_directories(dir.path);
   {
     std::ofstream node(dir.path / "c.node");

@@ -6,29 +6,19 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <unistd.h>
 
 #include "dtlab/build_info.hpp"
 #include "fuzz/campaign.hpp"
 #include "fuzz/campaign_report.hpp"
 #include "fuzz/rate_interval.hpp"
 #include "fuzz/summary.hpp"
+#include "fuzz/tests/test_folder.hpp"
 
 using namespace dtlab;
 using namespace dtlab::fuzz;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() / ("dtlab_summary_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 std::string read_file(const fs::path& p) {
   std::ifstream in(p);
@@ -76,7 +66,7 @@ TEST_CASE("Wilson interval: known values, bounds and degenerate counts", "[fuzz]
 }
 
 TEST_CASE("campaign folder: summary and environment files, lines carry the build", "[fuzz][summary]") {
-  TempDir dir;
+  TestFolder dir;
   const CampaignResult r = run_campaign(small_campaign(dir.path));
   REQUIRE(r.failing() > 0);  // naive fails on kettner_grid: the summary is not trivial
   for (const char* f : {"summary.md", "summary.json", "environment.json", "results.jsonl"})
@@ -110,7 +100,7 @@ TEST_CASE("campaign folder: summary and environment files, lines carry the build
 }
 
 TEST_CASE("summary: shards merged from separate folders equal the unsharded run", "[fuzz][summary]") {
-  TempDir whole, s0, s1, merged;
+  TestFolder whole, s0, s1, merged;
   run_campaign(small_campaign(whole.path));
   for (int k = 0; k < 2; ++k) {
     CampaignOptions o = small_campaign(k == 0 ? s0.path : s1.path);

@@ -125,7 +125,17 @@ def _edges_csr(n: int, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return indptr, dst.astype(np.int32)
 
 
-class Delaunay(_Triangulated):
+class _Sites(_Triangulated):
+    """Delaunay's and Voronoi's constructor: scipy's signature, furthest_site refused."""
+
+    def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
+                 qhull_options: str | None = None, *, progress: bool | Callable[..., Any] | None = None) -> None:
+        _unsupported(furthest_site, qhull_options)
+        self.furthest_site = False
+        super().__init__(points, incremental, progress)
+
+
+class Delaunay(_Sites):
     """scipy.spatial.Delaunay in 3D, from dtlab's exact Delaunay tetrahedralization.
 
     Attributes as scipy's: points, simplices ((nsimplex, 4) int32, every simplex
@@ -139,12 +149,6 @@ class Delaunay(_Triangulated):
     qhull_options are ignored (no option is needed). Extra: tetrahedralization (the
     dtlab result), check() (the exact proof), seconds.
     """
-
-    def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
-                 qhull_options: str | None = None, *, progress: bool | Callable[..., Any] | None = None) -> None:
-        _unsupported(furthest_site, qhull_options)
-        self.furthest_site = False
-        super().__init__(points, incremental, progress)
 
     def _derive(self) -> None:
         # Swapping the first two vertices makes dtlab's orient3d > 0 right-handed.
@@ -322,7 +326,7 @@ def _circumcenters(p: np.ndarray) -> np.ndarray:
     return p[:, 0] + np.linalg.solve(d, rhs[..., None])[..., 0]
 
 
-class Voronoi(_Triangulated):
+class Voronoi(_Sites):
     """scipy.spatial.Voronoi in 3D, the dual of dtlab's exact Delaunay tetrahedralization.
 
     vertices (one per cell of the Delaunay complex: tets sharing a circumsphere, found
@@ -333,12 +337,6 @@ class Voronoi(_Triangulated):
     ridge_dict, npoints, ndim, min_bound, max_bound. Unlike scipy's default (Qz) no
     empty region is added for a point at infinity.
     """
-
-    def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
-                 qhull_options: str | None = None, *, progress: bool | Callable[..., Any] | None = None) -> None:
-        _unsupported(furthest_site, qhull_options)
-        self.furthest_site = False
-        super().__init__(points, incremental, progress)
 
     def _derive(self) -> None:
         group = _core.spatial_cospherical_groups(self.points, self._tets, self._neighbors)

@@ -35,10 +35,7 @@ py::dict voronoi(py::handle points, std::optional<std::vector<double>> box, doub
   if (!(margin >= 0)) throw py::value_error("--margin must be non-negative");
   const auto sites = points_of(pts);
   // The CLI's ranges (voronoi/voronoi_range.hpp): cells right in doubles, or refused.
-  if (std::string why = voronoi_sites_problem(sites); !why.empty()) throw py::value_error(why);
-  if (std::string why = voronoi_box_problem(o.box ? *o.box : default_box(sites, margin), o.box.has_value(), margin);
-      !why.empty())
-    throw py::value_error(why);
+  if (const auto refusal = voronoi_refusal(sites, o.box, margin)) throw py::value_error(refusal->reason);
   auto vd = std::make_shared<VoronoiDiagram>();
   std::optional<Progress> listener = python_progress(py::none());  // Ctrl-C during the Delaunay build
   {

@@ -8,6 +8,7 @@
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/voronoi.hpp"
 #include "voronoi/voronoi_io.hpp"
+#include "voronoi/voronoi_range.hpp"
 
 using namespace dtlab;
 using namespace dtlab::vor;
@@ -203,4 +204,30 @@ TEST_CASE("dual cells agree with the clipping engine; shrink and threads") {
     sum += shrunk.cells[i].volume;
   }
   CHECK(sum < 0.99 * vd.box.volume());
+}
+
+TEST_CASE("voronoi_refusal: the sites' range first, then the box's, given or grown", "[voronoi][range]") {
+  const std::vector<Point3> ok = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const Box unit{{-1, -1, -1}, {2, 2, 2}}, huge{{-1, -1, -1}, {2e101, 2, 2}};
+  CHECK_FALSE(voronoi_refusal(ok, std::nullopt, 0.1));
+  CHECK_FALSE(voronoi_refusal(ok, unit, 0.1));
+  const auto given = voronoi_refusal(ok, huge, 0.1);
+  REQUIRE(given);
+  CHECK(given->range == VoronoiRefusal::Range::box);
+  CHECK(given->reason.rfind("--box: corners beyond 1e101", 0) == 0);
+  const auto grown = voronoi_refusal(ok, std::nullopt, 1e102);
+  REQUIRE(grown);
+  CHECK(grown->range == VoronoiRefusal::Range::box);
+  CHECK(grown->reason.rfind("--margin 1e+102 grows the sites' bounding box beyond 1e101", 0) == 0);
+  std::vector<Point3> far = ok;
+  far.push_back({2e100, 0, 0});
+  const auto sites = voronoi_refusal(far, huge, 0.1);  // both out of range: the sites named
+  REQUIRE(sites);
+  CHECK(sites->range == VoronoiRefusal::Range::sites);
+  CHECK(sites->reason.find("beyond 1e100") != std::string::npos);
+  const std::vector<Point3> tiny = {{0, 0, 0}, {1e-101, 0, 0}, {0, 1e-101, 0}, {0, 0, 1e-101}};
+  const auto span = voronoi_refusal(tiny, std::nullopt, 0.1);
+  REQUIRE(span);
+  CHECK(span->range == VoronoiRefusal::Range::sites);
+  CHECK(span->reason.find("less than 1e-100") != std::string::npos);
 }

@@ -75,6 +75,18 @@ TEST_CASE("dtlab's own cells as a peer refuse what dtlab voronoi refuses") {
   CHECK(r.message.find("double precision") != std::string::npos);
 }
 
+TEST_CASE("dtlab's own cells as a peer refuse sites and boxes out of dtlab voronoi's range") {
+  std::vector<Point3> far = random_sites(20, 9);
+  far.push_back({2e100, 0.5, 0.5});
+  const VoronoiPeerRun sites = run_voronoi_peer("dtlab:adaptive", far, kBox, quick());
+  CHECK(sites.verdict == VoronoiVerdict::refused);
+  CHECK(sites.message.find("site coordinates beyond 1e100") != std::string::npos);
+  const vor::Box huge{{0, 0, 0}, {2e101, 1, 1}};
+  const VoronoiPeerRun box = run_voronoi_peer("dtlab:adaptive", random_sites(20, 9), huge, quick());
+  CHECK(box.verdict == VoronoiVerdict::refused);
+  CHECK(box.message.find("--box: corners beyond 1e101") != std::string::npos);
+}
+
 TEST_CASE("a peer that is not there, or that writes garbage, is named so") {
   VoronoiPeerOptions o = quick();
   o.helper = "/nonexistent/dtlab_voronoi_peer";
