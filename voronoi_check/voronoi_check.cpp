@@ -223,7 +223,10 @@ class Judge {
   }
 
   // The exact face of (a, b) clipped to the box, in doubles: its area, or nullopt when
-  // it does not meet the box interior.
+  // it does not meet the box interior. The clip's band is our cells' (1e-12 of the
+  // diagonal): it moves an area by far less than small_face, and above the vertices'
+  // rounding bounds, so only a truly ambiguous cell is redone with exact signs (a band
+  // below them, as 1e-15 was, sent every clipped cell to GMP).
   std::optional<double> true_area(std::uint32_t a, std::uint32_t b, Scratch& s) const {
     nb_.ring_centres(a, b, s.centres);
     const bool bounded = !nb_.hull_edge(a, b) && !s.centres.empty();
@@ -231,7 +234,7 @@ class Judge {
     if (s.clipped_site != a) {
       s.all.assign(s.pos.begin(), s.pos.end());
       s.all.insert(s.all.end(), s.deg.begin(), s.deg.end());
-      compute_cell(s.clipped, sites_, a, s.all, box_, 1e-15);
+      compute_cell(s.clipped, sites_, a, s.all, box_, VoronoiOptions{}.tolerance);
       s.clipped_site = a;
     }
     double area = 0;
