@@ -321,6 +321,7 @@ class Judge {
     const VoronoiCell c = cells_.view(k);
     if (c.face_count() == 0) return;
     const std::int64_t site = cells_.site(k);
+    prefetch_face_sites(c, sites_);
     p.faces += c.face_count();
     p.vertices += c.vertices.size();
     p.volume_sum += cell_volume(c);
