@@ -81,14 +81,21 @@ std::optional<L> vertex_error(const Point3& p, const Point3& site, const VertexS
   std::array<L, 3> bd{};
   std::array<std::size_t, 3> pick{};
   const auto& pl = s.planes;
-  for (std::size_t i = 0; i < pl.size(); ++i)
-    for (std::size_t j = i + 1; j < pl.size(); ++j)
-      for (std::size_t k = j + 1; k < pl.size(); ++k) {
-        const auto jk = lcross(s.face_plane[pl[j]].n, s.face_plane[pl[k]].n);
-        const L dt = ldot(s.face_plane[pl[i]].n, jk);
-        const L d = std::abs(dt) / (s.face_norm[pl[i]] * s.face_norm[pl[j]] * s.face_norm[pl[k]]);
-        if (d > best) best = d, det = dt, bd = jk, pick = {pl[i], pl[j], pl[k]};
-      }
+  if (pl.size() == 3) {
+    // The one triple (a simple vertex: nearly all of them), as the loop below takes it.
+    bd = lcross(s.face_plane[pl[1]].n, s.face_plane[pl[2]].n);
+    det = ldot(s.face_plane[pl[0]].n, bd);
+    best = std::abs(det) / (s.face_norm[pl[0]] * s.face_norm[pl[1]] * s.face_norm[pl[2]]);
+    pick = {pl[0], pl[1], pl[2]};
+  } else
+    for (std::size_t i = 0; i < pl.size(); ++i)
+      for (std::size_t j = i + 1; j < pl.size(); ++j)
+        for (std::size_t k = j + 1; k < pl.size(); ++k) {
+          const auto jk = lcross(s.face_plane[pl[j]].n, s.face_plane[pl[k]].n);
+          const L dt = ldot(s.face_plane[pl[i]].n, jk);
+          const L d = std::abs(dt) / (s.face_norm[pl[i]] * s.face_norm[pl[j]] * s.face_norm[pl[k]]);
+          if (d > best) best = d, det = dt, bd = jk, pick = {pl[i], pl[j], pl[k]};
+        }
   if (!(best > 1e-9L)) return std::nullopt;
   // Cramer's rule with the chosen triple's determinant and first cross product kept.
   const Plane &a = s.face_plane[pick[0]], &b = s.face_plane[pick[1]], &d = s.face_plane[pick[2]];
@@ -100,6 +107,11 @@ std::optional<L> vertex_error(const Point3& p, const Point3& site, const VertexS
 }
 
 }  // namespace
+
+void prefetch_face_sites(const VoronoiCell& c, std::span<const Point3> sites) {
+  for (auto tag : c.face_neighbor)
+    if (tag >= 0 && static_cast<std::size_t>(tag) < sites.size()) __builtin_prefetch(&sites[tag]);
+}
 
 void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uint32_t site, const Box& box,
                    std::span<VertexError> out) {

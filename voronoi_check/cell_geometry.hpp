@@ -13,6 +13,10 @@ namespace dtlab {
 // Area of face f of a cell (Newell's formula).
 double face_area(const VoronoiCell& c, std::size_t f);
 
+// Asks the cache for the sites across the cell's faces (vertex_errors reads them; at
+// 10^5 sites in input order they are misses): called early, the loads overlap other work.
+void prefetch_face_sites(const VoronoiCell& c, std::span<const Point3> sites);
+
 struct VertexError {
   double distance = 0;  // max-norm distance to the intersection of its faces' planes
   bool decided = false; // false: the planes do not fix a point (fewer than 3, parallel)

@@ -128,6 +128,8 @@ class Judge {
     stage(cells_.size(), threads, [&](std::size_t c, Partial& p, Scratch& s) { judge_geometry(c, p, s); });
     r_.seconds_geometry = since(t);
     if (!o_.relation) r_.seconds_dt = nb_.seconds_dt, r_.seconds_tables = nb_.seconds_tables;
+    // One representative per set of equal sites (the relation's, no second sort).
+    for (std::size_t i = 0; i < sites_.size(); ++i) r_.distinct_sites += nb_.rep(static_cast<std::uint32_t>(i)) == i;
   }
 
  private:
@@ -223,7 +225,10 @@ class Judge {
   }
 
   // The exact face of (a, b) clipped to the box, in doubles: its area, or nullopt when
-  // it does not meet the box interior.
+  // it does not meet the box interior. The clip's band is our cells' (1e-12 of the
+  // diagonal): it moves an area by far less than small_face, and above the vertices'
+  // rounding bounds, so only a truly ambiguous cell is redone with exact signs (a band
+  // below them, as 1e-15 was, sent every clipped cell to GMP).
   std::optional<double> true_area(std::uint32_t a, std::uint32_t b, Scratch& s) const {
     nb_.ring_centres(a, b, s.centres);
     const bool bounded = !nb_.hull_edge(a, b) && !s.centres.empty();
@@ -231,7 +236,7 @@ class Judge {
     if (s.clipped_site != a) {
       s.all.assign(s.pos.begin(), s.pos.end());
       s.all.insert(s.all.end(), s.deg.begin(), s.deg.end());
-      compute_cell(s.clipped, sites_, a, s.all, box_, 1e-15);
+      compute_cell(s.clipped, sites_, a, s.all, box_, VoronoiOptions{}.tolerance);
       s.clipped_site = a;
     }
     double area = 0;
@@ -318,6 +323,7 @@ class Judge {
     const VoronoiCell c = cells_.view(k);
     if (c.face_count() == 0) return;
     const std::int64_t site = cells_.site(k);
+    prefetch_face_sites(c, sites_);
     p.faces += c.face_count();
     p.vertices += c.vertices.size();
     p.volume_sum += cell_volume(c);
@@ -386,9 +392,6 @@ VoronoiCheckReport check_voronoi(std::span<const Point3> sites, const Box& box, 
   r.box_volume = box.volume();
   Judge judge(sites, box, cells, options, r);
   judge.run();
-  std::vector<Point3> distinct(sites.begin(), sites.end());
-  std::sort(distinct.begin(), distinct.end(), lex_less);
-  r.distinct_sites = static_cast<std::uint64_t>(std::unique(distinct.begin(), distinct.end()) - distinct.begin());
   decide(r, options);
   r.seconds = since(t0);
   return r;

@@ -158,9 +158,10 @@ bool VoronoiNeighbors::ring_collinear(std::uint32_t a, std::uint32_t b, Neighbor
   return all_collinear(s.ring);
 }
 
-bool VoronoiNeighbors::edge_positive(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const {
+bool VoronoiNeighbors::edge_positive(std::uint32_t a, std::uint32_t b, bool degenerate_star, NeighborScratch& s) const {
   const std::uint64_t key = edge_key(a, b);
   if (hull_edge(a, b)) return !std::binary_search(flat_hull_edges_.begin(), flat_hull_edges_.end(), key);
+  if (!degenerate_star) return true;
   for (auto t : star(a)) {
     const Tet& q = dt_->tets[t];
     if (degenerate_[t] && (q[0] == b || q[1] == b || q[2] == b || q[3] == b)) return !ring_collinear(a, b, s);
@@ -176,14 +177,17 @@ void VoronoiNeighbors::neighbors(std::uint32_t a, std::vector<std::uint32_t>& po
   std::vector<std::uint32_t>& all = degenerate;  // collected here first, then split
   auto& mark = scratch.mark;
   mark.resize(rep_.size(), 0);
-  for (auto t : star(a))
+  bool degenerate_star = false;  // no degenerate tet around a: every interior edge of a is positive
+  for (auto t : star(a)) {
+    degenerate_star |= degenerate_[t] != 0;
     for (auto v : dt_->tets[t])
       if (v != a && !mark[v]) mark[v] = 1, all.push_back(v);
+  }
   for (auto v : all) mark[v] = 0;
   std::sort(all.begin(), all.end());
   std::size_t kept = 0;
   for (auto v : all) {
-    if (edge_positive(a, v, scratch))
+    if (edge_positive(a, v, degenerate_star, scratch))
       positive.push_back(v);
     else
       all[kept++] = v;

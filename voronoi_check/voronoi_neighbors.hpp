@@ -68,7 +68,8 @@ class VoronoiNeighbors {
   double seconds_dt = 0, seconds_tables = 0;
 
  private:
-  bool edge_positive(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const;
+  // degenerate_star: some tet around a is degenerate (else only hull edges need a look).
+  bool edge_positive(std::uint32_t a, std::uint32_t b, bool degenerate_star, NeighborScratch& s) const;
   bool ring_collinear(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const;
   void build_tables(unsigned threads);
   void classify_tets(unsigned threads);
