@@ -171,7 +171,7 @@ class ParallelInsertion {
   // list[from..] on thread 0's view while no other thread runs: no claim can fail but
   // for a tet that only a broken adjacency reaches (a freed slot of another thread).
   bool insert_serially(const std::vector<std::uint32_t>& list, std::size_t from, InsertionLog& log) {
-    const Timed timed(serial_seconds_);
+    const Timed timed{serial_seconds_};
     serial_points_ += list.size() - from;
     Worker& w = *workers_[0];
     w.mesh().attach();
