@@ -80,6 +80,13 @@ struct BuildStats {
   std::uint64_t conflicts = 0;
   unsigned threads = 1;
   std::uint64_t storage_growths = 0;  // parallel build: times the shared tet storage grew
+  // Parallel build, where the insertion's time goes (kernel/README.md, "Where the threaded
+  // insertion loses"): the passes run on threads and their wall seconds; the points
+  // attempted on one thread (the prefix, small or non-progressing passes) and their wall
+  // seconds; the seconds threads waited at the end of a pass for the last one (summed
+  // over the threads) or before their first point (thread start).
+  std::uint64_t parallel_passes = 0, serial_points = 0;
+  double parallel_seconds = 0, serial_seconds = 0, idle_seconds = 0;
   double seconds = 0;                 // wall time of the insertion loop
   // Which stage of the adaptive predicates decided how many calls ("insphere:A", ...).
   std::vector<std::pair<std::string, std::uint64_t>> stages;

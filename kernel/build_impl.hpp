@@ -84,6 +84,26 @@ inline void apply_insertion_order(std::vector<Point3>& points, const std::vector
   restore_input_order(points, rank);
 }
 
+// The same two permutations on `threads` threads (threads > 1): a gather into a second
+// copy of the points (apply: copy[k] = points[order[k]]) or a scatter (restore:
+// copy[order[k]] = points[k]), then swapped in. The copy is transient, before the tet
+// records exist or after they are gone, so below the build's peak memory; the cycle
+// following above is serial and misses on nearly every step.
+inline void permute_points(std::vector<Point3>& points, const std::vector<std::uint32_t>& order, bool restore,
+                           unsigned threads) {
+  const std::size_t n = order.size();
+  std::vector<Point3> copy;
+  copy.reserve(points.capacity());
+  copy.resize(n);
+  parallel_for(n, threads, std::size_t(1) << 15, [&](std::size_t k, unsigned) {
+    if (restore)
+      copy[order[k]] = points[k];
+    else
+      copy[k] = points[order[k]];
+  });
+  points.swap(copy);
+}
+
 }  // namespace detail
 
 // The insertion loop's report in input indices. A duplicate's vertex stands for the first
@@ -230,9 +250,10 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
   // Vertex ids are insertion ranks: vertex k is input point order[k], stored at
   // pts[k], so consecutive insertions read neighbouring coordinates. The output is
   // translated back to input indices.
+  const unsigned threads = std::min(thread_count(opt.threads), kMaxBuildThreads);
   std::vector<std::uint32_t> order;
   if (opt.order == InsertionOrder::brio) {
-    order = brio_order(pts, opt.seed);
+    order = brio_order(pts, opt.seed, threads);
   } else {
     order.resize(n);
     std::iota(order.begin(), order.end(), 0u);
@@ -241,7 +262,10 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
   std::optional<EnclosingTet> big;
   if (opt.boundary == Boundary::bigtet && n >= 4) big = enclosing_tet(pts, opt.bigtet_factor);
   pts.reserve(std::size_t(n) + 4);  // room for the infinite vertex or the bigtet corners
-  detail::apply_insertion_order(pts, order);
+  if (threads > 1)
+    detail::permute_points(pts, order, false, threads);
+  else
+    detail::apply_insertion_order(pts, order);
 
   // The points go back to input order (a copy of `order`: restoring consumes it).
   const auto give_back_points = [&] {
@@ -289,7 +313,7 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
                       inf,
                       {first[0], first[1], first[2], first[3]},
                       opt.boundary == Boundary::infinite,
-                      std::min(thread_count(opt.threads), kMaxBuildThreads),
+                      threads,
                       thread_progress(),
                       {},
                       {}};
@@ -301,7 +325,10 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
     insert_threaded(job);
   if (!res.failure) progress_advance(job.progress, n);
   pts.resize(n);
-  detail::restore_input_order(pts, order);
+  if (threads > 1)
+    detail::permute_points(pts, order, true, threads);
+  else
+    detail::restore_input_order(pts, order);
   res.mesh.points = std::move(pts);
   return res;
 }

@@ -125,10 +125,17 @@ class ClaimedMesh {
   // other tet it holds is released.
   void commit() {
     for (const std::uint32_t t : destroyed_) pool_.push_back(t);
-    for (const std::uint32_t t : claimed_)
-      if (!dead(t)) release(t);
-    for (const std::uint32_t t : created_)
-      if (!dead(t)) release(t);
+    // Without a branch (whether a tet died is unpredictable): a dead tet keeps its owner,
+    // a live one gets 0. The addresses in locals: the byte stores may alias any member.
+    TetRecord* const rec = rec_;
+    std::uint8_t* const own = own_;
+    const std::uint8_t me = me_;
+    const auto settle = [&](std::uint32_t t) {
+      const std::uint8_t keep = rec[t].v[0] == kNone ? me : 0;
+      std::atomic_ref<std::uint8_t>(own[t]).store(keep, std::memory_order_release);
+    };
+    for (const std::uint32_t t : claimed_) settle(t);
+    for (const std::uint32_t t : created_) settle(t);
     clear();
   }
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cassert>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -142,12 +143,26 @@ class ParallelInsertion {
     s.conflicts = conflicts_;
     s.storage_growths = growths_;
     s.threads = static_cast<unsigned>(workers_.size());
+    s.parallel_passes = passes_;
+    s.parallel_seconds = pass_seconds_;
+    s.idle_seconds = idle_seconds_;
+    s.serial_points = serial_points_;
+    s.serial_seconds = serial_seconds_;
     if (caller_stages_)
       for (const AdaptiveStats& st : stages_) detail::add_stages(*caller_stages_, st);
     return s;
   }
 
  private:
+  using Clock = std::chrono::steady_clock;
+  static double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+  // Adds the wall seconds of its scope to `to`.
+  struct Timed {
+    double& to;
+    Clock::time_point start = Clock::now();
+    ~Timed() { to += seconds(Clock::now() - start); }
+  };
+
   struct Range {
     std::size_t cursor, end;
     std::vector<std::uint32_t> deferred;
@@ -156,6 +171,8 @@ class ParallelInsertion {
   // list[from..] on thread 0's view while no other thread runs: no claim can fail but
   // for a tet that only a broken adjacency reaches (a freed slot of another thread).
   bool insert_serially(const std::vector<std::uint32_t>& list, std::size_t from, InsertionLog& log) {
+    const Timed timed{serial_seconds_};
+    serial_points_ += list.size() - from;
     Worker& w = *workers_[0];
     w.mesh().attach();
     for (std::size_t i = from; i < list.size();) {
@@ -189,11 +206,20 @@ class ParallelInsertion {
     std::vector<std::size_t> inserted(threads, 0), conflicts(threads, 0);
     std::optional<InsertionLog::Failure> failure;
     std::mutex failure_mutex;
+    ++passes_;
     for (;;) {
       for (auto& w : workers_) w->mesh().attach();
       std::atomic<bool> stop{false}, full{false};
+      // Each worker's first and last moment in the pass (thread start, the barrier's wait).
+      std::vector<Clock::time_point> began(threads), ended(threads);
+      const Clock::time_point pass_start = Clock::now();
       parallel_chunks(threads, threads, 1, [&](std::size_t begin, std::size_t end, unsigned w) {
         Worker& ins = *workers_[w];
+        if (began[w] == Clock::time_point{}) began[w] = Clock::now();
+        const struct Ended {
+          Clock::time_point& at;
+          ~Ended() { at = Clock::now(); }
+        } mark{ended[w]};
         for (std::size_t r = begin; r < end; ++r) {
           Range& range = ranges[r];
           try {
@@ -225,6 +251,13 @@ class ParallelInsertion {
           }
         }
       });
+      const Clock::time_point pass_end = Clock::now();
+      pass_seconds_ += seconds(pass_end - pass_start);
+      for (unsigned w = 0; w < threads; ++w)
+        if (began[w] != Clock::time_point{})
+          idle_seconds_ += seconds(began[w] - pass_start) + seconds(pass_end - ended[w]);
+        else
+          idle_seconds_ += seconds(pass_end - pass_start);
       if (failure || !full.load()) break;
       grow();
     }
@@ -275,6 +308,8 @@ class ParallelInsertion {
   std::size_t vertices_ = 0;  // in the mesh (the infinite vertex counted)
   std::uint64_t conflicts_ = 0;
   std::size_t growths_ = 0;
+  std::uint64_t passes_ = 0, serial_points_ = 0;
+  double pass_seconds_ = 0, serial_seconds_ = 0, idle_seconds_ = 0;
 };
 
 }  // namespace dtlab

@@ -1,9 +1,12 @@
 #include "kernel/spatial_order.hpp"
 
+#include "kernel/parallel_for.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <thread>
 
 namespace dtlab {
 
@@ -118,6 +121,19 @@ void refine_runs(std::vector<std::uint64_t>& keys, std::size_t begin, std::size_
   }
 }
 
+// Sorts [begin, end): on two threads when `threads` > 1 and the range is large, each half
+// sorted on its own and the halves merged. The keys are distinct (the index is part of
+// each), so the result is std::sort's.
+void sort_keys(std::vector<std::uint64_t>& keys, std::size_t begin, std::size_t end, unsigned threads) {
+  const auto at = [&](std::size_t i) { return keys.begin() + static_cast<std::ptrdiff_t>(i); };
+  if (threads < 2 || end - begin < (std::size_t(1) << 16)) return std::sort(at(begin), at(end));
+  const std::size_t mid = begin + (end - begin) / 2;
+  std::thread other([&] { std::sort(at(mid), at(end)); });
+  std::sort(at(begin), at(mid));
+  other.join();
+  std::inplace_merge(at(begin), at(mid), at(end));
+}
+
 }  // namespace
 
 std::vector<std::size_t> brio_rounds(std::size_t n) {
@@ -132,12 +148,13 @@ std::vector<std::size_t> brio_rounds(std::size_t n) {
   return starts;
 }
 
-std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed) {
+std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed, unsigned threads) {
   // Keys are computed in input order (sequential reads of the points), then shuffled
   // together with their indices: no random access into the point array.
   const HilbertGrid grid(points);
   std::vector<std::uint64_t> keys(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) keys[i] = keyed(grid.key(points[i]), static_cast<std::uint32_t>(i));
+  parallel_for(points.size(), threads, std::size_t(1) << 15,
+               [&](std::size_t i, unsigned) { keys[i] = keyed(grid.key(points[i]), static_cast<std::uint32_t>(i)); });
   std::mt19937_64 rng(seed);
   std::shuffle(keys.begin(), keys.end(), rng);
   // Rounds [n/8^(k+1), n/8^k), the first one holding everything below 128 points.
@@ -148,7 +165,7 @@ std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint6
   const std::vector<std::size_t> rounds = brio_rounds(keys.size());
   for (std::size_t r = 0; r + 1 < rounds.size(); ++r) {
     const std::size_t begin = rounds[r], end = rounds[r + 1];
-    std::sort(keys.begin() + static_cast<std::ptrdiff_t>(begin), keys.begin() + static_cast<std::ptrdiff_t>(end));
+    sort_keys(keys, begin, end, threads);
     refine_runs(keys, begin, end, points, 0);
   }
   std::vector<std::uint32_t> order(keys.size());

@@ -15,8 +15,9 @@ namespace dtlab {
 std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits);
 
 // A BRIO permutation of 0..n-1: random rounds [n/8^(k+1), n/8^k), the last (7/8 of
-// the points) largest, each round Hilbert-sorted.
-std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed);
+// the points) largest, each round Hilbert-sorted. `threads` > 1: the keys and the sort
+// of the large rounds on threads (the same permutation).
+std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed, unsigned threads = 1);
 
 // The rounds of brio_order for n points, first to last: positions [r[k], r[k+1]) of
 // the order, r.front() == 0, r.back() == n.

@@ -21,6 +21,12 @@ nlohmann::json tetra_summary(const BuildResult& r, const KernelOptions& k) {
   j["build_threads"] = r.stats.threads;
   j["conflicts"] = r.stats.conflicts;              // parallel build: insertions rolled back and retried
   j["storage_growths"] = r.stats.storage_growths;  // parallel build: the shared tet storage grew
+  if (r.stats.threads > 1)
+    j["parallel"] = {{"passes", r.stats.parallel_passes},
+                     {"pass_seconds", r.stats.parallel_seconds},
+                     {"idle_seconds", r.stats.idle_seconds},
+                     {"serial_points", r.stats.serial_points},
+                     {"serial_seconds", r.stats.serial_seconds}};
   for (const auto& [stage, count] : r.stats.stages) j["adaptive_stages"][stage] = count;
   if (r.failure)
     j["failure"] = {

@@ -251,6 +251,26 @@ TEST_CASE("parallel build: the storage grows during the build, the serial build'
   CHECK(build_delaunay(curve, kAdaptiveSos, o).stats.storage_growths > 0);
 }
 
+TEST_CASE("parallel build: where the insertion's time goes (passes, serial points, idle seconds)", "[threads]") {
+  const std::vector<Point3> pts = uniform(20000, 5);
+  const BuildStats serial = build_delaunay(pts, kAdaptiveSos).stats;
+  CHECK(serial.parallel_passes == 0);
+  CHECK(serial.serial_points == 0);
+  CHECK(serial.parallel_seconds == 0);
+  CHECK(serial.idle_seconds == 0);
+  BuildOptions o;
+  o.threads = 2;  // the default grain 2048: the first 4096 vertices are inserted on one thread
+  const BuildStats s = build_delaunay(pts, kAdaptiveSos, o).stats;
+  CHECK(s.parallel_passes >= 1);
+  CHECK(s.serial_points >= 4096 - 4);  // the prefix, less the first tet's four points
+  CHECK(s.serial_points < pts.size());
+  CHECK(s.parallel_seconds > 0);
+  CHECK(s.serial_seconds > 0);
+  CHECK(s.idle_seconds >= 0);
+  CHECK(s.idle_seconds <= 2 * s.parallel_seconds);
+  CHECK(s.parallel_seconds + s.serial_seconds <= s.seconds);
+}
+
 TEST_CASE("parallel build: lattice points (sos), input order, bigtet, duplicates", "[threads]") {
   auto pts = lattice(14, 3);
   require_same_as_serial(pts, kAdaptiveSos, {}, 1);
