@@ -287,7 +287,13 @@ std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32
     return std::pair{s.r[0], s.r[2]};
   });
   std::vector<std::uint64_t> off;
-  std::vector<std::uint32_t> seen(workers == 1 ? point_count : 0, kNone);
+  // Distinct other ends per bucket: seen[r] holds the last bucket that met rank r. A
+  // bucket is visited once, by one worker, so a stale mark never equals the bucket being
+  // counted and the marks never need a reset. One array per worker while they cost no
+  // more than the entries (4 bytes per point each); else a parallel worker sorts its
+  // buckets instead.
+  const bool marks_per_worker = workers == 1 || std::uint64_t{workers} * point_count <= most;
+  std::vector<std::vector<std::uint32_t>> seen(marks_per_worker ? workers : 0);
   std::uint64_t edges = 0;
   for (std::size_t part = 0; part + 1 < cut.size(); ++part) {
     const std::size_t lo = cut[part], hi = cut[part + 1];
@@ -302,23 +308,24 @@ std::uint64_t count_edges(std::span<const Tet> tets, std::span<const std::uint32
         if (s.r[i] >= lo && s.r[i] < hi)
           for (int j = i + 1; j < 4; ++j) other[pos[s.r[i] - lo]++] = s.r[j];
     }
-    if (workers == 1) {
-      // Distinct other ends per bucket: seen[r] holds the last bucket that met rank r
-      // (buckets are visited once each, in increasing order, so it never needs a reset).
-      for (std::size_t a = lo; a < hi; ++a)
-        for (std::uint64_t i = off[a - lo]; i < off[a - lo + 1]; ++i)
-          if (seen[other[i]] != a) seen[other[i]] = static_cast<std::uint32_t>(a), ++edges;
-      continue;
-    }
-    // In parallel: each bucket's other ends sorted in place and counted once each.
     std::atomic<std::uint64_t> found{0};
-    parallel_chunks(hi - lo, workers, 4096, [&](std::size_t b, std::size_t e, unsigned) {
+    parallel_chunks(hi - lo, workers, 4096, [&](std::size_t b, std::size_t e, unsigned w) {
       std::uint64_t local = 0;
-      for (std::size_t a = b; a < e; ++a) {
-        std::uint32_t* first = other.get() + off[a];
-        std::uint32_t* last = other.get() + off[a + 1];
-        std::sort(first, last);
-        local += static_cast<std::uint64_t>(std::unique(first, last) - first);
+      if (marks_per_worker) {
+        std::vector<std::uint32_t>& mark = seen[w];
+        if (mark.empty()) mark.assign(point_count, kNone);
+        for (std::size_t a = b; a < e; ++a) {
+          const auto bucket = static_cast<std::uint32_t>(lo + a);
+          for (std::uint64_t i = off[a]; i < off[a + 1]; ++i)
+            if (mark[other[i]] != bucket) mark[other[i]] = bucket, ++local;
+        }
+      } else {
+        for (std::size_t a = b; a < e; ++a) {
+          std::uint32_t* first = other.get() + off[a];
+          std::uint32_t* last = other.get() + off[a + 1];
+          std::sort(first, last);
+          local += static_cast<std::uint64_t>(std::unique(first, last) - first);
+        }
       }
       found += local;
     });
