@@ -65,9 +65,10 @@ inline void compact(TetRecord* records, std::size_t size, std::uint32_t n, const
   }
 }
 
-// Moves points[k] to position order[k] in place (order is consumed: it ends as the
-// identity): the inverse of the renumbering, with no second copy of the points.
-inline void restore_input_order(std::vector<Point3>& points, std::vector<std::uint32_t>& order) {
+// Moves points[k] to position order[k] for every k, in place, by following the cycles of
+// the permutation (order is consumed: it ends as the identity). No second copy of the
+// points, but a miss on nearly every step.
+inline void follow_cycles(std::vector<Point3>& points, std::vector<std::uint32_t>& order) {
   for (std::size_t s = 0; s < order.size(); ++s)
     while (order[s] != s) {
       const std::uint32_t j = order[s];
@@ -76,21 +77,12 @@ inline void restore_input_order(std::vector<Point3>& points, std::vector<std::ui
     }
 }
 
-// Moves points[j] to position order[j] for every j: the renumbering into insertion
-// order, in place (`order` is the insertion order: the inverse is formed, then consumed).
-inline void apply_insertion_order(std::vector<Point3>& points, const std::vector<std::uint32_t>& order) {
-  std::vector<std::uint32_t> rank(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) rank[order[k]] = static_cast<std::uint32_t>(k);
-  restore_input_order(points, rank);
-}
-
-// The same two permutations on `threads` threads (threads > 1): a gather into a second
-// copy of the points (apply: copy[k] = points[order[k]]) or a scatter (restore:
-// copy[order[k]] = points[k]), then swapped in. The copy is transient, before the tet
-// records exist or after they are gone, so below the build's peak memory; the cycle
-// following above is serial and misses on nearly every step.
-inline void permute_points(std::vector<Point3>& points, const std::vector<std::uint32_t>& order, bool restore,
-                           unsigned threads) {
+// Through a second copy of the points on `threads` threads: a gather (restore false:
+// copy[k] = points[order[k]]) or a scatter (restore true: copy[order[k]] = points[k]),
+// then swapped in. The copy is transient, taken before the tet records exist or after
+// they are gone, so it stays below the build's peak memory.
+inline void permute_through_copy(std::vector<Point3>& points, const std::vector<std::uint32_t>& order, bool restore,
+                                 unsigned threads) {
   const std::size_t n = order.size();
   std::vector<Point3> copy;
   copy.reserve(points.capacity());
@@ -102,6 +94,22 @@ inline void permute_points(std::vector<Point3>& points, const std::vector<std::u
       copy[k] = points[order[k]];
   });
   points.swap(copy);
+}
+
+// The renumbering into insertion order: afterwards points[k] is the input's
+// points[order[k]]. One thread: in place (no copy); more: the parallel gather.
+inline void to_insertion_order(std::vector<Point3>& points, const std::vector<std::uint32_t>& order, unsigned threads) {
+  if (threads > 1) return permute_through_copy(points, order, false, threads);
+  std::vector<std::uint32_t> rank(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) rank[order[k]] = static_cast<std::uint32_t>(k);
+  follow_cycles(points, rank);
+}
+
+// Its inverse: points[k] goes back to position order[k]. `order` is consumed (its
+// contents afterwards are unspecified). One thread: in place; more: the parallel scatter.
+inline void to_input_order(std::vector<Point3>& points, std::vector<std::uint32_t>& order, unsigned threads) {
+  if (threads > 1) return permute_through_copy(points, order, true, threads);
+  follow_cycles(points, order);
 }
 
 }  // namespace detail
@@ -262,16 +270,13 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
   std::optional<EnclosingTet> big;
   if (opt.boundary == Boundary::bigtet && n >= 4) big = enclosing_tet(pts, opt.bigtet_factor);
   pts.reserve(std::size_t(n) + 4);  // room for the infinite vertex or the bigtet corners
-  if (threads > 1)
-    detail::permute_points(pts, order, false, threads);
-  else
-    detail::apply_insertion_order(pts, order);
+  detail::to_insertion_order(pts, order, threads);
 
   // The points go back to input order (a copy of `order`: restoring consumes it).
   const auto give_back_points = [&] {
     pts.resize(n);
     std::vector<std::uint32_t> o = order;
-    detail::restore_input_order(pts, o);
+    detail::to_input_order(pts, o, threads);
     res.mesh.points = std::move(pts);
   };
   auto lower_dimensional = [&](const char* why) {
@@ -325,10 +330,7 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
     insert_threaded(job);
   if (!res.failure) progress_advance(job.progress, n);
   pts.resize(n);
-  if (threads > 1)
-    detail::permute_points(pts, order, true, threads);
-  else
-    detail::restore_input_order(pts, order);
+  detail::to_input_order(pts, order, threads);
   res.mesh.points = std::move(pts);
   return res;
 }

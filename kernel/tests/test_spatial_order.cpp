@@ -1,9 +1,11 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <numeric>
 #include <random>
 #include <set>
 
+#include "kernel/build_impl.hpp"
 #include "kernel/spatial_order.hpp"
 #include "tests/support/random_points.hpp"
 
@@ -58,5 +60,24 @@ TEST_CASE("brio order on threads is the serial one", "[threads]") {
     INFO("threads " << threads);
     const bool same = brio_order(pts, 3, threads) == serial;  // as a bool: Catch would print the arrays
     CHECK(same);
+  }
+}
+
+TEST_CASE("the points' permutations into insertion order and back, on one and many threads", "[threads]") {
+  // 100 000 points: more than one parallel chunk (2^15) per thread at 3 threads.
+  const std::vector<Point3> input = test::uniform(100000, 5, 0, 1);
+  std::vector<std::uint32_t> order(input.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::shuffle(order.begin(), order.end(), std::mt19937(7));
+  for (unsigned threads : {1u, 2u, 3u, 8u}) {
+    std::vector<Point3> pts = input;
+    detail::to_insertion_order(pts, order, threads);
+    REQUIRE(pts.size() == input.size());
+    bool renumbered = true;
+    for (std::size_t k = 0; k < pts.size(); ++k) renumbered = renumbered && pts[k] == input[order[k]];
+    CHECK(renumbered);
+    std::vector<std::uint32_t> consumed = order;
+    detail::to_input_order(pts, consumed, threads);
+    CHECK(pts == input);
   }
 }
