@@ -66,12 +66,26 @@ inline bool in_pass(const std::vector<std::uint8_t>& span, std::size_t t, std::s
   return span.empty() || ((span[t] >> 4) <= part && part <= (span[t] & 15u));
 }
 
-// Bucket-local sort by (b, c, ref), then groups of equal (b, c).
+// Bucket-local sort by (b, c, ref), then groups of equal (b, c). A bucket holds about
+// 27 entries (a vertex's facets in a Delaunay mesh): an insertion sort on the packed
+// (b, c) key up to 48 entries, std::sort beyond.
 template <class Group>
 void for_each_group(Entry* first, Entry* last, Group&& group) {
-  std::sort(first, last, [](const Entry& x, const Entry& y) {
-    return x.b != y.b ? x.b < y.b : (x.c != y.c ? x.c < y.c : x.ref < y.ref);
-  });
+  const auto key = [](const Entry& x) { return std::uint64_t{x.b} << 32 | x.c; };
+  const auto before = [&](const Entry& x, const Entry& y) {
+    const std::uint64_t kx = key(x), ky = key(y);
+    return kx != ky ? kx < ky : x.ref < y.ref;
+  };
+  if (last - first <= 48) {
+    for (Entry* i = first + 1; i < last; ++i) {
+      const Entry e = *i;
+      Entry* j = i;
+      for (; j != first && before(e, *(j - 1)); --j) *j = *(j - 1);
+      *j = e;
+    }
+  } else {
+    std::sort(first, last, before);
+  }
   for (Entry* i = first; i != last;) {
     Entry* j = i + 1;
     while (j != last && j->b == i->b && j->c == i->c) ++j;
