@@ -103,35 +103,45 @@ inline void abs_cross(const double* a, const double* b, double* out) {
 
 }  // namespace
 
-double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
-                             const FilterPlane& d) {
+bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& d, PlanesMeet& out) {
   constexpr double u = 0x1p-53;
-  if (!(a.ok && b.ok && d.ok)) return -1;
-  const double mprod = a.norm * b.norm * d.norm;
-  if (!(mprod >= 0x1p-900 && mprod <= 0x1p900)) return -1;
+  if (!(a.ok && b.ok && d.ok)) return false;
+  out.norms = a.norm * b.norm * d.norm;
+  if (!(out.norms >= 0x1p-900 && out.norms <= 0x1p900)) return false;
   double bd[3], da[3], ab[3], pbd[3], pda[3], pab[3];
   cross(b.n, d.n, bd);
   abs_cross(b.n, d.n, pbd);
   const double det = a.n[0] * bd[0] + a.n[1] * bd[1] + a.n[2] * bd[2];
   const double p_d = std::abs(a.n[0]) * pbd[0] + std::abs(a.n[1]) * pbd[1] + std::abs(a.n[2]) * pbd[2];
-  const double adet = std::abs(det), e_d = 9 * u * p_d;
-  if (!(e_d <= 0x1p-10 * adet) || !(adet - e_d > 2e-9 * mprod)) return -1;
+  out.det = std::abs(det), out.det_error = 9 * u * p_d;
+  if (!(out.det_error <= 0x1p-10 * out.det)) return false;
   cross(d.n, a.n, da);
   cross(a.n, b.n, ab);
   abs_cross(d.n, a.n, pda);
   abs_cross(a.n, b.n, pab);
   const double ca = std::abs(a.c), cb = std::abs(b.c), cd = std::abs(d.c);
+  for (int j = 0; j < 3; ++j) {
+    const double p_n = ca * pbd[j] + cb * pda[j] + cd * pab[j];
+    if (!(p_n <= 0x1p900)) return false;
+    out.x[j] = (a.c * bd[j] + b.c * da[j] + d.c * ab[j]) / det;
+    const double ax = std::abs(out.x[j]);
+    // An underflowed term of p_n (below 2^-900) errs by far less than u 2^-900.
+    out.error[j] = 1.01 * (13 * u * std::max(p_n, 0x1p-900) + ax * out.det_error) / out.det + 1.01 * u * ax;
+    if (!std::isfinite(out.error[j])) return false;
+  }
+  return true;
+}
+
+double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
+                             const FilterPlane& d) {
+  constexpr double u = 0x1p-53;
+  PlanesMeet m;
+  if (!planes_meet(a, b, d, m) || !(m.det - m.det_error > 2e-9 * m.norms)) return -1;
   const double t[3] = {p.x - site.x, p.y - site.y, p.z - site.z};
   double dist = 0, bound = 0;
   for (int j = 0; j < 3; ++j) {
-    const double p_n = ca * pbd[j] + cb * pda[j] + cd * pab[j];
-    if (!(p_n <= 0x1p900)) return -1;
-    const double x = (a.c * bd[j] + b.c * da[j] + d.c * ab[j]) / det;
-    const double e = t[j] - x;
-    const double ax = std::abs(x), ae = std::abs(e);
-    // An underflowed term of p_n (below 2^-900) errs by far less than u 2^-900.
-    const double bj =
-        1.01 * (13 * u * std::max(p_n, 0x1p-900) + ax * e_d) / adet + 1.01 * u * (ax + std::abs(t[j]) + ae);
+    const double ae = std::abs(t[j] - m.x[j]);
+    const double bj = m.error[j] + 1.01 * u * (std::abs(t[j]) + ae);
     if (!std::isfinite(ae) || !std::isfinite(bj)) return -1;
     dist = std::max(dist, ae);
     bound = std::max(bound, bj);

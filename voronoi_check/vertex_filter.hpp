@@ -27,6 +27,18 @@ struct FilterPlane {
 bool filter_plane(std::int32_t tag, std::span<const Point3> sites, const Point3& site, const vor::Box& box,
                   FilterPlane& out);
 
+// Where planes a, b, d meet (relative to their site), in doubles: x, and per
+// coordinate a bound on its error against the exact point (the planes of the exact
+// inputs). False when the bound does not hold or the planes are too ill-conditioned
+// for it (then the exact point may not even exist). det: |det(n_a, n_b, n_d)|
+// rounded, det_error its error bound (at most det / 1024, so the exact det is not 0),
+// norms: the product of the planes' norms.
+struct PlanesMeet {
+  double x[3], error[3];
+  double det, det_error, norms;
+};
+bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& d, PlanesMeet& out);
+
 // An upper bound on the distance (max norm) that the long double solve of the three
 // planes a, b, d (in that order) gives for vertex p of the cell of `site`, valid when
 // that solve also finds the triple well-conditioned (`decided`); the bound is returned
