@@ -20,9 +20,11 @@ std::vector<TetSphere> tet_spheres(std::span<const Point3> p, std::span<const Te
       TetSphere& s = out[t];
       s.error = INFINITY;
       FilterPlane pl[3];
-      for (int k = 0; k < 3; ++k) filter_plane(static_cast<std::int32_t>(q[k + 1]), p, o, no_walls, pl[k]);
+      bool ok = true;
+      for (int k = 0; k < 3; ++k)  // an id beyond int32 would read as a wall: left uncertified
+        ok = ok && q[k + 1] <= 0x7FFFFFFFu && filter_plane(static_cast<std::int32_t>(q[k + 1]), p, o, no_walls, pl[k]);
       PlanesMeet m;
-      if (!planes_meet(pl[0], pl[1], pl[2], m)) continue;
+      if (!ok || !planes_meet(pl[0], pl[1], pl[2], m)) continue;
       // The centre o + x: one rounding more per coordinate.
       double err = 0;
       const double oc[3] = {o.x, o.y, o.z};
