@@ -6,6 +6,8 @@
 #include <optional>
 #include <vector>
 
+#include "voronoi_check/vertex_filter.hpp"
+
 namespace dtlab {
 
 using namespace vor;
@@ -56,9 +58,10 @@ bool plane_of(std::int32_t tag, std::span<const Point3> sites, const Point3& s, 
 // The per-cell arrays of vertex_errors, kept per thread (no allocation per cell).
 struct VertexScratch {
   std::vector<std::uint32_t> off, inc, fill;
-  std::vector<Plane> face_plane;
+  std::vector<Plane> face_plane;  // long double, built on first use (face_ld)
   std::vector<L> face_norm;
-  std::vector<char> face_ok;
+  std::vector<char> face_ok, face_ld;
+  std::vector<FilterPlane> filter;
   std::vector<std::size_t> planes;  // the faces at one vertex with a plane
 };
 
@@ -114,7 +117,7 @@ void prefetch_face_sites(const VoronoiCell& c, std::span<const Point3> sites) {
 }
 
 void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uint32_t site, const Box& box,
-                   std::span<VertexError> out) {
+                   std::span<VertexError> out, double below) {
   thread_local VertexScratch s;
   const Point3 st = sites[site];
   faces_by_vertex(c, s);
@@ -122,14 +125,27 @@ void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uin
   s.face_plane.resize(nf);
   s.face_norm.resize(nf);
   s.face_ok.resize(nf);
-  for (std::size_t f = 0; f < nf; ++f) {
-    s.face_ok[f] = plane_of(c.face_neighbor[f], sites, st, box, s.face_plane[f]);
-    if (s.face_ok[f]) s.face_norm[f] = lnorm(s.face_plane[f].n);
-  }
+  s.face_ld.assign(nf, 0);
+  s.filter.resize(nf);
+  for (std::size_t f = 0; f < nf; ++f) s.face_ok[f] = filter_plane(c.face_neighbor[f], sites, st, box, s.filter[f]);
   for (std::size_t v = 0; v < c.vertices.size(); ++v) {
     s.planes.clear();
     for (auto k = s.off[v]; k < s.off[v + 1] && s.planes.size() < 8; ++k)
       if (s.face_ok[s.inc[k]]) s.planes.push_back(s.inc[k]);
+    const auto& pl = s.planes;
+    if (below >= 0 && pl.size() == 3) {
+      const double u = vertex_distance_bound(c.vertices[v], st, s.filter[pl[0]], s.filter[pl[1]], s.filter[pl[2]]);
+      if (u >= 0 && u <= below) {
+        out[v] = VertexError{0, true, true};
+        continue;
+      }
+    }
+    for (auto f : pl)
+      if (!s.face_ld[f]) {
+        plane_of(c.face_neighbor[f], sites, st, box, s.face_plane[f]);
+        s.face_norm[f] = lnorm(s.face_plane[f].n);
+        s.face_ld[f] = 1;
+      }
     const auto e = vertex_error(c.vertices[v], st, s);
     out[v] = e ? VertexError{static_cast<double>(*e), true} : VertexError{};
   }

@@ -18,15 +18,19 @@ double face_area(const VoronoiCell& c, std::size_t f);
 void prefetch_face_sites(const VoronoiCell& c, std::span<const Point3> sites);
 
 struct VertexError {
-  double distance = 0;  // max-norm distance to the intersection of its faces' planes
-  bool decided = false; // false: the planes do not fix a point (fewer than 3, parallel)
+  double distance = 0;   // max-norm distance to the intersection of its faces' planes
+  bool decided = false;  // false: the planes do not fix a point (fewer than 3, parallel)
+  bool below = false;    // decided, distance not computed: certified at most `below`
 };
 
 // Per vertex of the cell of `site` (sites: all sites; neighbour ids index them,
 // -1..-6 are the walls of `box`): the intersection of the three best-conditioned
 // planes of its faces, solved in long double relative to the site, and the vertex's
-// distance to it. `out` gets one entry per vertex.
+// distance to it. `out` gets one entry per vertex. With `below` >= 0, a vertex on three
+// planes whose distance the certified double filter (vertex_filter.hpp) bounds by
+// `below` is not solved: `below` set, the distance left 0; every distance computed is
+// the long double solve's, whatever `below`.
 void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uint32_t site, const vor::Box& box,
-                   std::span<VertexError> out);
+                   std::span<VertexError> out, double below = -1);
 
 }  // namespace dtlab

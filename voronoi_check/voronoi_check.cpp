@@ -78,6 +78,7 @@ struct Partial {
   std::array<std::uint64_t, kVoronoiDefects> counts{};
   std::vector<VoronoiWitness> witnesses;
   double largest_wrong_face = 0, largest_small_face = 0, max_vertex_ulps = 0, max_vertex_error = 0;
+  double max_vertex_distance = 0;  // the chunk's largest vertex distance so far (absolute)
   double volume_sum = 0;
   std::uint64_t faces = 0, vertices = 0, voronoi_edges = 0, degenerate_edges = 0;
 };
@@ -333,13 +334,17 @@ class Judge {
     if (!why.empty()) add(p, VoronoiDefect::not_convex, site, -1, 0, why);
     if (site < 0 || static_cast<std::size_t>(site) >= sites_.size()) return;
     s.errors.resize(c.vertices.size());
-    vertex_errors(c, sites_, static_cast<std::uint32_t>(site), box_, s.errors);
+    // A vertex certified no farther than the chunk's largest distance so far and within
+    // the tolerance changes no number of the report: its solve is skipped.
+    const double tol = o_.vertex_tolerance * diag;
+    vertex_errors(c, sites_, static_cast<std::uint32_t>(site), box_, s.errors, std::min(p.max_vertex_distance, tol));
     const double ulp = std::nextafter(coord_max_, INFINITY) - coord_max_;
     for (const auto& e : s.errors) {
-      if (!e.decided) continue;
+      if (!e.decided || e.below) continue;
+      p.max_vertex_distance = std::max(p.max_vertex_distance, e.distance);
       p.max_vertex_ulps = std::max(p.max_vertex_ulps, e.distance / ulp);
       p.max_vertex_error = std::max(p.max_vertex_error, e.distance / diag);
-      if (e.distance > o_.vertex_tolerance * diag) add(p, VoronoiDefect::vertex_off, site, -1, e.distance / diag);
+      if (e.distance > tol) add(p, VoronoiDefect::vertex_off, site, -1, e.distance / diag);
     }
   }
 

@@ -13,6 +13,7 @@
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/voronoi.hpp"
 #include "voronoi_check/exact_centre.hpp"
+#include "voronoi_check/tet_spheres.hpp"
 
 namespace dtlab {
 
@@ -67,28 +68,32 @@ VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, std::shared_pt
   seconds_tables = since(t1);
 }
 
-// Flat tets (exact orient3d 0), then tets with a cospherical facet (exact insphere 0
-// of a facet and its two apexes; a flat tet is degenerate too).
-void VoronoiNeighbors::classify_tets(unsigned threads) {
+// Flat tets (exact orient3d 0; a tet whose certified centre exists is not flat).
+void VoronoiNeighbors::classify_tets(unsigned threads, std::span<const TetSphere> spheres) {
   const FilteredExact pred;
   const auto& p = dt_->points;
   const std::size_t nt = dt_->tets.size();
   flat_.assign(nt, 0);
   parallel_for(nt, threads, 4096, [&](std::size_t t, unsigned) {
+    if (std::isfinite(spheres[t].error)) return;
     const Tet& q = dt_->tets[t];
     flat_[t] = pred.orient3d(p[q[0]], p[q[1]], p[q[2]], p[q[3]]) == 0;
   });
   degenerate_ = flat_;
 }
 
-// Stars, flat and degenerate tets, hull edges and the degenerate ones.
+// Stars, flat tets, then tets with a cospherical facet (exact insphere 0 of a facet and
+// its two apexes, asked only when the tets' certified centres are not apart; a flat tet
+// is degenerate too), hull edges and the degenerate ones.
 void VoronoiNeighbors::build_tables(unsigned threads) {
   const FilteredExact pred;
   const auto& p = dt_->points;
   vertex_stars(p.size(), dt_->tets, star_off_, star_);
-  classify_tets(threads);
+  const std::vector<TetSphere> spheres = tet_spheres(p, dt_->tets, threads);
+  classify_tets(threads, spheres);
   const auto cospherical = [&](const FacetPair& f) {
-    if (flat_[f.r1 / 4] && flat_[f.r2 / 4]) return 0;
+    const std::uint32_t t1 = f.r1 / 4, t2 = f.r2 / 4;
+    if ((flat_[t1] && flat_[t2]) || surely_apart(spheres[t1], spheres[t2])) return 0;
     return pred.insphere(p[f.v[0]], p[f.v[1]], p[f.v[2]], p[f.apex1], p[f.apex2]) == 0 ? 1 : 0;
   };
   const auto mark = [&](const FacetPair& f, int) { degenerate_[f.r1 / 4] = degenerate_[f.r2 / 4] = 1; };

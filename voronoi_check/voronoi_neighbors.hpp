@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "voronoi_check/exact_centre.hpp"
+#include "voronoi_check/tet_spheres.hpp"
 
 #include "kernel/tetrahedralization.hpp"
 
@@ -72,7 +73,7 @@ class VoronoiNeighbors {
   bool edge_positive(std::uint32_t a, std::uint32_t b, bool degenerate_star, NeighborScratch& s) const;
   bool ring_collinear(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const;
   void build_tables(unsigned threads);
-  void classify_tets(unsigned threads);
+  void classify_tets(unsigned threads, std::span<const TetSphere> spheres);
 
   std::vector<std::uint32_t> rep_;
   std::shared_ptr<const Tetrahedralization> dt_;

@@ -1,0 +1,56 @@
+// The tables' circumcentre filter (voronoi_check/tet_spheres.hpp): every certified
+// centre lies within its bound of the exact (GMP) centre, so centres called apart are
+// apart, on uniform sites and on the cospherical, lattice and badly conditioned
+// families where many tets share one exact centre.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "fuzz/families.hpp"
+#include "kernel/build.hpp"
+#include "voronoi/voronoi.hpp"
+#include "voronoi_check/exact_centre.hpp"
+#include "voronoi_check/tet_spheres.hpp"
+
+using namespace dtlab;
+
+TEST_CASE("tet spheres: certified centres hold the exact ones; apart means apart", "[tet-spheres]") {
+  std::size_t certified = 0, shared = 0;
+  for (const char* name : {"uniform", "lattice", "cospherical", "lattice_subset", "clustered", "near_degenerate",
+                           "extreme_scale", "moment_curve"}) {
+    const fuzz::Family* f = fuzz::find_family(name);
+    REQUIRE(f);
+    const auto pts = f->generate(200, 3);
+    BuildOptions bo;
+    bo.count_stages = false;
+    BuildResult r = build_delaunay(pts, PredicateSpec{"adaptive", 0, false, true}, bo);
+    if (r.failure) continue;
+    const auto& tets = r.mesh.tets;
+    const std::vector<TetSphere> s = tet_spheres(pts, tets, 2);
+    std::vector<ExactPoint> exact(tets.size());
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+      const Tet& q = tets[t];
+      if (!std::isfinite(s[t].error)) continue;
+      ++certified;
+      exact[t] = exact_circumcentre(pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]]);
+      INFO(name << " tet " << t);
+      for (int j = 0; j < 3; ++j) REQUIRE(abs(mpq_class(s[t].c[j]) - exact[t][j]) <= mpq_class(s[t].error));
+    }
+    // Pairs of tets around one vertex: apart only when the exact centres differ.
+    std::vector<std::uint32_t> off, star;
+    vertex_stars(pts.size(), tets, off, star);
+    for (std::size_t v = 0; v + 1 < off.size(); ++v)
+      for (auto i = off[v]; i < off[v + 1]; ++i)
+        for (auto j = i + 1; j < off[v + 1]; ++j) {
+          const auto a = star[i], b = star[j];
+          if (!std::isfinite(s[a].error) || !std::isfinite(s[b].error)) continue;
+          const bool same = exact[a] == exact[b];
+          shared += same;
+          INFO(name << " tets " << a << ", " << b);
+          if (same) REQUIRE_FALSE(surely_apart(s[a], s[b]));
+        }
+  }
+  CHECK(certified > 1000);
+  CHECK(shared > 100);  // the lattices and spheres do test coincident centres
+}

@@ -1,0 +1,152 @@
+#include "voronoi_check/vertex_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+// Compiled with -ffp-contract=off (CMakeLists.txt): the counts below assume one
+// rounding per + - * / sqrt, no fused multiply-add.
+//
+// The bound (Shewchuk-style a-priori counts, u = 2^-53, u_L = 2^-64 for long double;
+// gamma_k = k u / (1 - k u) bounds k relative roundings of one product term; Higham,
+// "Accuracy and Stability of Numerical Algorithms", lemma 3.1). Exact quantities are
+// written plain, computed ones with ~.
+//
+// Planes. Bisector: n_k = q_k - s_k (1 rounding), c = ((n0 n0 + n1 n1) + n2 n2) / 2
+// (each product term: 2 from its n's, 1 product, at most 2 sums: 5; /2 is exact in
+// range). Wall: n = e_k exact, c = w - s_k (1 rounding). So every n component carries
+// at most 1 rounding, every c at most 5, as product terms of the exact inputs.
+// The norm m~ = sqrt(n~ . n~) (5 + 1 roundings): ||n|| <= m~ (1 + 4u).
+//
+// Determinant D = a . (b x d): a_j (1) times (b_y d_z - b_z d_y) (2 + 1 + 1 = 4) is 1
+// product more (6), the sum of three 2 more: 8 roundings, so
+//   |D~ - D| <= gamma_8 P_D,  P_D = sum_j |a_j| (|b_y d_z| + |b_z d_y|)  (the permanent),
+// and with P_D <= P~_D (1 + 12 u) (the permanent of the rounded inputs, computed):
+// E_D = 9 u P~_D (8 u (1 + 8 u) (1 + 12 u) < 9 u, the product's own rounding included).
+//
+// Numerator N_j = c_a (b x d)_j + c_b (d x a)_j + c_d (a x b)_j (Cramer's rule, as the
+// long double path): 5 (c) + 4 (cross) + 1 (product) + 2 (sums) = 12 roundings:
+//   |N~_j - N_j| <= gamma_12 P_N,j,  P_N,j = |c_a| |b x d|_j + |c_b| |d x a|_j + |c_d| |a x b|_j
+// (|b x d|_j: the cross product's two terms in absolute value); with |c| <= |c~| (1 +
+// gamma_5), the n's factors and the permanent's own roundings, E_N = 13 u P~_N,j
+// (12 u (1 + 40 u) < 13 u).
+//
+// Solution x_j = N_j / D. Required: E_D <= 2^-10 |D~| (else no verdict). With r_j =
+// N~_j / D~: |x_j - r_j| <= (E_N + |r_j| E_D) / (|D~| - E_D), and x~_j = fl(r_j) is one
+// rounding more, so
+//   |x~_j - x_j| <= X_j = 1.01 (E_N + |x~_j| E_D) / |D~| + 1.01 u |x~_j|.
+// Distance: t_j = p_j - s_j (1 rounding), e_j = t_j - x_j (1 rounding), d = max |e_j|:
+//   |e~_j - e_j| <= B_j = X_j + 1.01 u (|t~_j| + |e~_j|),   |d~ - d| <= B = max_j B_j.
+//
+// The long double path computes the same expressions with the same rounding counts
+// (its n = L(q) - L(s) has at most 1), so its distance d_L obeys the same bound with
+// u_L: |d_L - d| <= 2^-11 (1 + 2^-9) B < B / 1024 (its magnitudes lie within 2^-9 of
+// these, by the conditioning requirement). Hence d_L <= d~ + B (1 + 2^-10) and the
+// returned U = fl(fl(d~ (1 + 4u)) + fl(1.01 B)) is above it: the three roundings lose
+// at most u (d~ (1 + 5u) + 1.02 B) + 1.01 u B, less than the 3u d~ + 0.008 B spared.
+// The long double distance is then rounded to double, which is monotone:
+// double(d_L) <= U whenever U is a double above d_L.
+//
+// Decided: the long double path takes the triple when |D_L| / (N_a N_b N_d) > 1e-9
+// (its own norms). |D_L| >= |D~| - E_D (1 + 2^-10) and N <= m~ (1 + 8 u), so
+// |D~| - E_D > 2e-9 m~_a m~_b m~_d certifies it with a factor of 2 to spare.
+//
+// Range: the counts hold without underflow or overflow. Each plane needs
+// 2^-1000 <= n~ . n~ <= 2^1000 (bisectors; walls have n . n = 1) and a finite c~; each
+// triple m~_a m~_b m~_d in [2^-900, 2^900] and every P~_N,j <= 2^900: no intermediate
+// overflows. An underflowed term errs by at most 2^-1074 absolute, about 2^-1068 in
+// all: far inside u P~_D (the decided test makes |D~| > 2^-929, so P~_D > 2^-929) and
+// inside the u 2^-900 that E_N adds by taking max(P~_N,j, 2^-900). Non-finite vertices
+// or results give no bound: the long double path then decides.
+
+namespace dtlab {
+
+using namespace vor;
+
+bool filter_plane(std::int32_t tag, std::span<const Point3> sites, const Point3& s, const Box& box, FilterPlane& out) {
+  if (tag >= 0) {
+    if (static_cast<std::size_t>(tag) >= sites.size()) return false;
+    const Point3& q = sites[tag];
+    out.n[0] = q.x - s.x, out.n[1] = q.y - s.y, out.n[2] = q.z - s.z;
+    const double nn = (out.n[0] * out.n[0] + out.n[1] * out.n[1]) + out.n[2] * out.n[2];
+    out.c = nn / 2;
+    out.norm = std::sqrt(nn);
+    out.ok = nn >= 0x1p-1000 && nn <= 0x1p1000;
+    return true;
+  }
+  if (tag < -6) return false;
+  const int axis = (-tag - 1) / 2;
+  const bool hi = (-tag - 1) % 2;
+  const double lo_c[3] = {box.lo.x, box.lo.y, box.lo.z}, hi_c[3] = {box.hi.x, box.hi.y, box.hi.z};
+  const double sc[3] = {s.x, s.y, s.z};
+  out.n[0] = out.n[1] = out.n[2] = 0;
+  out.n[axis] = 1;
+  out.c = (hi ? hi_c[axis] : lo_c[axis]) - sc[axis];
+  out.norm = 1;
+  out.ok = std::isfinite(out.c);
+  return true;
+}
+
+namespace {
+
+inline void cross(const double* a, const double* b, double* out) {
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// |a_1 b_2| + |a_2 b_1|, ...: the cross product's terms in absolute value.
+inline void abs_cross(const double* a, const double* b, double* out) {
+  out[0] = std::abs(a[1] * b[2]) + std::abs(a[2] * b[1]);
+  out[1] = std::abs(a[2] * b[0]) + std::abs(a[0] * b[2]);
+  out[2] = std::abs(a[0] * b[1]) + std::abs(a[1] * b[0]);
+}
+
+}  // namespace
+
+bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& d, PlanesMeet& out) {
+  constexpr double u = 0x1p-53;
+  if (!(a.ok && b.ok && d.ok)) return false;
+  out.norms = a.norm * b.norm * d.norm;
+  if (!(out.norms >= 0x1p-900 && out.norms <= 0x1p900)) return false;
+  double bd[3], da[3], ab[3], pbd[3], pda[3], pab[3];
+  cross(b.n, d.n, bd);
+  abs_cross(b.n, d.n, pbd);
+  const double det = a.n[0] * bd[0] + a.n[1] * bd[1] + a.n[2] * bd[2];
+  const double p_d = std::abs(a.n[0]) * pbd[0] + std::abs(a.n[1]) * pbd[1] + std::abs(a.n[2]) * pbd[2];
+  out.det = std::abs(det), out.det_error = 9 * u * p_d;
+  if (!(out.det_error <= 0x1p-10 * out.det)) return false;
+  cross(d.n, a.n, da);
+  cross(a.n, b.n, ab);
+  abs_cross(d.n, a.n, pda);
+  abs_cross(a.n, b.n, pab);
+  const double ca = std::abs(a.c), cb = std::abs(b.c), cd = std::abs(d.c);
+  for (int j = 0; j < 3; ++j) {
+    const double p_n = ca * pbd[j] + cb * pda[j] + cd * pab[j];
+    if (!(p_n <= 0x1p900)) return false;
+    out.x[j] = (a.c * bd[j] + b.c * da[j] + d.c * ab[j]) / det;
+    const double ax = std::abs(out.x[j]);
+    // An underflowed term of p_n (below 2^-900) errs by far less than u 2^-900.
+    out.error[j] = 1.01 * (13 * u * std::max(p_n, 0x1p-900) + ax * out.det_error) / out.det + 1.01 * u * ax;
+    if (!std::isfinite(out.error[j])) return false;
+  }
+  return true;
+}
+
+double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
+                             const FilterPlane& d) {
+  constexpr double u = 0x1p-53;
+  PlanesMeet m;
+  if (!planes_meet(a, b, d, m) || !(m.det - m.det_error > 2e-9 * m.norms)) return -1;
+  const double t[3] = {p.x - site.x, p.y - site.y, p.z - site.z};
+  double dist = 0, bound = 0;
+  for (int j = 0; j < 3; ++j) {
+    const double ae = std::abs(t[j] - m.x[j]);
+    const double bj = m.error[j] + 1.01 * u * (std::abs(t[j]) + ae);
+    if (!std::isfinite(ae) || !std::isfinite(bj)) return -1;
+    dist = std::max(dist, ae);
+    bound = std::max(bound, bj);
+  }
+  return dist * (1 + 4 * u) + 1.01 * bound;
+}
+
+}  // namespace dtlab

@@ -1,0 +1,49 @@
+#pragma once
+// A certified double-precision filter in front of the vertex test's long double
+// solve (cell_geometry.cpp): for a vertex on exactly three planes it bounds from above
+// the distance the long double solve would compute, so that a vertex certified to lie
+// no farther than the largest distance already measured (and within the tolerance)
+// needs no long double work: the reported numbers stay those of the long double path,
+// bit for bit. The bound and its derivation: vertex_filter.cpp.
+#include <cstdint>
+#include <span>
+
+#include "voronoi/box.hpp"
+
+namespace dtlab {
+
+// A face plane n . (x - site) = c in doubles, as the long double path builds it
+// (bisector: n = q - site, c = n.n / 2; wall of axis k: n = e_k, c = wall - site_k),
+// with the rounded norm of n. `ok`: finite and in the range where the bound holds.
+struct FilterPlane {
+  double n[3];
+  double c;
+  double norm;
+  bool ok;
+};
+
+// The plane of the face with neighbour `tag` (a site id, or -1..-6 for the walls of
+// `box`) relative to `site`; false when the tag is no site and no wall.
+bool filter_plane(std::int32_t tag, std::span<const Point3> sites, const Point3& site, const vor::Box& box,
+                  FilterPlane& out);
+
+// Where planes a, b, d meet (relative to their site), in doubles: x, and per
+// coordinate a bound on its error against the exact point (the planes of the exact
+// inputs). False when the bound does not hold or the planes are too ill-conditioned
+// for it (then the exact point may not even exist). det: |det(n_a, n_b, n_d)|
+// rounded, det_error its error bound (at most det / 1024, so the exact det is not 0),
+// norms: the product of the planes' norms.
+struct PlanesMeet {
+  double x[3], error[3];
+  double det, det_error, norms;
+};
+bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& d, PlanesMeet& out);
+
+// An upper bound on the distance (max norm) that the long double solve of the three
+// planes a, b, d (in that order) gives for vertex p of the cell of `site`, valid when
+// that solve also finds the triple well-conditioned (`decided`); the bound is returned
+// only when both are certain, else a negative value (the caller then runs the solve).
+double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
+                             const FilterPlane& d);
+
+}  // namespace dtlab
