@@ -173,3 +173,27 @@ TEST_CASE("the ulp floor: cells whose volumes rounding cannot explain are still 
   vd.cells[7].volume += 0.2 * vd.box.volume();
   CHECK(lost_cells_problem(vd) == "the cells do not fill the box (double precision lost on these sites)");
 }
+
+TEST_CASE("the ulp floor: a face no wider than 2e is small (voro++ on far_translate)") {
+  // Sites a few ulps apart: voro++ misses faces of 7e-4 of the extent squared that the
+  // relative bound calls large; each is narrower than vertices within the floor can hold.
+  const std::vector<Point3> sites = fuzz::find_family("far_translate")->generate(48, 6);
+  const VoronoiDiagram vd = cells_of(sites);
+  VoronoiPeerOptions po;
+  po.timeout_s = 60;
+  const VoronoiPeerRun p = run_voronoi_peer("voro++", sites, vd.box, po);
+  if (p.verdict == VoronoiVerdict::not_installed) {
+    WARN("voro++ not installed");
+    return;
+  }
+  REQUIRE(p.report);
+  INFO(voronoi_counts_text(*p.report));
+  CHECK(p.verdict == VoronoiVerdict::rounded_topology);
+  CHECK(p.report->tolerances.small_face.ulps);
+  CHECK(p.report->count(VoronoiDefect::missing_face) == 0);
+  po.check.ulps = 0;
+  const VoronoiPeerRun relative = run_voronoi_peer("voro++", sites, vd.box, po);
+  REQUIRE(relative.report);
+  CHECK(relative.report->count(VoronoiDefect::missing_face) > 0);
+  CHECK(relative.verdict == VoronoiVerdict::wrong_topology);
+}
