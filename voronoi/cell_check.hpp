@@ -131,11 +131,13 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
       continue;
     }
     double t = tol;
-    if (vertex_error > 0) {
+    const std::size_t triangles = e - b > 2 ? e - b - 2 : 1;
+    // R <= D: the face's own R only where the bound with D exceeds tol (thin faces).
+    if (vertex_error > 0 && rounded_plane_tolerance(vertex_error, D, D, area2, triangles) > tol) {
       double r2 = 0;
       for (auto k = b + 1; k < e; ++k) r2 = std::max(r2, norm2(c.vertices[c.face_vertices[k]] - o));
-      const double r = rounded_plane_tolerance(vertex_error, std::sqrt(r2) * (1 + 1e-15), D, area2,
-                                               e - b > 2 ? e - b - 2 : 1);
+      const double r = rounded_plane_tolerance(vertex_error, std::min(D, std::sqrt(r2) * (1 + 1e-15)), D, area2,
+                                               triangles);
       if (r > tol) {
         t = r;
         if (widened) *widened = true;
