@@ -11,7 +11,8 @@
 // Floating-point tools cannot represent faces far below their rounding, so a missing
 // or spurious face is `small` when its area is at most `small_face` times the sites'
 // extent squared (its area: the exact face's clipped to the box in doubles when
-// missing, the tool's when spurious). Topology: exact (the exact neighbour sets),
+// missing, the tool's when spurious), or when it is no wider than twice the ulp floor
+// (area <= 2 e diameter, e below). Topology: exact (the exact neighbour sets),
 // rounded (only small faces wrong), wrong (a larger face, or a cell, wrong).
 //
 // Every tolerance has an ulp floor (VoronoiCheckOptions::ulps): where the box is so
