@@ -26,6 +26,9 @@ std::string line_of(const VoronoiPeerRun& r) {
       s << ", largest wrong face " << r.report->largest_wrong_face << " of extent^2";
     if (r.report->largest_small_face > 0) s << ", largest small face " << r.report->largest_small_face;
     s << ", vertices within " << r.report->max_vertex_ulps << " ulps";
+    const auto& t = r.report->tolerances;
+    if (t.vertex.ulps || t.convex.ulps || t.small_face.ulps || t.volume.ulps)
+      s << " (tolerances by the ulp floor, one ulp " << t.ulp << ")";
   }
   if (!r.message.empty()) s << ": " << r.message;
   s << ", " << r.seconds << " s";

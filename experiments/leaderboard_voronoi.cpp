@@ -3,6 +3,7 @@
 #include <chrono>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "experiments/csv_writer.hpp"
 #include "experiments/report.hpp"
@@ -132,6 +133,15 @@ std::string field(T v) {
   return f.str();
 }
 
+// The tolerances the ulp floor decided ("vertex convex volume"; "" when none did).
+std::string ulp_rules(const VoronoiTolerances& t) {
+  std::string s;
+  for (const auto& [name, a] : {std::pair{"vertex", t.vertex}, std::pair{"convex", t.convex},
+                                std::pair{"small_face", t.small_face}, std::pair{"volume", t.volume}})
+    if (a.ulps) s += (s.empty() ? "" : " ") + std::string(name);
+  return s;
+}
+
 void write_csvs(const std::vector<VoronoiCase>& all, const std::vector<SpeedRow>& speed, const std::string& dir) {
   std::vector<std::vector<std::string>> rows;
   for (const auto& c : all) {
@@ -146,6 +156,8 @@ void write_csvs(const std::vector<VoronoiCase>& all, const std::vector<SpeedRow>
                                     r ? voronoi_counts_text(*r) : "",
                                     field(r ? r->largest_wrong_face : 0),
                                     field(r ? r->largest_small_face : 0),
+                                    field(r ? r->max_vertex_ulps : 0),
+                                    r ? ulp_rules(r->tolerances) : "",
                                     field(c.run.seconds),
                                     field(c.run.wall_seconds),
                                     field(r ? r->seconds : 0)};
@@ -159,7 +171,7 @@ void write_csvs(const std::vector<VoronoiCase>& all, const std::vector<SpeedRow>
   }
   write_csv(dir + "/data/voronoi.csv",
             {"peer", "source", "n", "case", "seed", "verdict", "not_judged", "defects", "largest_wrong_face",
-             "largest_small_face", "seconds", "wall_seconds", "check_seconds", "shrunk_points", "minimal",
+             "largest_small_face", "max_vertex_ulps", "ulp_tolerances", "seconds", "wall_seconds", "check_seconds", "shrunk_points", "minimal",
              "shrunk_verdict_fresh", "corpus_file"},
             rows);
   std::vector<std::vector<std::string>> speed_rows;

@@ -5,6 +5,7 @@
 // (absolute length). The first two parts are also used alone by the Voronoi checker
 // (voronoi_check/), which judges other tools' cells.
 #include <algorithm>
+#include <cmath>
 #include <span>
 #include <string>
 #include <utility>
@@ -83,19 +84,41 @@ inline bool any_above_plane(const double* X, const double* Y, const double* Z, s
   return above;
 }
 
+// The most a vertex of a cell can lie beyond a face's computed plane when each vertex is
+// within e (Euclidean) of a convex cell's with the same faces (a correctly rounded
+// cell): with R >= |v - o| for the face's corners v and its first corner o, D >= |p - o|
+// for every vertex p of the cell, and the face's Newell normal n over T fan triangles,
+// the true normal differs from n by at most T (4 e R + 4 e^2) (each cross product of
+// two fan edges moved by 2 e), so the unit normal by theta = 2 T (4 e R + 4 e^2) / |n|,
+// and n.(p - o) by 2 e + theta D; 8 ulps of D more for the test's own rounding. A thin
+// face (theta >= 2) cannot fail: its plane is not defined at that rounding.
+inline double rounded_plane_tolerance(double e, double R, double D, double area2, std::size_t triangles) {
+  const double theta = 2 * static_cast<double>(triangles) * (4 * e * R + 4 * e * e) / area2;
+  return (2 * e + theta * D) * (1 + 1e-12) + 0x1p-50 * D;
+}
+
 // Planar faces and convex (every vertex behind every face plane), within `tol`
 // (absolute length). With `skip_tiny`, faces of area below tol^2 (whose plane rounding
 // does not define) are not tested, and `*skipped` (if given) is set when there was
-// one; otherwise they are a defect ("zero-area face"). The vertices are copied once
+// one; otherwise they are a defect ("zero-area face"). With `vertex_error` e > 0 a
+// face's tolerance is max(tol, rounded_plane_tolerance(e, ...)) (R: the face's farthest
+// corner from its first, D: the diagonal of the cell's vertices' bounding box), and `*widened` (if given) is set when that was more
+// than tol for a face tested; e = 0 tests with tol alone. The vertices are copied once
 // per cell into per-thread coordinate arrays for any_above_plane.
 inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip_tiny = false,
-                                     bool* skipped = nullptr) {
+                                     bool* skipped = nullptr, double vertex_error = 0, bool* widened = nullptr) {
   using namespace vor;
   thread_local std::vector<double> xs, ys, zs;
   const std::size_t nv = c.vertices.size();
   xs.resize(nv), ys.resize(nv), zs.resize(nv);
   double *X = xs.data(), *Y = ys.data(), *Z = zs.data();
   for (std::size_t i = 0; i < nv; ++i) X[i] = c.vertices[i].x, Y[i] = c.vertices[i].y, Z[i] = c.vertices[i].z;
+  double D = 0;
+  if (vertex_error > 0 && nv > 0) {
+    Point3 lo = c.vertices[0], hi = c.vertices[0];
+    for (const auto& v : c.vertices) lo = min3(lo, v), hi = max3(hi, v);
+    D = norm(hi - lo);
+  }
   for (std::size_t f = 0; f < c.face_count(); ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
     Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
@@ -107,10 +130,23 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
       if (skipped) *skipped = true;
       continue;
     }
+    double t = tol;
+    const std::size_t triangles = e - b > 2 ? e - b - 2 : 1;
+    // R <= D: the face's own R only where the bound with D exceeds tol (thin faces).
+    if (vertex_error > 0 && rounded_plane_tolerance(vertex_error, D, D, area2, triangles) > tol) {
+      double r2 = 0;
+      for (auto k = b + 1; k < e; ++k) r2 = std::max(r2, norm2(c.vertices[c.face_vertices[k]] - o));
+      const double r = rounded_plane_tolerance(vertex_error, std::min(D, std::sqrt(r2) * (1 + 1e-15)), D, area2,
+                                               triangles);
+      if (r > tol) {
+        t = r;
+        if (widened) *widened = true;
+      }
+    }
     n = 1.0 / area2 * n;
     for (auto k = b; k < e; ++k)
-      if (std::abs(dot(n, c.vertices[c.face_vertices[k]] - o)) > tol) return "non-planar face";
-    if (any_above_plane(X, Y, Z, nv, n, o, tol)) return "not convex";
+      if (std::abs(dot(n, c.vertices[c.face_vertices[k]] - o)) > t) return "non-planar face";
+    if (any_above_plane(X, Y, Z, nv, n, o, t)) return "not convex";
   }
   return {};
 }

@@ -30,7 +30,10 @@ std::optional<VoronoiRefusal> voronoi_refusal(std::span<const Point3> sites, con
                                               double margin);
 
 // After the cells: computed cells that are no result: a cell of NaN, infinite or zero
-// volume, or cells that do not fill the box (double precision lost on these sites).
+// volume, or cells that do not fill the box (double precision lost on these sites):
+// their volumes' sum off by more than 1e-6 of the box volume and by more than moving
+// every vertex by kRoundingUlps ulps of the box's largest coordinate could explain
+// (volume_rounding_bound, the exact Voronoi checker's ulp floor).
 std::string lost_cells_problem(const VoronoiDiagram& vd);
 
 }  // namespace dtlab

@@ -3,8 +3,9 @@
 // on the same uniform sites in the unit cube, our cells (compute_voronoi: the DT and
 // the cells), voro++'s cells, the check of each; the order alternates between rounds.
 // A plain timed run, no test asserts a time:
-//   dtlab_voronoi_check_bench [N=100000] [ROUNDS=3] [THREADS=1] [SEED=1]
-// THREADS is used by both our cells and the checker.
+//   dtlab_voronoi_check_bench [N=100000] [ROUNDS=3] [THREADS=1] [SEED=1] [ULPS=4]
+// THREADS is used by both our cells and the checker; ULPS is the checker's ulp floor K
+// (VoronoiCheckOptions::ulps; 0: the relative tolerances alone, the checker before it).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
   const vor::Box box{{0, 0, 0}, {1, 1, 1}};
   VoronoiCheckOptions co;
   co.threads = threads;
+  if (argc > 5) co.ulps = std::strtod(argv[5], nullptr);
 
   Series ours{"our cells (DT+cells)", {}}, voro{"voro++ cells", {}}, check_ours{"check of our cells", {}},
       check_voro{"check of voro++'s", {}}, check_reuse{"same, our DT reused", {}};

@@ -62,6 +62,11 @@ double sites_extent(std::span<const Point3> sites, const Box& box) {
   return ext > 0 ? ext : box.diagonal();
 }
 
+// A face's area and diameter (the largest distance of two of its vertices).
+struct FaceSize {
+  double area = 0, diameter = 0;
+};
+
 // One directed face of a tool's cell, merged by neighbour (a tool may split a face).
 // Its area is needed only for a face that is not expected: computed then (area < 0:
 // not yet; a split face's parts are summed at once).
@@ -80,7 +85,11 @@ struct Partial {
   double largest_wrong_face = 0, largest_small_face = 0, max_vertex_ulps = 0, max_vertex_error = 0;
   double max_vertex_distance = 0;  // the chunk's largest vertex distance so far (absolute)
   double volume_sum = 0;
+  double volume_bound = 0, surface = 0;  // the volume floor's sums over cells (computed only when needed)
   std::uint64_t faces = 0, vertices = 0, voronoi_edges = 0, degenerate_edges = 0;
+  std::uint64_t not_closed = 0;  // cells the volume bound does not hold for
+  bool convex_widened = false;   // a face's convexity tolerance was the ulp floor's
+  bool small_by_ulps = false;    // a face small only by the ulp floor
 };
 
 // One thread's scratch (no allocation per site or cell once warm).
@@ -110,8 +119,19 @@ class Judge {
       : sites_(sites), box_(box), cells_(cells), o_(o), r_(r), shared_(relation(sites, o)), nb_(*shared_) {
     extent2_ = sites_extent(sites, box);
     extent2_ *= extent2_;
-    for (double v : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z})
-      coord_max_ = std::max(coord_max_, std::abs(v));
+    // The tolerances: the relative bound, or K ulps of the box's largest coordinate.
+    auto& t = r_.tolerances;
+    ulp_ = t.ulp = box_ulp(box);
+    const double diag = box.diagonal(), ulp_floor = o.ulps * ulp_;
+    vertex_tol_ = std::max(o.vertex_tolerance * diag, ulp_floor);
+    t.vertex = {vertex_tol_ / diag, ulp_floor > o.vertex_tolerance * diag};
+    // Convexity: per face, the relative tolerance or what vertices within the floor
+    // allow for that face's computed plane (voronoi/cell_check.hpp).
+    convex_tol_ = o.convex_tolerance * diag;
+    vertex_error_ = t.floor_distance = std::sqrt(3.0) * ulp_floor;  // the floor as a Euclidean distance
+    t.convex = {o.convex_tolerance, false};
+    t.small_face = {o.small_face, false};
+    small_face_ = o.small_face;
   }
 
   void run() {
@@ -127,6 +147,7 @@ class Judge {
     r_.seconds_relation = since(t);
     t = Clock::now();
     stage(cells_.size(), threads, [&](std::size_t c, Partial& p, Scratch& s) { judge_geometry(c, p, s); });
+    judge_volume(threads);
     r_.seconds_geometry = since(t);
     if (!o_.relation) r_.seconds_dt = nb_.seconds_dt, r_.seconds_tables = nb_.seconds_tables;
     // One representative per set of equal sites (the relation's, no second sort).
@@ -158,6 +179,10 @@ class Judge {
     r_.max_vertex_ulps = std::max(r_.max_vertex_ulps, p.max_vertex_ulps);
     r_.max_vertex_error = std::max(r_.max_vertex_error, p.max_vertex_error);
     r_.volume_sum += p.volume_sum;
+    volume_bound_ += p.volume_bound, surface_ += p.surface;
+    not_closed_ += p.not_closed;
+    r_.tolerances.convex.ulps |= p.convex_widened;
+    r_.tolerances.small_face.ulps |= p.small_by_ulps;
     r_.faces += p.faces, r_.vertices += p.vertices;
     r_.voronoi_edges += p.voronoi_edges, r_.degenerate_edges += p.degenerate_edges;
   }
@@ -211,10 +236,10 @@ class Judge {
   }
 
   // A bounded exact face (an interior DT edge) whose every vertex (the ring's
-  // centres, in doubles) lies beyond one wall by more than 1e-9 of the diagonal
-  // cannot meet the box: the clip below is not needed.
+  // centres, in doubles) lies beyond one wall by more than 1e-9 of the diagonal, or
+  // the ulp floor where that is larger, cannot meet the box: the clip below is not needed.
   bool beyond_a_wall(const std::vector<Point3>& centres) const {
-    const double m = 1e-9 * box_.diagonal();
+    const double m = std::max(1e-9 * box_.diagonal(), o_.ulps * ulp_);
     const double lo[3] = {box_.lo.x, box_.lo.y, box_.lo.z}, hi[3] = {box_.hi.x, box_.hi.y, box_.hi.z};
     for (int axis = 0; axis < 3; ++axis) {
       const auto coord = [axis](const Point3& c) { return axis == 0 ? c.x : axis == 1 ? c.y : c.z; };
@@ -225,12 +250,12 @@ class Judge {
     return false;
   }
 
-  // The exact face of (a, b) clipped to the box, in doubles: its area, or nullopt when
-  // it does not meet the box interior. The clip's band is our cells' (1e-12 of the
+  // The exact face of (a, b) clipped to the box, in doubles: its area and diameter, or
+  // nullopt when it does not meet the box interior. The clip's band is our cells' (1e-12 of the
   // diagonal): it moves an area by far less than small_face, and above the vertices'
   // rounding bounds, so only a truly ambiguous cell is redone with exact signs (a band
   // below them, as 1e-15 was, sent every clipped cell to GMP).
-  std::optional<double> true_area(std::uint32_t a, std::uint32_t b, Scratch& s) const {
+  std::optional<FaceSize> true_area(std::uint32_t a, std::uint32_t b, Scratch& s) const {
     nb_.ring_centres(a, b, s.centres);
     const bool bounded = !nb_.hull_edge(a, b) && !s.centres.empty();
     if (bounded && beyond_a_wall(s.centres)) return std::nullopt;
@@ -240,7 +265,7 @@ class Judge {
       compute_cell(s.clipped, sites_, a, s.all, box_, VoronoiOptions{}.tolerance);
       s.clipped_site = a;
     }
-    double area = 0;
+    FaceSize size;
     const ConvexCell& cc = s.clipped;
     for (std::size_t f = 0; f < cc.face_count(); ++f)
       if (cc.face_tag(f) == static_cast<std::int32_t>(b)) {
@@ -249,20 +274,36 @@ class Judge {
         Point3 n{0, 0, 0};
         for (std::size_t k = 1; k + 1 < fv.size(); ++k)
           n = n + cross(cc.vertices()[fv[k]] - o, cc.vertices()[fv[k + 1]] - o);
-        area += 0.5 * norm(n);
+        size.area += 0.5 * norm(n);
+        for (std::size_t i = 0; i < fv.size(); ++i)
+          for (std::size_t j = i + 1; j < fv.size(); ++j)
+            size.diameter = std::max(size.diameter, norm(cc.vertices()[fv[i]] - cc.vertices()[fv[j]]));
       }
-    if (area > 0) return area;
+    if (size.area > 0) return size;
     // Rounded away by the clip: required when a vertex of the exact face is inside the box.
     for (const auto& c : s.centres)
       if (c.x > box_.lo.x && c.x < box_.hi.x && c.y > box_.lo.y && c.y < box_.hi.y && c.z > box_.lo.z &&
           c.z < box_.hi.z)
-        return 0.0;
+        return FaceSize{};
     return std::nullopt;
   }
 
-  void face_defect(Partial& p, bool missing, std::uint32_t a, std::int64_t b, double area) const {
-    const double rel = area / extent2_;
-    if (rel <= o_.small_face) {
+  // Small: at most small_face of the extent squared, or (the ulp floor) no wider than
+  // 2 e, e the floor's Euclidean vertex bound: a face that vertices within e of their
+  // exact places can flatten (area <= 2 e diameter holds for every face of width at most
+  // 2 e, and implies a width of at most 4 e for a convex one).
+  // The diameter is asked for only when the relative bound does not decide.
+  template <class Diameter>
+  bool is_small_face(double area, Diameter&& diameter, Partial& p) const {
+    if (area / extent2_ <= small_face_) return true;
+    if (!(vertex_error_ > 0 && area <= 2 * vertex_error_ * diameter())) return false;
+    p.small_by_ulps = true;
+    return true;
+  }
+
+  void face_defect(Partial& p, bool missing, std::uint32_t a, std::int64_t b, const FaceSize& size) const {
+    const double rel = size.area / extent2_;
+    if (is_small_face(size.area, [&] { return size.diameter; }, p)) {
       add(p, missing ? VoronoiDefect::small_missing_face : VoronoiDefect::small_spurious_face, a, b, rel);
       p.largest_small_face = std::max(p.largest_small_face, rel);
     } else {
@@ -303,20 +344,36 @@ class Judge {
         ++i;
         continue;
       }
-      if (const auto area = true_area(a, b, s)) face_defect(p, true, a, b, *area);
+      if (const auto size = true_area(a, b, s)) face_defect(p, true, a, b, *size);
     }
     while (i < s.tf.size()) unexpected(a, cell, s.tf[i++], p, s);
   }
 
-  // A tool face towards a site that is no Voronoi neighbour of a.
+  // A tool face towards a site that is no Voronoi neighbour of a (its diameter over
+  // every part of a split face).
   void unexpected(std::uint32_t a, const VoronoiCell& c, const ToolFace& f, Partial& p, const Scratch& s) const {
-    const double area = f.area < 0 ? face_area(c, f.face) : f.area;
+    FaceSize size{f.area < 0 ? face_area(c, f.face) : f.area, -1};
+    const auto diameter = [&] {
+      if (size.diameter >= 0) return size.diameter;
+      size.diameter = 0;
+      for (std::size_t g = 0; g < c.face_count(); ++g) {
+        const std::int32_t id = c.face_neighbor[g];
+        if (id < 0 || static_cast<std::size_t>(id) >= sites_.size() ||
+            nb_.rep(static_cast<std::uint32_t>(id)) != f.neighbor)
+          continue;
+        for (auto i = c.face_offsets[g]; i < c.face_offsets[g + 1]; ++i)
+          for (auto j = i + 1; j < c.face_offsets[g + 1]; ++j)
+            size.diameter =
+                std::max(size.diameter, norm(c.vertices[c.face_vertices[i]] - c.vertices[c.face_vertices[j]]));
+      }
+      return size.diameter;
+    };
     const bool dt_edge = std::binary_search(s.deg.begin(), s.deg.end(), f.neighbor);
-    if (dt_edge && area / extent2_ <= o_.small_face) {
-      add(p, VoronoiDefect::degenerate_face, a, f.id, area / extent2_, "exact face has zero area");
+    if (dt_edge && is_small_face(size.area, diameter, p)) {
+      add(p, VoronoiDefect::degenerate_face, a, f.id, size.area / extent2_, "exact face has zero area");
       return;
     }
-    face_defect(p, false, a, f.id, area);
+    face_defect(p, false, a, f.id, FaceSize{size.area, diameter()});
   }
 
   // Stage 3: one cell's shape, vertices and volume.
@@ -330,22 +387,48 @@ class Judge {
     p.volume_sum += cell_volume(c);
     const double diag = box_.diagonal();
     std::string why = check_cell_closed(c);
-    if (why.empty()) why = check_cell_convex(c, o_.convex_tolerance * diag, true);
+    if (!why.empty())
+      ++p.not_closed;
+    else
+      why = check_cell_convex(c, convex_tol_, true, nullptr, vertex_error_, &p.convex_widened);
     if (!why.empty()) add(p, VoronoiDefect::not_convex, site, -1, 0, why);
     if (site < 0 || static_cast<std::size_t>(site) >= sites_.size()) return;
     s.errors.resize(c.vertices.size());
     // A vertex certified no farther than the chunk's largest distance so far and within
     // the tolerance changes no number of the report: its solve is skipped.
-    const double tol = o_.vertex_tolerance * diag;
+    const double tol = vertex_tol_;
     vertex_errors(c, sites_, static_cast<std::uint32_t>(site), box_, s.errors, std::min(p.max_vertex_distance, tol));
-    const double ulp = std::nextafter(coord_max_, INFINITY) - coord_max_;
     for (const auto& e : s.errors) {
       if (!e.decided || e.below) continue;
       p.max_vertex_distance = std::max(p.max_vertex_distance, e.distance);
-      p.max_vertex_ulps = std::max(p.max_vertex_ulps, e.distance / ulp);
+      p.max_vertex_ulps = std::max(p.max_vertex_ulps, e.distance / ulp_);
       p.max_vertex_error = std::max(p.max_vertex_error, e.distance / diag);
       if (e.distance > tol) add(p, VoronoiDefect::vertex_off, site, -1, e.distance / diag);
     }
+  }
+
+  // The volumes' sum against the box volume: within the relative tolerance, or else
+  // within the ulp floor (every vertex within K ulps moves the volumes by at most the
+  // sum of volume_rounding_bound; computed only here, so a check whose volumes meet the
+  // relative bound does no more work), when the bound holds: every cell closed and no
+  // vertex off.
+  void judge_volume(unsigned threads) {
+    auto& t = r_.tolerances;
+    r_.volume_error = std::abs(r_.volume_sum - r_.box_volume) / r_.box_volume;
+    t.volume = {o_.volume_tolerance, false};
+    if (r_.volume_error <= o_.volume_tolerance || !(o_.ulps > 0) || not_closed_ > 0 ||
+        r_.count(VoronoiDefect::vertex_off) > 0)
+      return;
+    const double d = vertex_error_;
+    stage(cells_.size(), threads, [&](std::size_t k, Partial& p, Scratch&) {
+      const VoronoiCell c = cells_.view(k);
+      if (c.face_count() == 0) return;
+      const VolumeRoundingBound b = volume_rounding_bound(c, d);
+      p.volume_bound += b.volume, p.surface += b.surface;
+    });
+    t.surface = surface_;
+    const double ulp_floor = volume_bound_ / r_.box_volume;
+    if (ulp_floor > o_.volume_tolerance) t.volume = {ulp_floor, true};
   }
 
   std::span<const Point3> sites_;
@@ -355,15 +438,16 @@ class Judge {
   VoronoiCheckReport& r_;
   std::shared_ptr<const VoronoiNeighbors> shared_;
   const VoronoiNeighbors& nb_;
-  double extent2_ = 1, coord_max_ = 0;
+  double extent2_ = 1, ulp_ = 0, vertex_tol_ = 0, convex_tol_ = 0, vertex_error_ = 0, small_face_ = 0;
+  double volume_bound_ = 0, surface_ = 0;
+  std::uint64_t not_closed_ = 0;
   std::vector<std::int64_t> cell_of_;
   std::vector<Scratch> scratch_;
 };
 
-void decide(VoronoiCheckReport& r, const VoronoiCheckOptions& o) {
+void decide(VoronoiCheckReport& r) {
   using D = VoronoiDefect;
-  r.volume_error = std::abs(r.volume_sum - r.box_volume) / r.box_volume;
-  if (!(r.volume_error <= o.volume_tolerance)) ++r.counts[static_cast<int>(D::volume_mismatch)];
+  if (!(r.volume_error <= r.tolerances.volume.value)) ++r.counts[static_cast<int>(D::volume_mismatch)];
   const bool wrong = r.count(D::missing_cell) || r.count(D::extra_cell) || r.count(D::missing_face) ||
                      r.count(D::spurious_face) || r.count(D::bad_neighbor);
   const bool rounded = r.count(D::small_missing_face) || r.count(D::small_spurious_face);
@@ -397,7 +481,7 @@ VoronoiCheckReport check_voronoi(std::span<const Point3> sites, const Box& box, 
   r.box_volume = box.volume();
   Judge judge(sites, box, cells, options, r);
   judge.run();
-  decide(r, options);
+  decide(r);
   r.seconds = since(t0);
   return r;
 }

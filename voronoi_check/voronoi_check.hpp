@@ -11,8 +11,15 @@
 // Floating-point tools cannot represent faces far below their rounding, so a missing
 // or spurious face is `small` when its area is at most `small_face` times the sites'
 // extent squared (its area: the exact face's clipped to the box in doubles when
-// missing, the tool's when spurious). Topology: exact (the exact neighbour sets),
+// missing, the tool's when spurious), or when it is no wider than twice the ulp floor
+// (area <= 2 e diameter, e below). Topology: exact (the exact neighbour sets),
 // rounded (only small faces wrong), wrong (a larger face, or a cell, wrong).
+//
+// Every tolerance has an ulp floor (VoronoiCheckOptions::ulps): where the box is so
+// narrow against its coordinates' magnitude that the relative bound lies below what
+// doubles can hold (sites at 2.4e11 a few 1e-3 apart, or 2^-53 apart near 0.5), the
+// bound is the one K ulps of the box's largest coordinate allow; the report says which
+// one applied (VoronoiCheckReport::tolerances). Topology is exact either way.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -22,6 +29,7 @@
 
 #include "kernel/tetrahedralization.hpp"
 #include "voronoi/box.hpp"
+#include "voronoi/rounding_bound.hpp"
 #include "voronoi_check/tool_cells.hpp"
 
 namespace dtlab {
@@ -76,6 +84,14 @@ struct VoronoiCheckOptions {
   double vertex_tolerance = 1e-9;  // of the box diagonal
   double convex_tolerance = 1e-9;  // of the box diagonal
   double volume_tolerance = 1e-9;  // relative to the box volume
+  // The ulp floor K (0: none), in ulps u of the box's largest coordinate: a vertex is
+  // off beyond max(vertex_tolerance * diagonal, K u) (max-norm); a vertex outside a face
+  // plane beyond max(convex_tolerance * diagonal, what vertices within e = sqrt(3) K u
+  // of a convex cell allow for that face's plane: rounded_plane_tolerance,
+  // voronoi/cell_check.hpp); the volumes' sum off beyond max(volume_tolerance * box
+  // volume, the sum over cells of volume_rounding_bound at e), the most the volumes can
+  // move when every vertex is within e.
+  double ulps = kRoundingUlps;
   std::size_t witnesses_per_kind = 16;
   unsigned threads = 1;  // sites judged in parallel (0: all hardware threads); the report is the same for any count
   // The sites' Delaunay tetrahedralization by exact predicates with symbolic
@@ -88,6 +104,23 @@ struct VoronoiCheckOptions {
   std::shared_ptr<const VoronoiNeighbors> relation;
 };
 
+// A tolerance as applied: its value (in the unit of the number it bounds, see each use)
+// and whether the ulp floor was the larger bound.
+struct AppliedTolerance {
+  double value = 0;
+  bool ulps = false;
+};
+
+struct VoronoiTolerances {
+  double ulp = 0;                   // one ulp u of the box's largest coordinate magnitude
+  double floor_distance = 0;        // e = sqrt(3) K u: the ulp floor as a Euclidean distance
+  AppliedTolerance vertex;          // of the box diagonal (as max_vertex_error)
+  AppliedTolerance convex;          // of the box diagonal (ulps: some face's was the floor's, larger)
+  AppliedTolerance small_face;      // of the extent squared (as largest_small_face; ulps: a face no wider than 2 e was small only by that)
+  AppliedTolerance volume;          // relative to the box volume (as volume_error)
+  double surface = 0;               // the fan triangles' area of all cells, when the volume floor was computed
+};
+
 struct VoronoiCheckReport {
   std::array<std::uint64_t, kVoronoiDefects> counts{};
   std::vector<VoronoiWitness> witnesses;
@@ -98,6 +131,7 @@ struct VoronoiCheckReport {
   double max_vertex_ulps = 0;                               // ulps of the box's largest coordinate
   double max_vertex_error = 0;                              // / box diagonal
   double volume_sum = 0, box_volume = 0, volume_error = 0;  // error relative to the box volume
+  VoronoiTolerances tolerances;
   std::uint64_t sites = 0, distinct_sites = 0, cells = 0, faces = 0, vertices = 0;
   std::uint64_t voronoi_edges = 0;     // directed Voronoi neighbour pairs (positive faces)
   std::uint64_t degenerate_edges = 0;  // directed DT edges with a zero-area face

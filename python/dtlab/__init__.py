@@ -244,7 +244,8 @@ def _tool_cells(points: Any, cells: Any, box: list[float]) -> list[tuple[Any, ..
 
 
 def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float = 1e-9,
-                  vertex_tolerance: float = 1e-9, volume_tolerance: float = 1e-9) -> dict[str, Any]:
+                  vertex_tolerance: float = 1e-9, volume_tolerance: float = 1e-9,
+                  ulps: float = 4) -> dict[str, Any]:
     """Judge any tool's Voronoi cells with dtlab's exact Voronoi checker.
 
     cells: a dtlab VoronoiDiagram, a scipy.spatial.Voronoi (its regions clipped to the
@@ -256,7 +257,9 @@ def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float
     box: as for voronoi(); default: a VoronoiDiagram's own box, else the bounding box
     grown by 10% per side. Returns the report: verdict (exact-topology,
     rounded-topology, bad-geometry, volume-mismatch, wrong-topology), topology, counts,
-    witnesses, largest_wrong_face, max_vertex_ulps, volume_error, ...
+    witnesses, largest_wrong_face, max_vertex_ulps, volume_error, tolerances, ...
+    Every tolerance has an ulp floor: at least what `ulps` ulps of the box's largest
+    coordinate allow (0: the relative tolerances alone); `tolerances` says which applied.
     """
     if box is None:
         b = _box_arg(cells.box) if isinstance(cells, VoronoiDiagram) else _core.default_box(points, 0.1)
@@ -264,7 +267,7 @@ def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float
         b = _box_arg(box)
     assert b is not None
     return _core.check_voronoi(points, _tool_cells(points, cells, b), b, float(small_face), float(vertex_tolerance),
-                               float(volume_tolerance))
+                               float(volume_tolerance), float(ulps))
 
 
 def read_mesh(path: str | os.PathLike[str]) -> Mesh:

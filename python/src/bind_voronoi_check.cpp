@@ -38,7 +38,7 @@ ToolCells tool_cells(py::handle cells) {
 }
 
 py::object check_voronoi(py::handle points, py::handle cells, const std::vector<double>& b, double small_face,
-                         double vertex_tolerance, double volume_tolerance) {
+                         double vertex_tolerance, double volume_tolerance, double ulps) {
   const DoubleArray pts = point_array(points, "points");
   if (b.size() != 6) throw py::value_error("box: xmin ymin zmin xmax ymax zmax");
   const ToolCells t = tool_cells(cells);
@@ -46,6 +46,8 @@ py::object check_voronoi(py::handle points, py::handle cells, const std::vector<
   o.small_face = small_face;
   o.vertex_tolerance = vertex_tolerance;
   o.volume_tolerance = volume_tolerance;
+  if (!(ulps >= 0)) throw py::value_error("ulps must be >= 0");
+  o.ulps = ulps;
   VoronoiCheckReport r;
   try {
     py::gil_scoped_release nogil;
@@ -67,7 +69,7 @@ std::vector<double> box_of(py::handle points, double margin) {
 
 void bind_voronoi_check(py::module_& m) {
   m.def("check_voronoi", &check_voronoi, py::arg("points"), py::arg("cells"), py::arg("box"), py::arg("small_face"),
-        py::arg("vertex_tolerance"), py::arg("volume_tolerance"), "Judge Voronoi cells (see dtlab.check_voronoi).");
+        py::arg("vertex_tolerance"), py::arg("volume_tolerance"), py::arg("ulps"), "Judge Voronoi cells (see dtlab.check_voronoi).");
   m.def("default_box", &box_of, py::arg("points"), py::arg("margin"), "The bounding box grown by margin per side.");
 }
 

@@ -42,3 +42,18 @@ def test_scipy_cells_of_hull_edges_with_one_tet():
     r = dtlab.check_voronoi(pts, vor)
     assert r["verdict"] == "exact-topology", r["counts"]
     assert r["cells"] == 4 and r["voronoi_edges"] == 12
+
+
+def test_ulp_floor_judges_far_translate():
+    # Sites at ~2^30..2^40 a few ulps apart: one ulp is up to a quarter of the box, below
+    # which the relative tolerances lie; dtlab.voronoi answers these cells since the floor.
+    pts = dtlab.fuzz.generate("far_translate", 48, 3)
+    vd = dtlab.voronoi(pts)
+    r = dtlab.check_voronoi(pts, vd)
+    assert r["verdict"] == "exact-topology", r["counts"]
+    assert r["tolerances"]["vertex"]["rule"] == "ulps" and r["tolerances"]["volume"]["rule"] == "ulps"
+    assert r["max_vertex_ulps"] <= 4
+    relative = dtlab.check_voronoi(pts, vd, ulps=0)
+    assert relative["verdict"] == "volume-mismatch" and relative["counts"]["vertex-off"] > 0
+    with pytest.raises(ValueError):
+        dtlab.check_voronoi(pts, vd, ulps=-1)
