@@ -9,9 +9,14 @@
 #   - a bounded cell: the tool's vertices, its ridge polygons as faces (turned to face
 #     the neighbour), clipped by the box walls it crosses;
 #   - an unbounded cell (a hull site): the box clipped by the bisectors of the
-#     tool's ridge neighbours (the tool's topology, the adapter's vertices).
+#     tool's ridge neighbours and of its tets' neighbours (the tool's topology, the
+#     adapter's vertices).
+# Everything is in numpy arrays (ridges and regions as CSR rows, cells in blocks of
+# 65536 sites written as they come): only cells that cross a wall and hull cells are
+# clipped one by one (clip(), in Python). tests/adapter_identity.py holds the cells to
+# those of the per-cell adapter before (tests/voronoi_peer_reference.py), byte for byte.
 # Exit: 0 answered, 2 bad usage, 3 the tool refused (its message last on stderr), 4 not installed.
-# The Python module imports the clipping part (cells_from_ridges) as dtlab._voronoi_regions
+# The Python module imports the clipping part (scipy_topology, cells_from_ridges) as dtlab._voronoi_regions
 # (dtlab.check_voronoi on a scipy.spatial.Voronoi): one adapter for both.
 import itertools, struct, subprocess, sys, tempfile, time
 
@@ -174,14 +179,15 @@ def ridge_sides(pts, V, ridges, block=1 << 20):
         rows = b0 + np.nonzero((lens[b0:b1] >= 3) & (infinite[b0:b1] == 0))[0]
         if len(rows) == 0:
             continue
+        rows = rows[np.argsort(-lens[rows], kind="stable")]  # longest first: fan k is a prefix
         st, ln, idx = ridges.verts.off[rows], lens[rows], ridges.verts.idx
         o = V[idx[st]]
         nrm = np.zeros((len(rows), 3))
-        for k in range(1, int(ln.max()) - 1):
-            on = k + 1 < ln
-            a = V[idx[st[on] + k]] - o[on]
-            b = V[idx[st[on] + k + 1]] - o[on]
-            nrm[on] += np.cross(a, b)
+        for k in range(1, int(ln[0]) - 1):
+            on = int(np.count_nonzero(ln > k + 1))
+            a = V[idx[st[:on] + k]] - o[:on]
+            b = V[idx[st[:on] + k + 1]] - o[:on]
+            nrm[:on] += np.cross(a, b)
         d = pts[ridges.q[rows]] - pts[ridges.p[rows]]
         side[rows] = np.sign(nrm[:, 0] * d[:, 0] + nrm[:, 1] * d[:, 1] + nrm[:, 2] * d[:, 2])
     return side

@@ -1,3 +1,5 @@
+# Frozen copy of voronoi_peer.py at main c6e3e29, before its array rewrite: the reference
+# that tests/adapter_identity.py compares the adapter's cells files with. dtlab never runs it.
 # The Python Voronoi peers of dtlab (voronoi_check/voronoi_peers.cpp runs this file):
 #   voronoi_peer.py scipy|qvoronoi IN OUT XMIN YMIN ZMIN XMAX YMAX ZMAX
 #   voronoi_peer.py --version scipy|qvoronoi
