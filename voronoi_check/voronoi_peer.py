@@ -9,11 +9,16 @@
 #   - a bounded cell: the tool's vertices, its ridge polygons as faces (turned to face
 #     the neighbour), clipped by the box walls it crosses;
 #   - an unbounded cell (a hull site): the box clipped by the bisectors of the
-#     tool's ridge neighbours (the tool's topology, the adapter's vertices).
+#     tool's ridge neighbours and of its tets' neighbours (the tool's topology, the
+#     adapter's vertices).
+# Everything is in numpy arrays (ridges and regions as CSR rows, cells in blocks of
+# 65536 sites written as they come): only cells that cross a wall and hull cells are
+# clipped one by one (clip(), in Python). tests/adapter_identity.py holds the cells to
+# those of the per-cell adapter before (tests/voronoi_peer_reference.py), byte for byte.
 # Exit: 0 answered, 2 bad usage, 3 the tool refused (its message last on stderr), 4 not installed.
-# The Python module imports the clipping part (cells_from_ridges) as dtlab._voronoi_regions
+# The Python module imports the clipping part (scipy_topology, cells_from_ridges) as dtlab._voronoi_regions
 # (dtlab.check_voronoi on a scipy.spatial.Voronoi): one adapter for both.
-import struct, subprocess, sys, time
+import itertools, struct, subprocess, sys, tempfile, time
 
 try:
     import numpy as np
@@ -80,113 +85,289 @@ def walls(cell, lo, hi):
                 return None
             n = np.zeros(3); n[a] = 1.0 if side else -1.0
             c = hi[a] if side else -lo[a]
+            # clip's distances to a wall are +-x_a - c exactly (the other two products are
+            # zeros, for finite vertices): a cell on the inner side of it is left as it is
+            x = np.asarray(cell[0]).reshape(-1, 3)[:, a]
+            if len(x) and np.isfinite(x).all() and ((x if side else -x) - c <= 0).all():
+                continue
             cell = clip(cell[0], cell[1], cell[2], n, c, tag)
     return cell
 
 
+class Rows:
+    """Rows of integers in CSR form: row k is idx[off[k]:off[k + 1]] (int64 arrays)."""
+
+    def __init__(self, off, idx):
+        self.off, self.idx = np.asarray(off, dtype=np.int64), np.asarray(idx, dtype=np.int64)
+
+    @staticmethod
+    def of_lists(lists):
+        lens = np.fromiter(map(len, lists), dtype=np.int64, count=len(lists))
+        off = np.zeros(len(lists) + 1, dtype=np.int64)
+        np.cumsum(lens, out=off[1:])
+        return Rows(off, np.fromiter(itertools.chain.from_iterable(lists), dtype=np.int64, count=int(off[-1])))
+
+    def __len__(self):
+        return len(self.off) - 1
+
+    def lens(self):
+        return np.diff(self.off)
+
+    def negatives(self):
+        """Per row, how many of its entries are negative (-1: the vertex at infinity)."""
+        c = np.zeros(len(self.idx) + 1, dtype=np.int64)
+        np.cumsum(self.idx < 0, out=c[1:])
+        return c[self.off[1:]] - c[self.off[:-1]]
+
+
+def spans(starts, lens):
+    """The concatenation of range(s, s + l) for the given starts and lengths."""
+    total = int(lens.sum())
+    first = np.zeros(len(lens), dtype=np.int64)
+    np.cumsum(lens[:-1], out=first[1:])
+    return np.repeat(starts - first, lens) + np.arange(total, dtype=np.int64)
+
+
+class Ridges:
+    """Qhull's ridges: sites p[r], q[r] and the polygon verts row r (-1 = infinity)."""
+
+    def __init__(self, p, q, verts):
+        self.p, self.q, self.verts = np.asarray(p, dtype=np.int64), np.asarray(q, dtype=np.int64), verts
+
+    def __len__(self):
+        return len(self.p)
+
+
 def tet_neighbors(regions, wanted):
-    """{site: sites} for the sites in `wanted`, from the Voronoi vertices that lie in
-    exactly four regions: such a vertex is the centre of one Delaunay tet, and its six
-    edges are Delaunay edges. A vertex in more regions (a merged, cospherical facet)
-    tells nothing about its edges. In numpy: one pass over all region entries."""
+    """{site: sites} for the sites in `wanted` (a bool mask), from the Voronoi vertices
+    that lie in exactly four regions: such a vertex is the centre of one Delaunay tet,
+    and its six edges are Delaunay edges. A vertex in more regions (a merged, cospherical
+    facet) tells nothing about its edges."""
     out = {}
-    if not wanted:
+    if not wanted.any() or len(regions.idx) == 0:
         return out
-    sizes = np.fromiter((len(r) for r in regions), dtype=np.int64, count=len(regions))
-    flat_v = np.fromiter((v for r in regions for v in r), dtype=np.int64, count=int(sizes.sum()))
-    flat_s = np.repeat(np.arange(len(regions), dtype=np.int64), sizes)
+    flat_v = regions.idx
+    flat_s = np.repeat(np.arange(len(regions), dtype=np.int64), regions.lens())
     finite = flat_v >= 0
-    flat_v, flat_s = flat_v[finite], flat_s[finite]
-    if flat_v.size == 0:
+    if not finite.any():
         return out
-    four = np.bincount(flat_v)[flat_v] == 4
-    flat_v, flat_s = flat_v[four], flat_s[four]
+    count = np.bincount(flat_v[finite])
+    # only the vertices of the wanted sites' regions can give them neighbours
+    near = np.zeros(len(count), dtype=bool)
+    near[flat_v[finite & wanted[flat_s]]] = True
+    keep = finite.copy()
+    keep[finite] = near[flat_v[finite]] & (count[flat_v[finite]] == 4)
+    flat_v, flat_s = flat_v[keep], flat_s[keep]
     order = np.argsort(flat_v, kind="stable")
-    quads = flat_s[order].reshape(-1, 4)  # the four sites of each such vertex
-    mask = np.zeros(len(regions), dtype=bool)
-    mask[list(wanted)] = True
-    for row in quads[mask[quads].any(axis=1)].tolist():
+    for row in flat_s[order].reshape(-1, 4).tolist():  # the four sites of each such vertex
         for i in row:
-            if mask[i]:
+            if wanted[i]:
                 out.setdefault(i, set()).update(j for j in row if j != i)
     return out
 
 
-def ridge_sides(pts, V, ridges):
-    """Per ridge (p, q, vs) whose vertices are all finite: the sign of (fan normal of the
-    polygon vs) . (q - p), the normal summed triangle by triangle from vs[0] in the
-    polygon's order; 0 for ridges through infinity. All ridges at once: the k-th fan
-    triangles of every ridge in one numpy step, added in the same order as one ridge's."""
+def ridge_sides(pts, V, ridges, block=1 << 20):
+    """Per ridge whose vertices are all finite: the sign of (fan normal of its polygon) .
+    (q - p), the normal summed triangle by triangle from its first vertex in the polygon's
+    order; 0 for ridges through infinity. The k-th fan triangles of a block of ridges in
+    one numpy step, added in the same order as one ridge's."""
     m = len(ridges)
     side = np.zeros(m)
-    lens = np.fromiter((len(vs) for _, _, vs in ridges), dtype=np.int64, count=m)
-    if m == 0 or lens.max() < 3:
-        return side
-    width = int(lens.max())
-    ids = np.full((m, width), -1, dtype=np.int64)
-    for r, (_, _, vs) in enumerate(ridges):
-        ids[r, :len(vs)] = vs
-    finite = (ids >= 0) | (np.arange(width) >= lens[:, None])
-    ok = finite.all(axis=1) & (lens >= 3)
-    rows = np.nonzero(ok)[0]
-    ids, lens = ids[rows], lens[rows]
-    o = V[ids[:, 0]]
-    nrm = np.zeros((len(rows), 3))
-    for k in range(1, width - 1):
-        on = k + 1 < lens
-        if not on.any():
-            break
-        a = V[ids[on, k]] - o[on]
-        b = V[ids[on, k + 1]] - o[on]
-        nrm[on] += np.cross(a, b)
-    pq = np.array([[p, q] for p, q, _ in ridges], dtype=np.int64)[rows]
-    d = pts[pq[:, 1]] - pts[pq[:, 0]]
-    side[rows] = np.sign(nrm[:, 0] * d[:, 0] + nrm[:, 1] * d[:, 1] + nrm[:, 2] * d[:, 2])
+    lens, infinite = ridges.verts.lens(), ridges.verts.negatives()
+    for b0 in range(0, m, block):
+        b1 = min(m, b0 + block)
+        rows = b0 + np.nonzero((lens[b0:b1] >= 3) & (infinite[b0:b1] == 0))[0]
+        if len(rows) == 0:
+            continue
+        rows = rows[np.argsort(-lens[rows], kind="stable")]  # longest first: fan k is a prefix
+        st, ln, idx = ridges.verts.off[rows], lens[rows], ridges.verts.idx
+        o = V[idx[st]]
+        nrm = np.zeros((len(rows), 3))
+        for k in range(1, int(ln[0]) - 1):
+            on = int(np.count_nonzero(ln > k + 1))
+            a = V[idx[st[:on] + k]] - o[:on]
+            b = V[idx[st[:on] + k + 1]] - o[:on]
+            nrm[:on] += np.cross(a, b)
+        d = pts[ridges.q[rows]] - pts[ridges.p[rows]]
+        side[rows] = np.sign(nrm[:, 0] * d[:, 0] + nrm[:, 1] * d[:, 1] + nrm[:, 2] * d[:, 2])
     return side
 
 
-def cells_from_ridges(pts, V, ridges, regions, lo, hi):
-    """ridges: (p, q, [vertex ids, -1 = infinity]); regions: per site its vertex ids
-    (-1 = infinity; empty for a duplicate). Returns {site: (verts, faces, tags)}.
-    Qhull lists a ridge only with three vertices or more, infinity counted once, so
-    the face of a hull edge with one tet around it (one finite vertex and rays, a
-    wedge of positive area) is in no ridge; an unbounded cell also takes the
-    neighbours of its tets (tet_neighbors: the tool's own regions)."""
+class Cells:
+    """Cells in CSR form, in any order of sites: cell c has nvert[c] vertices (rows of
+    verts), nface[c] faces (their tags and corner counts fsize), then the corners (local
+    vertex ids) of its faces."""
+
+    def __init__(self, site, nvert, verts, nface, tags, fsize, corners):
+        self.site, self.nvert, self.nface = site, nvert, nface
+        self.verts, self.tags, self.fsize, self.corners = verts, tags, fsize, corners
+
+    @staticmethod
+    def of(cells):
+        """From {site: (verts, faces, tags)} (the clipping's cells)."""
+        items = sorted(cells.items())
+        faces = [f for _, (_, fs, _) in items for f in fs]
+        return Cells(np.array([i for i, _ in items], dtype=np.int64),
+                     np.array([len(v) for _, (v, _, _) in items], dtype=np.int64),
+                     np.asarray([x for _, (v, _, _) in items for x in v], dtype="<f8").reshape(-1, 3),
+                     np.array([len(fs) for _, (_, fs, _) in items], dtype=np.int64),
+                     np.asarray([t for _, (_, _, ts) in items for t in ts], dtype="<i4"),
+                     np.array([len(f) for f in faces], dtype="<u4"),
+                     np.asarray([v for f in faces for v in f], dtype="<u4"))
+
+    def __len__(self):
+        return len(self.site)
+
+    def ncorner(self):
+        return np.bincount(np.repeat(np.arange(len(self), dtype=np.int64), self.nface),
+                           weights=self.fsize, minlength=len(self)).astype(np.int64)
+
+    def pick(self, keep):
+        """The cells where the bool mask keep is true."""
+        def sub(counts):
+            return spans((np.cumsum(counts) - counts)[keep], counts[keep])
+        vi, fi, ci = sub(self.nvert), sub(self.nface), sub(self.ncorner())
+        return Cells(self.site[keep], self.nvert[keep], self.verts[vi], self.nface[keep], self.tags[fi],
+                     self.fsize[fi], self.corners[ci])
+
+    def join(self, other):
+        return Cells(*(np.concatenate([getattr(self, k), getattr(other, k)])
+                       for k in ("site", "nvert", "verts", "nface", "tags", "fsize", "corners")))
+
+    def as_dict(self):
+        """{site: (verts (k, 3), faces as lists, tags as a list)}."""
+        out, v0, f0, c0 = {}, 0, 0, 0
+        for c in range(len(self)):
+            nv, nf = int(self.nvert[c]), int(self.nface[c])
+            sizes = self.fsize[f0:f0 + nf].tolist()
+            faces = []
+            flat = self.corners[c0:c0 + sum(sizes)].tolist()
+            k = 0
+            for s in sizes:
+                faces.append(flat[k:k + s]); k += s
+            out[int(self.site[c])] = (self.verts[v0:v0 + nv], faces, self.tags[f0:f0 + nf].tolist())
+            v0, f0, c0 = v0 + nv, f0 + nf, c0 + k
+        return out
+
+    def words(self):
+        """The cells as cell_exchange.hpp's records, in the order of their sites, as
+        little-endian 32-bit words: per cell (i64 site, u32 vertex, face and corner
+        counts), the vertices (3 f64 each), the faces' tags (i32), corner counts (u32) and
+        corners (u32). Every field is a whole number of words."""
+        k = len(self)
+        nv, nf, nc = self.nvert, self.nface, self.ncorner()
+        size = 5 + 6 * nv + 2 * nf + nc
+        order = np.argsort(self.site, kind="stable")
+        start = np.empty(k, dtype=np.int64)
+        start[order] = np.cumsum(size[order]) - size[order]
+        out = np.empty(int(size.sum()), dtype="<u4")
+        head = np.empty(k, dtype=[("site", "<i8"), ("nv", "<u4"), ("nf", "<u4"), ("nc", "<u4")])
+        head["site"], head["nv"], head["nf"], head["nc"] = self.site, nv, nf, nc
+        out[start[:, None] + np.arange(5)] = head.view("<u4").reshape(k, 5)
+
+        def rank(counts):  # per element: its cell, its place in the cell
+            cell = np.repeat(np.arange(k, dtype=np.int64), counts)
+            first = np.cumsum(counts) - counts
+            return cell, np.arange(len(cell), dtype=np.int64) - first[cell]
+        c, r = rank(nv)
+        out[(start[c] + 5 + 6 * r)[:, None] + np.arange(6)] = \
+            np.ascontiguousarray(self.verts, dtype="<f8").view("<u4").reshape(-1, 6)
+        c, r = rank(nf)
+        at = start[c] + 5 + 6 * nv[c] + r
+        out[at] = self.tags.astype("<i4").view("<u4")
+        out[at + nf[c]] = self.fsize
+        c, r = rank(nc)
+        out[start[c] + 5 + 6 * nv[c] + 2 * nf[c] + r] = self.corners
+        return out
+
+
+def bounded_cells(V, sites, e_start, e_count, e_ridge, e_nb, e_flip, ridges):
+    """The cells of bounded regions from their ridges, all at once: cell c (site
+    sites[c]) has the entries e_start[c] .. + e_count[c] (ridge, neighbour, whether the
+    ridge's polygon is reversed to face the neighbour) as its faces, in that order; its
+    vertices are the ridges' vertex ids sorted (-1, were there one, indexes V as
+    numpy does), the corners their places in that list."""
+    k = len(sites)
+    e = spans(e_start, e_count)
+    cell = np.repeat(np.arange(k, dtype=np.int64), e_count)
+    r = e_ridge[e]
+    fsize = ridges.verts.off[r + 1] - ridges.verts.off[r]
+    pos = spans(np.zeros(len(e), dtype=np.int64), fsize)  # place in the face
+    rep = np.repeat(np.arange(len(e), dtype=np.int64), fsize)
+    back = np.repeat(e_flip[e], fsize)
+    pos[back] = (fsize[rep] - 1 - pos)[back]
+    gv = ridges.verts.idx[ridges.verts.off[r][rep] + pos]
+    stride = len(V) + 1
+    key = cell[rep] * stride + (gv + 1)
+    uniq, local = np.unique(key, return_inverse=True)
+    ucell = uniq // stride
+    nvert = np.bincount(ucell, minlength=k).astype(np.int64)
+    first = np.cumsum(nvert) - nvert
+    local = local - first[cell[rep]]
+    return Cells(np.asarray(sites, dtype=np.int64), nvert, V[uniq % stride - 1], e_count.astype(np.int64),
+                 e_nb[e].astype("<i4"), fsize.astype("<u4"), local.astype("<u4"))
+
+
+def clipped_cells(pts, V, ridges, regions, lo, hi, chunk=1 << 16):
+    """The cells of the regions clipped to the box [lo, hi], as Cells blocks of at most
+    `chunk` sites, in the order of their sites. ridges: Ridges; regions: Rows, per site
+    its region's vertex ids (-1 = infinity; empty for a duplicate). A bounded region's
+    cell: its ridge polygons as faces (turned to face the neighbour), clipped by the
+    walls it crosses (walls(), per cell, only where a vertex lies outside the box). An
+    unbounded region's cell (a hull site): the box cut by the bisectors of its ridge
+    neighbours and of its tets' neighbours. Qhull lists a ridge only with three vertices
+    or more, infinity counted once, so the face of a hull edge with one tet around it
+    (one finite vertex and rays, a wedge of positive area) is in no ridge: an unbounded
+    cell also takes the neighbours of its tets (tet_neighbors: the tool's own regions)."""
+    n, m = len(regions), len(ridges)
     sides = ridge_sides(pts, V, ridges)
-    by_site = {}
-    for r, (p, q, vs) in enumerate(ridges):
-        # a face of p's cell faces q when its fan normal points to q's side
-        by_site.setdefault(p, []).append((q, vs, sides[r] < 0))
-        by_site.setdefault(q, []).append((p, vs, sides[r] > 0))
+    # a face of p's cell faces q when its fan normal points to q's side; per site its
+    # ridges in ridge order
+    e_site = np.empty(2 * m, dtype=np.int64)
+    e_site[0::2], e_site[1::2] = ridges.p, ridges.q
+    order = np.argsort(e_site, kind="stable")
+    e_site = e_site[order]
+    e_ridge = order // 2
+    e_nb = np.where(order % 2 == 0, ridges.q[e_ridge], ridges.p[e_ridge])
+    e_flip = np.where(order % 2 == 0, sides[e_ridge] < 0, sides[e_ridge] > 0)
+    del order
+    bound = np.searchsorted(e_site, np.arange(n + 1, dtype=np.int64))
+    e_count = np.diff(bound)
+    reg_len, unbounded = regions.lens(), regions.negatives() > 0
+    bounded = (reg_len > 0) & ~unbounded & (e_count > 0)
+    unbounded &= reg_len > 0
+    tets = tet_neighbors(regions, unbounded)
     lo_a, hi_a = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
-    tets = tet_neighbors(regions, {i for i, reg in enumerate(regions) if -1 in reg})
-    cells = {}
-    for i, reg in enumerate(regions):
-        s, rs = pts[i], by_site.get(i, [])
-        if not reg or (-1 not in reg and not rs):
-            continue
-        if -1 in reg:
-            cell = box_cell(lo, hi)
-            for j in sorted({j for j, _, _ in rs} | tets.get(i, set())):
-                n = pts[j] - s
-                cell = clip(cell[0], cell[1], cell[2], n, float(np.dot(n, (pts[j] + s) / 2)), j) if cell else None
-        else:
-            ids = sorted({v for _, vs, _ in rs for v in vs})
-            local = {v: k for k, v in enumerate(ids)}
-            verts = V[ids]
-            faces, tags = [], []
-            for j, vs, flip in rs:
-                f = [local[v] for v in vs]
-                if flip:
-                    f.reverse()
-                faces.append(f); tags.append(j)
-            if ((verts >= lo_a) & (verts <= hi_a)).all():
-                cell = (list(verts), faces, tags)  # inside the box: no wall cuts it
-            else:
+    for s0 in range(0, n, chunk):
+        s1 = min(n, s0 + chunk)
+        sites = s0 + np.nonzero(bounded[s0:s1])[0]
+        block = bounded_cells(V, sites, bound[sites], e_count[sites], e_ridge, e_nb, e_flip, ridges)
+        vin = ((block.verts >= lo_a) & (block.verts <= hi_a)).all(axis=1)
+        inside = np.bincount(np.repeat(np.arange(len(sites)), block.nvert), weights=~vin,
+                             minlength=len(sites)) == 0
+        slow = {}
+        if not inside.all():
+            for i, (verts, faces, tags) in block.pick(~inside).as_dict().items():
                 cell = walls((list(verts), faces, tags), lo, hi)
-        if cell:
-            cells[i] = cell
-    return cells
+                if cell:
+                    slow[i] = cell
+            block = block.pick(inside)
+        for i in (s0 + np.nonzero(unbounded[s0:s1])[0]).tolist():
+            s, cell = pts[i], box_cell(lo, hi)
+            for j in sorted(set(e_nb[bound[i]:bound[i + 1]].tolist()) | tets.get(i, set())):
+                n_ = pts[j] - s
+                cell = clip(cell[0], cell[1], cell[2], n_, float(np.dot(n_, (pts[j] + s) / 2)), j) if cell else None
+            if cell:
+                slow[i] = cell
+        yield block.join(Cells.of(slow)) if slow else block
+
+
+def cells_from_ridges(pts, V, ridges, regions, lo, hi):
+    """{site: (verts, faces, tags)}: clipped_cells' cells as Python lists (faces and tags)."""
+    out = {}
+    for block in clipped_cells(pts, np.asarray(V, dtype=float), ridges, regions, lo, hi):
+        out.update(block.as_dict())
+    return out
 
 
 def run_scipy(pts):
@@ -198,52 +379,111 @@ def run_scipy(pts):
 
 
 def scipy_topology(vor):
-    """(ridges, regions per site) of a scipy.spatial.Voronoi, as cells_from_ridges takes them."""
-    ridges = [(int(p), int(q), [int(v) for v in vs]) for (p, q), vs in zip(vor.ridge_points, vor.ridge_vertices)]
+    """(Ridges, regions per site as Rows) of a scipy.spatial.Voronoi, as clipped_cells
+    takes them."""
+    rp = np.asarray(vor.ridge_points, dtype=np.int64).reshape(-1, 2)
+    ridges = Ridges(rp[:, 0], rp[:, 1], Rows.of_lists(vor.ridge_vertices))
     # scipy gives a copy of a site (a Qhull coplanar point) its original's region: the
-    # site in the ridges keeps it, the other copies get none.
-    in_ridges = {int(i) for i in np.ravel(vor.ridge_points)}
-    owner = {}
-    for i, r in enumerate(vor.point_region):
-        if r not in owner or (i in in_ridges and owner[r] not in in_ridges):
-            owner[r] = i
-    regions = [[int(v) for v in vor.regions[r]] if owner[r] == i else [] for i, r in enumerate(vor.point_region)]
-    return ridges, regions
+    # first site of the region that is in a ridge keeps it (else its first site), the
+    # other copies get none.
+    pr = np.asarray(vor.point_region, dtype=np.int64)
+    n = len(pr)
+    in_ridges = np.zeros(n, dtype=bool)
+    in_ridges[rp.ravel()] = True
+    order = np.lexsort((np.arange(n), ~in_ridges, pr))
+    lead = np.ones(n, dtype=bool)
+    lead[1:] = pr[order][1:] != pr[order][:-1]
+    owner = np.zeros(n, dtype=bool)
+    owner[order[lead]] = True
+    regs = Rows.of_lists(vor.regions)
+    lens = np.where(owner, regs.lens()[pr], 0)
+    off = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(lens, out=off[1:])
+    return ridges, Rows(off, regs.idx[spans(regs.off[pr], lens)])
+
+
+def line_tokens(buf, nl, a, b, dtype):
+    """Lines a .. b-1 of buf (nl: the newlines' offsets) parsed as one stream of numbers."""
+    lo = int(nl[a - 1]) + 1 if a > 0 else 0
+    return np.fromstring(buf[lo:int(nl[b - 1]) + 1], dtype=dtype, sep=" ")
+
+
+def count_rows(buf, nl, a, b, step=1 << 20):
+    """Lines a .. b-1 of buf, each `k x1 .. xk` (Qhull's `o` regions and `Fv` ridges,
+    single spaces), as Rows of their k numbers, the counts left out."""
+    rows_off, rows_idx = [np.zeros(1, dtype=np.int64)], []
+    at = 0
+    arr = np.frombuffer(buf, dtype=np.uint8)
+    for l0 in range(a, b, step):
+        l1 = min(b, l0 + step)
+        tok = line_tokens(buf, nl, l0, l1, np.int64)
+        lo = int(nl[l0 - 1]) + 1
+        spaces = np.flatnonzero(arr[lo:int(nl[l1 - 1]) + 1] == 32)
+        ends = nl[l0:l1] - lo
+        per_line = np.diff(np.searchsorted(spaces, ends), prepend=0) + 1
+        first = np.cumsum(per_line) - per_line
+        if int(per_line.sum()) == len(tok) and (tok[first] == per_line - 1).all():
+            keep = np.ones(len(tok), dtype=bool)
+            keep[first] = False
+            rows_idx.append(tok[keep])
+            rows_off.append(at + np.cumsum(per_line - 1))
+        else:  # not single spaces: line by line, every number after the first
+            lines = [[int(x) for x in line.split()[1:]] for line in buf[lo:int(nl[l1 - 1])].split(b"\n")]
+            part = Rows.of_lists(lines)
+            rows_idx.append(part.idx)
+            rows_off.append(at + part.off[1:])
+        at += len(rows_idx[-1])
+    return Rows(np.concatenate(rows_off), np.concatenate(rows_idx) if rows_idx else np.zeros(0, np.int64))
 
 
 def run_qvoronoi(pts):
     text = "3\n%d\n" % len(pts) + "".join("%r %r %r\n" % (float(p[0]), float(p[1]), float(p[2])) for p in pts)
-    t = time.perf_counter()
-    r = subprocess.run(["qvoronoi", "o", "Fv"], input=text, capture_output=True, text=True)
-    sec = time.perf_counter() - t
-    if r.returncode != 0:
-        lines = [l for l in r.stderr.splitlines() if l.strip()]
-        qh = [l for l in lines if l.startswith("QH")]
-        raise RuntimeError("qvoronoi: %s" % (qh or lines or ["exit %d" % r.returncode])[0])
-    tok = r.stdout.split("\n")
-    nv, nr = map(int, tok[1].split()[:2])
-    V = np.array([[float(x) for x in tok[2 + k].split()] for k in range(1, nv)]).reshape(-1, 3)
-    # `o`: per site its region's vertices, 0 for infinity
-    regions = [[int(x) - 1 for x in tok[2 + nv + k].split()[1:]] for k in range(nr)]
+    with tempfile.TemporaryFile() as out:
+        t = time.perf_counter()
+        r = subprocess.run(["qvoronoi", "o", "Fv"], input=text.encode(), stdout=out, stderr=subprocess.PIPE)
+        sec = time.perf_counter() - t
+        del text
+        if r.returncode != 0:
+            lines = [l for l in r.stderr.decode(errors="replace").splitlines() if l.strip()]
+            qh = [l for l in lines if l.startswith("QH")]
+            raise RuntimeError("qvoronoi: %s" % (qh or lines or ["exit %d" % r.returncode])[0])
+        out.seek(0)
+        buf = out.read()
+    arr = np.frombuffer(buf, dtype=np.uint8)
+    nl = np.concatenate([np.flatnonzero(arr[s:s + (1 << 26)] == 10) + s for s in range(0, len(buf), 1 << 26)]
+                        or [np.zeros(0, np.int64)])
+    nv, nr = map(int, line_tokens(buf, nl, 1, 2, np.int64)[:2])
+    # `o`: the vertices (the first one stands for infinity), per site its region's
+    # vertices (0 for infinity); `Fv`: per ridge its count, two sites and its vertices
+    V = line_tokens(buf, nl, 3, 2 + nv, float)
+    if len(V) != 3 * (nv - 1):
+        raise RuntimeError("qvoronoi: unexpected output")
+    V = V.reshape(-1, 3)
+    regions = count_rows(buf, nl, 2 + nv, 2 + nv + nr)
+    regions.idx -= 1
     at = 2 + nv + nr
-    ridges = []
-    for line in tok[at + 1: at + 1 + int(tok[at])]:
-        f = [int(x) for x in line.split()]
-        ridges.append((f[1], f[2], [v - 1 for v in f[3:]]))
-    return sec, V, ridges, regions
+    m = int(line_tokens(buf, nl, at, at + 1, np.int64)[0])
+    f = count_rows(buf, nl, at + 1, at + 1 + m)
+    del buf, arr, nl
+    lens = f.lens() - 2
+    p, q = f.idx[f.off[:-1]], f.idx[f.off[:-1] + 1]
+    off = np.zeros(m + 1, dtype=np.int64)
+    np.cumsum(lens, out=off[1:])
+    idx = f.idx[spans(f.off[:-1] + 2, lens)] - 1
+    return sec, V, Ridges(p, q, Rows(off, idx)), regions
 
 
-def write(out, sec, cells):
+def write(out, sec, blocks):
+    """The cells file (cell_exchange.hpp): the blocks in the order of their sites."""
     with open(out, "wb") as f:
-        f.write(b"DTLV"); f.write(struct.pack("<dQ", sec, len(cells)))
-        for i in sorted(cells):
-            verts, faces, tags = cells[i]
-            corners = [v for fc in faces for v in fc]
-            f.write(struct.pack("<qIII", i, len(verts), len(faces), len(corners)))
-            f.write(np.asarray(verts, dtype="<f8").tobytes())
-            f.write(np.asarray(tags, dtype="<i4").tobytes())
-            f.write(np.asarray([len(fc) for fc in faces], dtype="<u4").tobytes())
-            f.write(np.asarray(corners, dtype="<u4").tobytes())
+        f.write(b"DTLV"); f.write(struct.pack("<dQ", sec, 0))
+        count = 0
+        for block in blocks:
+            if len(block):
+                block.words().tofile(f)
+                count += len(block)
+        f.seek(4)
+        f.write(struct.pack("<dQ", sec, count))
 
 
 def main():
@@ -285,7 +525,7 @@ def main():
         lines = [l for l in str(e).splitlines() if l.strip()]
         qh = [l for l in lines if l.startswith("QH")]
         print("%s: %s" % (type(e).__name__, (qh or lines or ["?"])[0]), file=sys.stderr); return 3
-    write(sys.argv[3], sec, cells_from_ridges(pts, V, ridges, regions, b[:3], b[3:]))
+    write(sys.argv[3], sec, clipped_cells(pts, V, ridges, regions, b[:3], b[3:]))
     return 0
 
 
