@@ -100,16 +100,25 @@ int run_voronoi(const VoronoiArgs& a) {
                  {"box_clipped_cells", vd.box_clipped}};
   std::size_t defects = 0;
   if (a.check) {
+    // The exact Voronoi checker's rule: relative tolerances with an ulp floor where the
+    // box is a few ulps of its coordinates wide (voronoi/rounding_bound.hpp).
     const double tol = 1e-9 * vd.box.diagonal();
+    const CellsRoundingFloor floor = cells_rounding_floor(vd);
     nlohmann::json bad = nlohmann::json::array();
     for (std::size_t i = 0; i < vd.cells.size(); ++i) {
       if (vd.cells[i].duplicate_of >= 0) continue;
-      const std::string why = check_cell(vd.cells[i], tol);
+      const std::string why = check_cell(vd.cells[i], tol, floor.vertex_error);
       if (!why.empty()) bad.push_back({{"cell", i}, {"defect", why}}), ++defects;
     }
     const double rel = std::abs(m["cell_volume_sum"].get<double>() - vd.box.volume()) / vd.box.volume();
-    if (!(rel <= 1e-12)) ++defects;  // a NaN error (overflowing volumes) is a defect too
-    m["check"] = {{"defects", bad}, {"relative_volume_error", rel}};
+    // The volume floor holds for closed cells only: with a defective cell, 1e-12 alone.
+    const double volume_tol = defects == 0 ? std::max(1e-12, floor.volume / vd.box.volume()) : 1e-12;
+    if (!(rel <= volume_tol)) ++defects;  // a NaN error (overflowing volumes) is a defect too
+    m["check"] = {{"defects", bad},
+                  {"relative_volume_error", rel},
+                  {"relative_volume_tolerance", volume_tol},
+                  {"volume_rule", volume_tol > 1e-12 ? "ulps" : "relative"},
+                  {"vertex_error_floor", floor.vertex_error}};
   }
   int peers_rc = kOk;
   if (const auto peers = parse_voronoi_peers(a.against); !peers.empty() || a.against != "none") {
@@ -137,7 +146,12 @@ int run_voronoi(const VoronoiArgs& a) {
         std::printf("  cell %zu: %s\n", bad[k]["cell"].get<std::size_t>(), bad[k]["defect"].get<std::string>().c_str());
       if (bad.size() > 20) std::printf("  ... %zu more in the --json manifest\n", bad.size() - 20);
       const double rel = m["check"]["relative_volume_error"].get<double>();
-      if (rel > 1e-12) std::printf("  cell volumes sum to the box volume within %.3g (relative), more than 1e-12\n", rel);
+      const double volume_tol = m["check"]["relative_volume_tolerance"].get<double>();
+      if (!(rel <= volume_tol))
+        std::printf("  cell volumes sum to the box volume within %.3g (relative), more than %.3g\n", rel, volume_tol);
+      else if (volume_tol > 1e-12)
+        std::printf("  cell volumes within %.3g of the box volume (relative): the ulp floor (%.3g) applies\n", rel,
+                    volume_tol);
     }
     if (!a.out.empty())
       std::printf("wrote %s.json%s%s\n", a.out.c_str(), obj ? ", .obj" : "", a.vtu ? ", .vtu" : "");

@@ -163,9 +163,14 @@ inline bool has_edge_within(const VoronoiCell& c, double tol) {
   return false;
 }
 
-// All of the above, plus no edge of length <= tol and no face of area <= tol^2.
-inline std::string check_cell(const VoronoiCell& c, double tol) {
+// All of the above, plus no edge of length <= tol and no face of area <= tol^2. With
+// `vertex_error` e > tol (the ulp floor: rounding may move a vertex by more than tol, so
+// two corners closer than that may round to one point and a thin face to a sliver) the
+// exact Voronoi checker's rule instead: closed, and convex with each face plane's
+// tolerance widened as check_cell_convex says, faces below tol^2 not tested.
+inline std::string check_cell(const VoronoiCell& c, double tol, double vertex_error = 0) {
   if (std::string why = check_cell_closed(c); !why.empty()) return why;
+  if (vertex_error > tol) return check_cell_convex(c, tol, true, nullptr, vertex_error);
   if (has_edge_within(c, tol)) return "zero-length edge";
   return check_cell_convex(c, tol);
 }

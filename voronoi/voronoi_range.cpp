@@ -64,12 +64,17 @@ std::string lost_cells_problem(const VoronoiDiagram& vd) {
   // Where the box is a few ulps of its coordinates wide, correctly rounded vertices move
   // the volumes by more than 1e-6: the ulp floor of the exact Voronoi checker
   // (voronoi/rounding_bound.hpp) applies, the most kRoundingUlps ulps per vertex allow.
-  const double d = std::sqrt(3.0) * kRoundingUlps * box_ulp(vd.box);
-  double bound = 0;
-  for (const auto& c : vd.cells)
-    if (c.duplicate_of < 0) bound += volume_rounding_bound(c, d).volume;
-  if (!(error <= bound)) return "the cells do not fill the box (double precision lost on these sites)";
+  if (!(error <= cells_rounding_floor(vd).volume))
+    return "the cells do not fill the box (double precision lost on these sites)";
   return "";
+}
+
+CellsRoundingFloor cells_rounding_floor(const VoronoiDiagram& vd) {
+  CellsRoundingFloor f;
+  f.vertex_error = std::sqrt(3.0) * kRoundingUlps * box_ulp(vd.box);
+  for (const auto& c : vd.cells)
+    if (c.duplicate_of < 0) f.volume += volume_rounding_bound(c, f.vertex_error).volume;
+  return f;
 }
 
 }  // namespace dtlab

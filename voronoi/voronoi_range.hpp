@@ -36,4 +36,13 @@ std::optional<VoronoiRefusal> voronoi_refusal(std::span<const Point3> sites, con
 // (volume_rounding_bound, the exact Voronoi checker's ulp floor).
 std::string lost_cells_problem(const VoronoiDiagram& vd);
 
+// The ulp floor of a diagram's cells: `vertex_error` e = sqrt(3) kRoundingUlps ulps of the
+// box's largest coordinate (how far a correctly computed vertex may be, Euclidean), and
+// `volume` the most the cells' volume sum can move when every vertex moves by e (the sum
+// of volume_rounding_bound over the cells that are not duplicates).
+struct CellsRoundingFloor {
+  double vertex_error = 0, volume = 0;
+};
+CellsRoundingFloor cells_rounding_floor(const VoronoiDiagram& vd);
+
 }  // namespace dtlab

@@ -69,5 +69,14 @@ else
   echo "FAIL: no naive build failure found for the voronoi test"; fails=$((fails + 1))
 fi
 
+# voronoi --check on sites one ulp of whose coordinates is ~1% of the box (far_translate
+# at 2.4e11, kettner_grid 2^-53 apart): the exact checker's ulp floor (voronoi/
+# rounding_bound.hpp) applies, so the answered cells pass their own check.
+corpus="$(dirname "$0")/../../voronoi_check/corpus"
+for f in cgal-dual-far_translate-n51-0 cgal-dual-kettner_grid-n44-0; do
+  expect 0 "voronoi --check $f (ulp floor)" -- "$dtlab" voronoi "$corpus/$f.node" --check --no-obj
+  says "voronoi --check $f says the ulp floor applied" "ulp floor"
+done
+
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -122,3 +122,28 @@ TEST_CASE("check_cell_convex: a vertex moved beyond what the rounding allows is 
   // e = 0: the tolerance alone, as before.
   CHECK_FALSE(check_cell_convex(m.view(), 1e-9, true).empty());
 }
+
+TEST_CASE("check_cell with the ulp floor: a corner pair rounded to one point passes, a cell left open does not") {
+  ConvexCell box;
+  box.reset({{0, 0, 0}, {1, 1, 1}});
+  // Cut one corner by a plane so close to it that the new triangle's corners lie 1e-7
+  // apart: with vertices within e = 1e-6 of their true places they may be one point.
+  box.clip({1, 1, 1}, 3 - 1e-7, 99, 1e-15);
+  OwnedCell m = owned(box);
+  REQUIRE(m.offsets.size() == 8);  // 7 faces
+  const double tol = 1e-12, e = 1e-6;
+  // Round the three new corners to one point, as doubles near a huge coordinate would.
+  const Point3 corner{1, 1, 1};
+  for (auto& v : m.vertices)
+    if (norm(v - corner) < 1e-6) v = corner;
+  CHECK(check_cell(m.view(), tol) == "zero-length edge");  // the strict rule
+  CHECK(check_cell(m.view(), tol, e).empty());              // within the rounding
+  CHECK(check_cell(m.view(), tol, tol / 2) == "zero-length edge");  // a floor below tol: strict
+  // A face dropped: not closed under either rule.
+  OwnedCell open = owned(box);
+  open.offsets.pop_back();
+  open.neighbors.pop_back();
+  open.corners.resize(open.offsets.back());
+  CHECK_FALSE(check_cell(open.view(), tol, e).empty());
+  CHECK_FALSE(check_cell(open.view(), tol).empty());
+}
