@@ -55,6 +55,31 @@ void check_voronoi_range(const std::string& input, const std::vector<Point3>& po
   throw UsageError(refusal->reason);
 }
 
+// --check: each cell's shape and the volumes' sum, into m["check"]; the number of defects.
+std::size_t check_cells(const VoronoiDiagram& vd, nlohmann::json& m) {
+  std::size_t defects = 0;
+  // The exact Voronoi checker's rule: relative tolerances with an ulp floor where the
+  // box is a few ulps of its coordinates wide (voronoi/rounding_bound.hpp).
+  const double tol = 1e-9 * vd.box.diagonal();
+  const CellsRoundingFloor floor = cells_rounding_floor(vd);
+  nlohmann::json bad = nlohmann::json::array();
+  for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+    if (vd.cells[i].duplicate_of >= 0) continue;
+    const std::string why = check_cell(vd.cells[i], tol, floor.vertex_error);
+    if (!why.empty()) bad.push_back({{"cell", i}, {"defect", why}}), ++defects;
+  }
+  const double rel = std::abs(m["cell_volume_sum"].get<double>() - vd.box.volume()) / vd.box.volume();
+  // The volume floor holds for closed cells only: with a defective cell, 1e-12 alone.
+  const double volume_tol = defects == 0 ? std::max(1e-12, floor.volume / vd.box.volume()) : 1e-12;
+  if (!(rel <= volume_tol)) ++defects;  // a NaN error (overflowing volumes) is a defect too
+  m["check"] = {{"defects", bad},
+                {"relative_volume_error", rel},
+                {"relative_volume_tolerance", volume_tol},
+                {"volume_rule", volume_tol > 1e-12 ? "ulps" : "relative"},
+                {"vertex_error_floor", floor.vertex_error}};
+  return defects;
+}
+
 int run_voronoi(const VoronoiArgs& a) {
   const bool obj = !a.no_obj;
   a.defined.register_all();  // before the cells: a bad definition ends the run at once
@@ -98,28 +123,7 @@ int run_voronoi(const VoronoiArgs& a) {
                  {"clipped_cells", vd.clipped},
                  {"exact_clipped_cells", vd.exact_clipped},
                  {"box_clipped_cells", vd.box_clipped}};
-  std::size_t defects = 0;
-  if (a.check) {
-    // The exact Voronoi checker's rule: relative tolerances with an ulp floor where the
-    // box is a few ulps of its coordinates wide (voronoi/rounding_bound.hpp).
-    const double tol = 1e-9 * vd.box.diagonal();
-    const CellsRoundingFloor floor = cells_rounding_floor(vd);
-    nlohmann::json bad = nlohmann::json::array();
-    for (std::size_t i = 0; i < vd.cells.size(); ++i) {
-      if (vd.cells[i].duplicate_of >= 0) continue;
-      const std::string why = check_cell(vd.cells[i], tol, floor.vertex_error);
-      if (!why.empty()) bad.push_back({{"cell", i}, {"defect", why}}), ++defects;
-    }
-    const double rel = std::abs(m["cell_volume_sum"].get<double>() - vd.box.volume()) / vd.box.volume();
-    // The volume floor holds for closed cells only: with a defective cell, 1e-12 alone.
-    const double volume_tol = defects == 0 ? std::max(1e-12, floor.volume / vd.box.volume()) : 1e-12;
-    if (!(rel <= volume_tol)) ++defects;  // a NaN error (overflowing volumes) is a defect too
-    m["check"] = {{"defects", bad},
-                  {"relative_volume_error", rel},
-                  {"relative_volume_tolerance", volume_tol},
-                  {"volume_rule", volume_tol > 1e-12 ? "ulps" : "relative"},
-                  {"vertex_error_floor", floor.vertex_error}};
-  }
+  const std::size_t defects = a.check ? check_cells(vd, m) : 0;
   int peers_rc = kOk;
   if (const auto peers = parse_voronoi_peers(a.against); !peers.empty() || a.against != "none") {
     try {

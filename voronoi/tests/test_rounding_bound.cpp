@@ -136,8 +136,8 @@ TEST_CASE("check_cell with the ulp floor: a corner pair rounded to one point pas
   const Point3 corner{1, 1, 1};
   for (auto& v : m.vertices)
     if (norm(v - corner) < 1e-6) v = corner;
-  CHECK(check_cell(m.view(), tol) == "zero-length edge");  // the strict rule
-  CHECK(check_cell(m.view(), tol, e).empty());              // within the rounding
+  CHECK(check_cell(m.view(), tol) == "zero-length edge");           // the strict rule
+  CHECK(check_cell(m.view(), tol, e).empty());                      // within the rounding
   CHECK(check_cell(m.view(), tol, tol / 2) == "zero-length edge");  // a floor below tol: strict
   // A face dropped: not closed under either rule.
   OwnedCell open = owned(box);
