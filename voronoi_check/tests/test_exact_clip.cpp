@@ -10,17 +10,14 @@
 
 #include "fuzz/families.hpp"
 #include "voronoi/voronoi_range.hpp"
+#include "sites.hpp"
 #include "voronoi_check/voronoi_check.hpp"
 
 using namespace dtlab;
 
 namespace {
 
-VoronoiDiagram cells_of(const std::vector<Point3>& sites) {
-  VoronoiOptions o;
-  o.threads = 1;
-  return compute_voronoi(sites, o);
-}
+using test::cells_of;
 
 bool acceptable(VoronoiVerdict v) {
   return v == VoronoiVerdict::exact_topology || v == VoronoiVerdict::rounded_topology;

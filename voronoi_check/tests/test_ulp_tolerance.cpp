@@ -10,6 +10,7 @@
 
 #include "fuzz/families.hpp"
 #include "voronoi/voronoi_range.hpp"
+#include "sites.hpp"
 #include "voronoi_check/voronoi_check.hpp"
 #include "voronoi_check/voronoi_peers.hpp"
 
@@ -17,11 +18,7 @@ using namespace dtlab;
 
 namespace {
 
-VoronoiDiagram cells_of(const std::vector<Point3>& sites) {
-  VoronoiOptions o;
-  o.threads = 1;
-  return compute_voronoi(sites, o);
-}
+using test::cells_of;
 
 }  // namespace
 
