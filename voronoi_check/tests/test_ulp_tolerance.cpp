@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "fuzz/families.hpp"
-#include "voronoi/voronoi_range.hpp"
 #include "sites.hpp"
+#include "voronoi/voronoi_range.hpp"
 #include "voronoi_check/voronoi_check.hpp"
 #include "voronoi_check/voronoi_peers.hpp"
 
