@@ -67,6 +67,14 @@ struct FaceSize {
   double area = 0, diameter = 0;
 };
 
+// The largest distance between two corners of a polygon (corner ids into `vertices`).
+double polygon_diameter(std::span<const Point3> vertices, std::span<const std::uint32_t> corners) {
+  double d = 0;
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    for (std::size_t j = i + 1; j < corners.size(); ++j) d = std::max(d, norm(vertices[corners[i]] - vertices[corners[j]]));
+  return d;
+}
+
 // One directed face of a tool's cell, merged by neighbour (a tool may split a face).
 // Its area is needed only for a face that is not expected: computed then (area < 0:
 // not yet; a split face's parts are summed at once).
@@ -275,9 +283,7 @@ class Judge {
         for (std::size_t k = 1; k + 1 < fv.size(); ++k)
           n = n + cross(cc.vertices()[fv[k]] - o, cc.vertices()[fv[k + 1]] - o);
         size.area += 0.5 * norm(n);
-        for (std::size_t i = 0; i < fv.size(); ++i)
-          for (std::size_t j = i + 1; j < fv.size(); ++j)
-            size.diameter = std::max(size.diameter, norm(cc.vertices()[fv[i]] - cc.vertices()[fv[j]]));
+        size.diameter = std::max(size.diameter, polygon_diameter(cc.vertices(), fv));
       }
     if (size.area > 0) return size;
     // Rounded away by the clip: required when a vertex of the exact face is inside the box.
@@ -361,10 +367,8 @@ class Judge {
         if (id < 0 || static_cast<std::size_t>(id) >= sites_.size() ||
             nb_.rep(static_cast<std::uint32_t>(id)) != f.neighbor)
           continue;
-        for (auto i = c.face_offsets[g]; i < c.face_offsets[g + 1]; ++i)
-          for (auto j = i + 1; j < c.face_offsets[g + 1]; ++j)
-            size.diameter =
-                std::max(size.diameter, norm(c.vertices[c.face_vertices[i]] - c.vertices[c.face_vertices[j]]));
+        const auto b = c.face_offsets[g], e = c.face_offsets[g + 1];
+        size.diameter = std::max(size.diameter, polygon_diameter(c.vertices, c.face_vertices.subspan(b, e - b)));
       }
       return size.diameter;
     };
