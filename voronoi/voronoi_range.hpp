@@ -43,6 +43,7 @@ std::string lost_cells_problem(const VoronoiDiagram& vd);
 struct CellsRoundingFloor {
   double vertex_error = 0, volume = 0;
 };
-CellsRoundingFloor cells_rounding_floor(const VoronoiDiagram& vd);
+// with_volume false: the vertex bound only (the volume is a pass over every cell).
+CellsRoundingFloor cells_rounding_floor(const VoronoiDiagram& vd, bool with_volume = true);
 
 }  // namespace dtlab

@@ -71,7 +71,8 @@ struct FaceSize {
 double polygon_diameter(std::span<const Point3> vertices, std::span<const std::uint32_t> corners) {
   double d = 0;
   for (std::size_t i = 0; i < corners.size(); ++i)
-    for (std::size_t j = i + 1; j < corners.size(); ++j) d = std::max(d, norm(vertices[corners[i]] - vertices[corners[j]]));
+    for (std::size_t j = i + 1; j < corners.size(); ++j)
+      d = std::max(d, norm(vertices[corners[i]] - vertices[corners[j]]));
   return d;
 }
 
