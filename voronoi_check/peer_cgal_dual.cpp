@@ -1,10 +1,12 @@
 // CGAL's dual as a Voronoi peer: Delaunay_triangulation_3 over EPICK (exact
 // predicates, inexact constructions), each finite vertex's cell from `dual(cell)`
 // (the circumcentres) of the cells around each incident edge, in CGAL's circulation
-// order; faces turned outward and the cell clipped to the box by the adapter
+// order; faces turned outward by CGAL's exact orientation predicate (not by the
+// rounded centres) and the cell clipped to the box by the adapter
 // (voronoi/convex_cell.hpp). A hull vertex's cell is unbounded: the adapter clips the
 // box with the bisectors of CGAL's neighbours of it instead (its topology is
-// CGAL's, its vertices ours). One vertex per set of duplicated sites.
+// CGAL's, its vertices ours); so it does for a bounded cell whose wall clip broke a
+// cell the shape rule accepts (clip_to_box). One vertex per set of duplicated sites.
 //
 // Cospherical sites (lattices) make several Delaunay cells share one circumcentre,
 // which CGAL's dual gives once per cell, rounded differently: the adapter merges the
@@ -14,6 +16,7 @@
 // cells are so judged on the topology CGAL's exact predicates give, not on its
 // rounding of coincident centres.
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 
@@ -22,7 +25,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include "voronoi/cell_check.hpp"
 #include "voronoi/convex_cell.hpp"
+#include "voronoi/rounding_bound.hpp"
 #include "voronoi/voronoi.hpp"
 #include "voronoi_check/voronoi_peer_programs.hpp"
 
@@ -84,6 +89,18 @@ void merge_coincident_centres(const DT& dt, DT::Vertex_handle h, Scratch& s) {
   }
 }
 
+// Whether CGAL's circulation c around edge (h, w) turns positively about h -> w.
+bool turns_positively(DT::Vertex_handle h, DT::Vertex_handle w, DT::Cell_circulator c) {
+  const DT::Cell_handle c0 = c, c1 = ++c;
+  DT::Vertex_handle x, y;
+  for (int k = 0; k < 4; ++k) {
+    const DT::Vertex_handle v = c0->vertex(k);
+    if (v == h || v == w) continue;
+    (c1->has_vertex(v) ? y : x) = v;
+  }
+  return CGAL::orientation(h->point(), w->point(), x->point(), y->point()) == CGAL::POSITIVE;
+}
+
 // The bounded dual cell of interior vertex h, faces outward, tagged by neighbour.
 void dual_cell(const DT& dt, DT::Vertex_handle h, Scratch& s) {
   merge_coincident_centres(dt, h, s);
@@ -92,7 +109,6 @@ void dual_cell(const DT& dt, DT::Vertex_handle h, Scratch& s) {
   s.tags.clear();
   std::vector<DT::Edge> edges;
   dt.finite_incident_edges(h, std::back_inserter(edges));
-  const auto& p = h->point();
   for (const auto& e : edges) {
     const auto a = e.first->vertex(e.second), b = e.first->vertex(e.third);
     const auto w = a == h ? b : a;
@@ -109,28 +125,58 @@ void dual_cell(const DT& dt, DT::Vertex_handle h, Scratch& s) {
       s.corners.resize(first);
       continue;
     }
-    // Outward: the face's normal points from h towards w.
-    Point3 n{0, 0, 0};
-    const Point3 o = s.v[s.corners[first]];
-    for (std::size_t k = first + 1; k + 1 < s.corners.size(); ++k)
-      n = n + cross(s.v[s.corners[k]] - o, s.v[s.corners[k + 1]] - o);
-    const Point3 d{w->point().x() - p.x(), w->point().y() - p.y(), w->point().z() - p.z()};
-    if (dot(n, d) < 0) std::reverse(s.corners.begin() + first, s.corners.end());
+    // Outward: the loop turns positively about the edge h -> w. The Voronoi vertices
+    // turn as their tets do around the edge, so the sign is combinatorial and exact:
+    // stepping from tet (h, w, x, y) to its neighbour across (h, w, y) turns from x
+    // towards y, positively when orientation(h, w, x, y) > 0. (The rounded centres'
+    // own normal is no guide where the cell spans a few ulps, as on far_translate.)
+    if (!turns_positively(h, w, dt.incident_cells(e)))
+      std::reverse(s.corners.begin() + static_cast<std::ptrdiff_t>(first), s.corners.end());
     s.offsets.push_back(static_cast<std::uint32_t>(s.corners.size()));
     s.tags.push_back(static_cast<std::int32_t>(w->info()));
   }
 }
 
-// Clips a cell (relative to site s) by the box walls it crosses.
-void clip_to_box(vor::ConvexCell& cell, const Point3& s, const vor::Box& box) {
+// The clipping band of our own cells (VoronoiOptions::tolerance), relative to the
+// box diagonal.
+constexpr double kBand = 1e-12;
+
+VoronoiCell view_of(std::span<const Point3> v, std::span<const std::uint32_t> offsets,
+                    std::span<const std::uint32_t> corners, std::span<const std::int32_t> tags) {
+  VoronoiCell c;
+  c.vertices = v;
+  c.face_offsets = offsets;
+  c.face_vertices = corners;
+  c.face_neighbor = tags;
+  return c;
+}
+
+// The dual cell (relative to site s) clipped by the box walls it crosses, in our
+// cells' band; false when that clip broke a dual that `dtlab voronoi --check`'s shape
+// rule accepts (closed, convex within the ulp floor: voronoi/cell_check.hpp's
+// check_cell): where a cell spans a few ulps (far_translate) its rounded centres are
+// convex only up to rounding, the wall's cut then chains faces that do not close, and
+// the caller clips the cell from CGAL's neighbours instead, as our own cells do (with
+// their exact fallback). A dual the rule refuses (CGAL's centres far off, not finite)
+// is kept as the clip left it: that is the answer to judge, not the adapter's clip.
+bool clip_to_box(vor::ConvexCell& cell, const Point3& s, const vor::Box& box, const Scratch& dual) {
   const double lo[3] = {box.lo.x - s.x, box.lo.y - s.y, box.lo.z - s.z};
   const double hi[3] = {box.hi.x - s.x, box.hi.y - s.y, box.hi.z - s.z};
+  const double band = kBand * box.diagonal();
+  bool cut = false;
   for (int axis = 0; axis < 3 && !cell.empty(); ++axis) {
     Point3 n{0, 0, 0};
     (axis == 0 ? n.x : axis == 1 ? n.y : n.z) = 1;
-    cell.clip(n, hi[axis], -2 * axis - 2, 0);
-    if (!cell.empty()) cell.clip(-1 * n, -lo[axis], -2 * axis - 1, 0);
+    cut |= cell.clip(n, hi[axis], -2 * axis - 2, band);
+    if (!cell.empty()) cut |= cell.clip(-1 * n, -lo[axis], -2 * axis - 1, band);
   }
+  if (!cut || cell.empty() ||
+      check_cell_closed(view_of(cell.vertices(), cell.face_offsets(), cell.face_vertices(), cell.face_tags())).empty())
+    return true;
+  for (const Point3& v : dual.v)
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return true;
+  const double floor = std::sqrt(3.0) * kRoundingUlps * box_ulp(box);
+  return !check_cell(view_of(dual.v, dual.offsets, dual.corners, dual.tags), 1e-9 * box.diagonal(), floor).empty();
 }
 
 }  // namespace
@@ -153,17 +199,19 @@ PeerCells peer_cgal_dual(const std::vector<Point3>& sites, const vor::Box& box) 
     dt.incident_cells(h, std::back_inserter(cells));
     bool hull = false;
     for (auto c : cells) hull |= dt.is_infinite(c);
-    if (hull) {
+    bool clipped_dual = false;
+    if (!hull) {
+      dual_cell(dt, h, s);
+      cell.assign(s.v, s.offsets, s.corners, s.tags, site);
+      clipped_dual = clip_to_box(cell, site, box, s);
+      if (clipped_dual) cell.translate(site);
+    }
+    if (!clipped_dual) {
       std::vector<DT::Vertex_handle> adj;
       dt.finite_adjacent_vertices(h, std::back_inserter(adj));
       nb.clear();
       for (auto w : adj) nb.push_back(w->info());
-      compute_cell(cell, sites, id, nb, box, 1e-12);  // the clipping band of our own cells
-    } else {
-      dual_cell(dt, h, s);
-      cell.assign(s.v, s.offsets, s.corners, s.tags, site);
-      clip_to_box(cell, site, box);
-      cell.translate(site);
+      compute_cell(cell, sites, id, nb, box, kBand);
     }
     if (cell.empty()) continue;
     out.cells.add_cell(id, cell.vertices(), cell.face_offsets(), cell.face_vertices(), cell.face_tags());
