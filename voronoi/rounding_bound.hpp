@@ -18,6 +18,9 @@ inline constexpr double kRoundingUlps = 4;
 // One ulp of the box's largest coordinate magnitude: the spacing of doubles there, so
 // no vertex inside the box is rounded by more than half of it per coordinate.
 double box_ulp(const vor::Box& box);
+// The floor as a Euclidean distance: sqrt(3) kRoundingUlps box_ulp(box), how far a
+// correctly computed vertex may lie from the exact one.
+inline double rounding_floor_distance(const vor::Box& box) { return 1.7320508075688772 * kRoundingUlps * box_ulp(box); }
 
 // A bound on |V(c') - V(c)| for the cell c' = c with every vertex moved by at most d
 // (Euclidean), the volume taken as cell_volume takes it (each face fanned from its first

@@ -114,15 +114,6 @@ double largest_face_missing(const ConvexCell& a, const ConvexCell& b) {
   return largest;
 }
 
-VoronoiCell view_of(const ConvexCell& c) {
-  VoronoiCell view;
-  view.vertices = c.vertices();
-  view.face_offsets = c.face_offsets();
-  view.face_vertices = c.face_vertices();
-  view.face_neighbor = c.face_tags();
-  return view;
-}
-
 // `c` rounded to doubles as the checkers judge it, each part of the cell check run
 // once: `clean` when it passes `dtlab voronoi --check`'s cell check at `tol` (no edge
 // shorter, no face smaller than tol^2, planar, convex); `representable` when it is
@@ -134,7 +125,7 @@ struct Rounded {
 };
 Rounded judge_rounded(const ConvexCell& c, double tol) {
   if (c.empty()) return {true, true};
-  const VoronoiCell view = view_of(c);
+  const VoronoiCell view = cell_view(c);
   if (!check_cell_closed(view).empty()) return {false, false};
   bool tiny_face = false;
   const bool convex = check_cell_convex(view, tol, true, &tiny_face).empty();
@@ -208,6 +199,16 @@ bool compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t
   throw std::runtime_error("voronoi: the cell of site " + std::to_string(i) +
                            " has faces that double precision cannot represent (a face of " +
                            std::to_string(off / (diag * diag)) + " of the box diagonal squared is lost in rounding)");
+}
+
+VoronoiCell cell_view(std::span<const Point3> vertices, std::span<const std::uint32_t> face_offsets,
+                      std::span<const std::uint32_t> face_vertices, std::span<const std::int32_t> face_neighbor) {
+  VoronoiCell c;
+  c.vertices = vertices;
+  c.face_offsets = face_offsets;
+  c.face_vertices = face_vertices;
+  c.face_neighbor = face_neighbor;
+  return c;
 }
 
 namespace {

@@ -53,6 +53,14 @@ struct VoronoiCell {
   std::vector<std::uint32_t> neighbors() const;  // sorted site ids (walls left out)
 };
 
+// A VoronoiCell over arrays owned elsewhere (no volume, centroid or duplicate set), for
+// the cell checks and cell_volume.
+VoronoiCell cell_view(std::span<const Point3> vertices, std::span<const std::uint32_t> face_offsets,
+                      std::span<const std::uint32_t> face_vertices, std::span<const std::int32_t> face_neighbor);
+inline VoronoiCell cell_view(const vor::ConvexCell& c) {
+  return cell_view(c.vertices(), c.face_offsets(), c.face_vertices(), c.face_tags());
+}
+
 struct VoronoiDiagram {
   vor::Box box;
   std::vector<Point3> sites;

@@ -71,7 +71,7 @@ std::string lost_cells_problem(const VoronoiDiagram& vd) {
 
 CellsRoundingFloor cells_rounding_floor(const VoronoiDiagram& vd, bool with_volume) {
   CellsRoundingFloor f;
-  f.vertex_error = std::sqrt(3.0) * kRoundingUlps * box_ulp(vd.box);
+  f.vertex_error = rounding_floor_distance(vd.box);
   if (!with_volume) return f;
   for (const auto& c : vd.cells)
     if (c.duplicate_of < 0) f.volume += volume_rounding_bound(c, f.vertex_error).volume;

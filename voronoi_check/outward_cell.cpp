@@ -7,12 +7,7 @@ namespace dtlab {
 void add_outward_cell(ToolCells& cells, std::int64_t site, std::span<const Point3> vertices,
                       std::span<const std::uint32_t> offsets, std::vector<std::uint32_t>& corners,
                       std::span<const std::int32_t> neighbors) {
-  VoronoiCell view;
-  view.vertices = vertices;
-  view.face_offsets = offsets;
-  view.face_vertices = corners;
-  view.face_neighbor = neighbors;
-  if (cell_volume(view) < 0)
+  if (cell_volume(cell_view(vertices, offsets, corners, neighbors)) < 0)
     for (std::size_t f = 0; f + 1 < offsets.size(); ++f)
       std::reverse(corners.begin() + offsets[f], corners.begin() + offsets[f + 1]);
   cells.add_cell(site, vertices, offsets, corners, neighbors);

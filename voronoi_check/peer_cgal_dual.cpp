@@ -137,19 +137,8 @@ void dual_cell(const DT& dt, DT::Vertex_handle h, Scratch& s) {
   }
 }
 
-// The clipping band of our own cells (VoronoiOptions::tolerance), relative to the
-// box diagonal.
-constexpr double kBand = 1e-12;
-
-VoronoiCell view_of(std::span<const Point3> v, std::span<const std::uint32_t> offsets,
-                    std::span<const std::uint32_t> corners, std::span<const std::int32_t> tags) {
-  VoronoiCell c;
-  c.vertices = v;
-  c.face_offsets = offsets;
-  c.face_vertices = corners;
-  c.face_neighbor = tags;
-  return c;
-}
+// The clipping band of our own cells, relative to the box diagonal.
+const double kBand = VoronoiOptions{}.tolerance;
 
 // The dual cell (relative to site s) clipped by the box walls it crosses, in our
 // cells' band; false when that clip broke a dual that `dtlab voronoi --check`'s shape
@@ -171,12 +160,12 @@ bool clip_to_box(vor::ConvexCell& cell, const Point3& s, const vor::Box& box, co
     if (!cell.empty()) cut |= cell.clip(-1 * n, -lo[axis], -2 * axis - 1, band);
   }
   if (!cut || cell.empty() ||
-      check_cell_closed(view_of(cell.vertices(), cell.face_offsets(), cell.face_vertices(), cell.face_tags())).empty())
+      check_cell_closed(cell_view(cell)).empty())
     return true;
   for (const Point3& v : dual.v)
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return true;
-  const double floor = std::sqrt(3.0) * kRoundingUlps * box_ulp(box);
-  return !check_cell(view_of(dual.v, dual.offsets, dual.corners, dual.tags), 1e-9 * box.diagonal(), floor).empty();
+  const VoronoiCell before = cell_view(dual.v, dual.offsets, dual.corners, dual.tags);
+  return !check_cell(before, 1e-9 * box.diagonal(), rounding_floor_distance(box)).empty();
 }
 
 }  // namespace
