@@ -159,9 +159,7 @@ bool clip_to_box(vor::ConvexCell& cell, const Point3& s, const vor::Box& box, co
     cut |= cell.clip(n, hi[axis], -2 * axis - 2, band);
     if (!cell.empty()) cut |= cell.clip(-1 * n, -lo[axis], -2 * axis - 1, band);
   }
-  if (!cut || cell.empty() ||
-      check_cell_closed(cell_view(cell)).empty())
-    return true;
+  if (!cut || cell.empty() || check_cell_closed(cell_view(cell)).empty()) return true;
   for (const Point3& v : dual.v)
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return true;
   const VoronoiCell before = cell_view(dual.v, dual.offsets, dual.corners, dual.tags);
