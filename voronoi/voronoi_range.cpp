@@ -53,9 +53,13 @@ std::optional<VoronoiRefusal> voronoi_refusal(std::span<const Point3> sites, con
 
 std::string lost_cells_problem(const VoronoiDiagram& vd) {
   double sum = 0;
-  for (const auto& c : vd.cells) {
+  for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+    const auto& c = vd.cells[i];
     if (c.duplicate_of >= 0) continue;
-    if (!std::isfinite(c.volume) || c.volume <= 0)
+    // A site outside the box may have an empty cell (its cell does not meet the box);
+    // one inside the closed box always has volume.
+    const bool inside = i >= vd.sites.size() || vd.box.contains(vd.sites[i]);
+    if (!std::isfinite(c.volume) || c.volume < 0 || (c.volume == 0 && inside))
       return "a Voronoi cell with no volume (zero or NaN): the sites are too close for cells in double precision";
     sum += c.volume;
   }

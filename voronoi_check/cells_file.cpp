@@ -147,6 +147,9 @@ json parse_json(const std::string& path, const std::string& text) {
     const long line = 1 + static_cast<long>(std::count(text.begin(), text.begin() + static_cast<long>(byte), '\n'));
     const std::string what = e.what();
     fail(path + ":" + std::to_string(line), "not JSON: " + what.substr(what.find(':') + 2));
+  } catch (const json::exception& e) {  // a number out of range of a double (1e400)
+    const std::string what = e.what();
+    fail(path, "not JSON: " + what.substr(what.find(']') + 2));
   }
 }
 

@@ -133,6 +133,7 @@ if kind == "site": open(out + ".json", "w").write(json.dumps({"cells": [dict(cub
 if kind == "count": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, neighbors=[-1])]}))
 if kind == "field": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, nbrs=[])]}))
 if kind == "volnan": open(out + ".vol", "w").write("0 3 (nan,0,0) (1,0,0) (0,1,0) 1 -1 (0,1,2)\n")
+if kind == "bigexp": open(out + ".json", "w").write(json.dumps({"cells": [cube]}).replace("[1, 0, 0]", "[1e400, 0, 0]", 1))
 if kind == "vol": open(out + ".vol", "w").write("0 3 (0,0,0) (1,0,0) 1 -1 (0,1,2)\n")
 if kind == "chatty":
     print("hello on stdout"); print('{"not": "dtlab"}')
@@ -150,6 +151,7 @@ verdict "a face vertex out of range" "$py $tmp/emit.py range {out} {in}" 3 \
   "^p: refused: unreadable answer: out.json: cells\[0\].faces\[0\]\[2\]: 99 out of range \[0, 7\]"
 verdict "one neighbour for six faces" "$py $tmp/emit.py count {out} {in}" 3 "cells\[0\].neighbors: 1 neighbours for 6 faces"
 verdict "an unknown field" "$py $tmp/emit.py field {out} {in}" 3 "cells\[0\]: unknown field 'nbrs'"
+verdict "a number beyond a double (docs/probe3.md)" "$py $tmp/emit.py bigexp {out} {in}" 3 "^p: refused: unreadable answer: out.json: not JSON: number overflow parsing '1e400'"
 verdict "a .vol vertex NaN" "$py $tmp/emit.py volnan {out} {in}" 3 "unreadable answer: out.vol:1: a vertex is not finite"
 verdict "a .vol line short of a vertex" "$py $tmp/emit.py vol {out} {in}" 3 "unreadable answer: out.vol:1: a vertex \(x,y,z\): expected \(a,b,...\), got '1'"
 verdict "a cell of no site" "$py $tmp/emit.py site {out} {in}" 0 "^p: wrong-topology \(.*missing-cell 60.*extra-cell 1"
@@ -170,6 +172,13 @@ chmod +x "$tmp/chatty.sh"
 expect 0 "a peer that prints on stdout" -- "$dtlab" voronoi "$tmp/pts.xyz" --against chatty --voronoi-peer "chatty=$tmp/chatty.sh {in} {box} {out}" --json --quiet
 $py -c 'import json,sys; j = json.load(open(sys.argv[1])); assert j["peers"]["chatty"]["verdict"] == "exact-topology", j["peers"]' "$tmp/out" \
   && pass=$((pass + 1)) || { echo "FAIL: --json not one object, or chatty not exact"; fails=$((fails + 1)); }
+
+# A box smaller than the sites' hull (docs/probe3.md): sites outside it get empty cells,
+# neither refused as lost cells nor --check defects, and the dtlab:exact peer answers too.
+expect 0 "--box inside the hull, --check" -- "$dtlab" voronoi "$tmp/pts.xyz" --box 0.3 0.3 0.3 0.6 0.6 0.6 --check --against dtlab:exact --quiet
+has "^check: 0 defect" "no defect for the empty cells of sites outside the box"
+has "^dtlab:exact: exact-topology" "the dtlab:exact peer answers"
+expect 0 "--box beside every site" -- "$dtlab" voronoi "$tmp/pts.xyz" --box 5 5 5 6 6 6 --quiet
 
 # Bad definitions: exit 2, one line naming the problem.
 bad() {  # bad DESCRIPTION PATTERN dtlab-arguments...
