@@ -36,7 +36,7 @@ struct VoronoiArgs {
   double margin = 0.1;
   unsigned threads = 0;
   const CLI::Option* threads_option = nullptr;
-  bool no_obj = false, vtu = false, json = false, check = false;
+  bool no_obj = false, vtu = false, tets = false, json = false, check = false;
   std::string vtu_format = "binary", png;
   double png_shrink = 0.8;
   std::string against = "none";
@@ -139,6 +139,7 @@ int run_voronoi(const VoronoiArgs& a) {
   if (!a.out.empty()) {
     if (obj) write_cells_obj(a.out + ".obj", vd);
     if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
+    if (a.tets) write_cells_tets_vtu(a.out + ".tets.vtu", vd, parse_vtu_format(a.vtu_format));
     write_text_file(a.out + ".json", m.dump(1) + "\n");
   }
   if (!a.png.empty()) write_cells_png(a.png, vd, a.png_shrink);
@@ -162,7 +163,8 @@ int run_voronoi(const VoronoiArgs& a) {
                     volume_tol);
     }
     if (!a.out.empty())
-      std::printf("wrote %s.json%s%s\n", a.out.c_str(), obj ? ", .obj" : "", a.vtu ? ", .vtu" : "");
+      std::printf("wrote %s.json%s%s%s\n", a.out.c_str(), obj ? ", .obj" : "", a.vtu ? ", .vtu" : "",
+                  a.tets ? ", .tets.vtu" : "");
     if (!a.png.empty()) std::printf("wrote %s\n", a.png.c_str());
   }
   return defects ? kDefect : peers_rc;
@@ -173,7 +175,7 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<VoronoiArgs>();
   CLI::App* sub = app.add_subcommand("voronoi", "Voronoi cells of a point file, clipped to a box");
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
-  sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)")
+  CLI::Option* out = sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)")
       ->type_name("PREFIX");
   sub->add_option("--box", args->box,
                   "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
@@ -184,14 +186,18 @@ void add_voronoi_command(CLI::App& app, int& rc) {
                                          "threads for the cells, and for the Delaunay build when given (0: all)")
                              ->transform(count_in(0, 1024))
                              ->capture_default_str();
-  sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView");
+  sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu (polyhedron cells) for ParaView")->needs(out);
+  sub->add_flag("--tets", args->tets,
+                "also write PREFIX.tets.vtu: every cell as tetrahedra (cell data site, cell_volume), which VTK "
+                "integrates exactly")
+      ->needs(out);
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
-      ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str();
+      ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str()->needs(out);
   sub->add_option("--png", args->png, "draw the cells (each shrunk about its centroid, own colour) to this PNG file")
       ->type_name("FILE");
   sub->add_option("--png-shrink", args->png_shrink, "--png: scale of each cell about its centroid")
       ->check(number_in(0.05, 1))->capture_default_str();
-  sub->add_flag("--no-obj", args->no_obj, "do not write PREFIX.obj");
+  sub->add_flag("--no-obj", args->no_obj, "do not write PREFIX.obj")->needs(out);
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
   sub->add_option(
          "--against", args->against,

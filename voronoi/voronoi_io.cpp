@@ -69,6 +69,36 @@ void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd, VtuForma
   write_vtu_grid(path, g, format);
 }
 
+void write_cells_tets_vtu(const std::string& path, const VoronoiDiagram& vd, VtuFormat format) {
+  VtuGrid g;
+  std::vector<std::int64_t> site;
+  std::vector<double> cell_volume;
+  for (std::size_t i = 0; i < vd.cells.size(); ++i) {
+    const VoronoiCell& c = vd.cells[i];
+    if (c.vertices.empty()) continue;
+    const auto base = static_cast<std::int64_t>(g.points.size());
+    g.points.insert(g.points.end(), c.vertices.begin(), c.vertices.end());
+    for (std::size_t f = 0; f < c.face_count(); ++f) {
+      const auto first = c.face_vertices.begin() + c.face_offsets[f];
+      const auto last = c.face_vertices.begin() + c.face_offsets[f + 1];
+      if (std::find(first, last, 0u) != last) continue;  // a face through the apex: no volume
+      // The face is counter-clockwise seen from outside, so clockwise seen from the apex
+      // (vertex 0, inside its plane's half-space); VTK wants (0, 1, 2) counter-clockwise
+      // seen from 3: each fan triangle (a, b, c) becomes (a, c, b, apex).
+      for (auto k = first + 1; k + 1 < last; ++k) {
+        for (const std::uint32_t v : {*first, *(k + 1), *k, 0u}) g.connectivity.push_back(base + v);
+        g.offsets.push_back(static_cast<std::int64_t>(g.connectivity.size()));
+        g.types.push_back(kVtkTetra);
+        site.push_back(static_cast<std::int64_t>(i));
+        cell_volume.push_back(c.volume);
+      }
+    }
+  }
+  g.cell_data.push_back({"site", std::move(site)});
+  g.cell_data.push_back({"cell_volume", std::move(cell_volume)});
+  write_vtu_grid(path, g, format);
+}
+
 nlohmann::json cells_manifest(const VoronoiDiagram& vd) {
   nlohmann::json cells = nlohmann::json::array();
   double total = 0;

@@ -22,12 +22,14 @@ namespace {
 
 const char* const kExtensions[] = {".node", ".xyz", ".ele", ".off", ".obj", ".ply", ".stl"};
 
+// The scratch folder, removed at exit (each input file is unlinked after its read).
+char g_scratch[] = "/tmp/dtlab_fuzz_readers_XXXXXX";
+
 const std::string& scratch_dir() {
   static const std::string dir = [] {
-    char tmpl[] = "/tmp/dtlab_fuzz_readers_XXXXXX";
-    const char* d = mkdtemp(tmpl);
-    if (!d) std::abort();
-    return std::string(d);
+    if (!mkdtemp(g_scratch)) std::abort();
+    std::atexit([] { rmdir(g_scratch); });
+    return std::string(g_scratch);
   }();
   return dir;
 }
@@ -54,5 +56,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const InputError&) {
     // the promised answer to a bad file
   }
+  unlink(path.c_str());
   return 0;
 }
