@@ -31,6 +31,7 @@ struct FractureArgs {
   std::vector<std::size_t> recurse;
   bool blue_noise = false, json = false, repair = false, split = false, quiet = false, vtu = false;
   std::string vtu_format = "binary";
+  const CLI::Option* vtu_format_option = nullptr;
   double boolean_seconds = 30;
   std::string sites;                       // FILE | mesh-vertices (default: the sampler)
   std::vector<double> impact, cell_scale;  // X,Y,Z / SX,SY,SZ
@@ -174,6 +175,8 @@ void print_fracture_summary(const FractureArgs& a, const FractureResult& r, doub
 int run_fracture(const FractureArgs& a) {
   if (a.out.empty() && !a.json && a.png.empty())  // never compute without writing
     throw UsageError("nothing to write: give --out DIR (or --json, --png FILE)");
+  if (a.vtu_format_option->count() > 0 && !a.vtu && !a.surfaces && !a.tets)
+    throw UsageError("--vtu-format needs --vtu, --surfaces or --tets");
   const auto method = parse_sample_method(a.sampler);
   if (!method || *method == SampleMethod::surface)
     throw UsageError("--sampler must be rays, sdf or winding (a volume sampler)");
@@ -254,9 +257,10 @@ void add_fracture_command(CLI::App& app, int& rc) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write OUT/pieces.vtu (a polyhedron cell per piece) for ParaView");
-  sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
-      ->check(CLI::IsMember({"binary", "ascii"}))
-      ->capture_default_str();
+  args->vtu_format_option = sub->add_option("--vtu-format", args->vtu_format,
+                                            "encoding of the .vtu files (--vtu, --surfaces, --tets): binary (base64) | ascii")
+                                ->check(CLI::IsMember({"binary", "ascii"}))
+                                ->capture_default_str();
   sub->add_option("--sites", args->sites,
                   "sites from a file (.xyz .node, or a mesh file's vertices) or 'mesh-vertices' (a seeded subset of "
                   "--pieces of them); default: --sampler")

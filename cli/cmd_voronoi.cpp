@@ -36,6 +36,7 @@ struct VoronoiArgs {
   double margin = 0.1;
   unsigned threads = 0;
   const CLI::Option* threads_option = nullptr;
+  const CLI::Option* vtu_format_option = nullptr;
   bool no_obj = false, vtu = false, tets = false, json = false, check = false;
   std::string vtu_format = "binary", png;
   double png_shrink = 0.8;
@@ -86,6 +87,7 @@ std::size_t check_cells(const VoronoiDiagram& vd, nlohmann::json& m) {
 
 int run_voronoi(const VoronoiArgs& a) {
   const bool obj = !a.no_obj;
+  if (a.vtu_format_option->count() > 0 && !a.vtu && !a.tets) throw UsageError("--vtu-format needs --vtu or --tets");
   a.defined.register_all();  // before the cells: a bad definition ends the run at once
   PointFile in = read_input_points(a.input);
   if (in.points.empty()) throw InputError(a.input, 0, "no points");
@@ -191,13 +193,13 @@ void add_voronoi_command(CLI::App& app, int& rc) {
                 "also write PREFIX.tets.vtu: every cell as tetrahedra (cell data site, cell_volume), which VTK "
                 "integrates exactly")
       ->needs(out);
-  sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
+  args->vtu_format_option = sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu (--vtu, --tets): binary (base64) | ascii")
       ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str()->needs(out);
-  sub->add_option("--png", args->png, "draw the cells (each shrunk about its centroid, own colour) to this PNG file")
+  CLI::Option* png = sub->add_option("--png", args->png, "draw the cells (each shrunk about its centroid, own colour) to this PNG file")
       ->type_name("FILE");
   sub->add_option("--png-shrink", args->png_shrink, "--png: scale of each cell about its centroid")
-      ->check(number_in(0.05, 1))->capture_default_str();
-  sub->add_flag("--no-obj", args->no_obj, "do not write PREFIX.obj")->needs(out);
+      ->check(number_in(0.05, 1))->capture_default_str()->needs(png);
+  sub->add_flag("--no-obj", args->no_obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
   sub->add_option(
          "--against", args->against,

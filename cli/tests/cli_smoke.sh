@@ -69,6 +69,17 @@ expect 0 "fracture --vtu" -- "$dtlab" fracture "$tmp/cube.off" --pieces 6 --out 
 expect 0 "fracture --vtu-format ascii" -- "$dtlab" fracture "$tmp/cube.off" --pieces 6 --out "$tmp/fa" --vtu --vtu-format ascii
 vtu_same "$tmp/fa/pieces.vtu" "$tmp/fb/pieces.vtu"
 expect 2 "a bad --vtu-format" -- "$dtlab" voronoi "$tmp/ok.xyz" --out "$tmp/vx" --vtu --vtu-format raw
+expect 0 "voronoi --tets --vtu-format ascii" -- "$dtlab" voronoi "$tmp/ok.xyz" --out "$tmp/vt" --tets --vtu-format ascii
+[ -s "$tmp/vt.tets.vtu" ] && pass=$((pass + 1)) || { echo "FAIL: no .tets.vtu"; fails=$((fails + 1)); }
+# An output option that would write nothing is refused, not ignored (exit 2).
+expect 2 "tetra --vtu without --out" -- "$dtlab" tetra "$tmp/ok.xyz" --vtu
+expect 2 "tetra --format npy without --out" -- "$dtlab" tetra "$tmp/ok.xyz" --format npy
+expect 2 "tetra --vtu-format without --vtu" -- "$dtlab" tetra "$tmp/ok.xyz" --out "$tmp/tx" --vtu-format ascii
+expect 2 "voronoi --vtu without --out" -- "$dtlab" voronoi "$tmp/ok.xyz" --vtu
+expect 2 "voronoi --tets without --out" -- "$dtlab" voronoi "$tmp/ok.xyz" --tets
+expect 2 "voronoi --vtu-format without --vtu or --tets" -- "$dtlab" voronoi "$tmp/ok.xyz" --out "$tmp/vx" --vtu-format ascii
+expect 2 "voronoi --png-shrink without --png" -- "$dtlab" voronoi "$tmp/ok.xyz" --png-shrink 0.5
+expect 2 "fracture --vtu-format without a .vtu" -- "$dtlab" fracture "$tmp/cube.off" --pieces 6 --out "$tmp/fx" --vtu-format ascii
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]
