@@ -44,10 +44,14 @@ def _seed(seed: int) -> int:
     return int(seed)
 
 
-def _count(value: int, name: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or int(value) < 0:
-        raise ValueError(f"{name}: expected a non-negative integer, got {value!r}")
+def _count(value: int, name: str, most: int = 2**63 - 1) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 0 <= int(value) <= most:
+        raise ValueError(f"{name}: expected an integer in [0, {most}], got {value!r}")
     return int(value)
+
+
+def _threads(value: int) -> int:
+    return _count(value, "threads", 1024)  # the CLI's bound of --threads
 
 
 def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "sos",
@@ -75,7 +79,7 @@ def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "so
     BRIO round when threads > 1); what
     it raises (KeyboardInterrupt too) stops the build and propagates.
     """
-    nthreads = _count(threads, "threads")
+    nthreads = _threads(threads)
     if nthreads > 1024:
         raise ValueError(f"threads: expected at most 1024, got {threads!r}")
     with StageBar(progress, "tetrahedralize") as bar:
@@ -119,7 +123,7 @@ def check(points: Any, tets: Any, orientation: str = "any", *, duplicates: Any =
     for every count. progress: None, True (a tqdm bar) or progress(done, 8, "check"),
     called as each of the checker's 8 numbered steps ends.
     """
-    nthreads = _count(threads, "threads")
+    nthreads = _threads(threads)
     if nthreads > 1024:
         raise ValueError(f"threads: expected at most 1024, got {threads!r}")
     with StageBar(progress, "check") as bar:
@@ -210,7 +214,7 @@ def voronoi(points: Any, box: Any = None, *, margin: float = 0.1, predicates: st
     A repeated point gets an empty cell (duplicate_of names the first). The cells' arrays
     are read-only views of the diagram's storage.
     """
-    raw = _core.voronoi(points, _box_arg(box), float(margin), predicates, _count(threads, "threads"))
+    raw = _core.voronoi(points, _box_arg(box), float(margin), predicates, _threads(threads))
     cells = []
     for i, c in enumerate(raw["cells"]):
         off = c["face_offsets"]
@@ -228,19 +232,43 @@ def _tool_cells(points: Any, cells: Any, box: list[float]) -> list[tuple[Any, ..
     if hasattr(cells, "ridge_points") and hasattr(cells, "ridge_vertices"):
         from ._voronoi_regions import cells_from_ridges, scipy_topology
         pts = np.asarray(points, dtype=np.float64)
+        if np.shape(cells.points) != pts.shape or not np.array_equal(np.asarray(cells.points), pts):
+            raise ValueError("the scipy Voronoi was built from other points than `points`")
         ridges, regions = scipy_topology(cells)
         clipped = cells_from_ridges(pts, cells.vertices, ridges, regions, box[:3], box[3:])
         cells = [(i, verts, faces, tags) for i, (verts, faces, tags) in sorted(clipped.items())]
     elif isinstance(cells, VoronoiDiagram):
         cells = [(c.site, c.vertices, c.faces, c.face_neighbors) for c in cells.cells if len(c.faces)]
     out = []
-    for site, verts, faces, neighbors in cells:
+    for k, (site, verts, faces, neighbors) in enumerate(cells):
+        where = f"cells[{k}]"
+        faces = [_ids(f, f"{where}: face {j}") for j, f in enumerate(faces)]
         sizes = [len(f) for f in faces]
         offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.uint32)
-        corners = np.concatenate([np.asarray(f, dtype=np.uint32) for f in faces]) if faces else np.zeros(0, np.uint32)
-        out.append((int(site), np.asarray(verts, dtype=np.float64).reshape(-1, 3), offsets, corners,
-                    np.asarray(neighbors, dtype=np.int32)))
+        corners = np.concatenate(faces).astype(np.uint32) if faces else np.zeros(0, np.uint32)
+        verts = np.asarray(verts, dtype=np.float64).reshape(-1, 3)
+        if corners.size and int(corners.max()) >= len(verts):
+            raise ValueError(f"{where}: a face vertex {int(corners.max())} out of range [0, {len(verts) - 1}]")
+        site_id = _ids([site], f"{where}: site")[0]
+        neighbor_ids = _ids(neighbors, f"{where}: neighbours", lo=-6)
+        if neighbor_ids.size and int(neighbor_ids.max()) > 2**31 - 1:
+            raise ValueError(f"{where}: neighbours: {int(neighbor_ids.max())} out of range")
+        out.append((int(site_id), verts, offsets, corners, neighbor_ids.astype(np.int32)))
     return out
+
+
+def _ids(values: Any, what: str, lo: int = 0) -> Any:
+    """values as an int64 array of ids >= lo: integers only (a float or a bool index is
+    refused, never truncated), as the CLI's cells-file reader does."""
+    a = np.asarray(values)
+    if a.size == 0:
+        return np.zeros(0, np.int64)
+    if a.dtype == np.bool_ or not np.issubdtype(a.dtype, np.integer):
+        raise ValueError(f"{what}: expected integer ids, got {a.dtype} values such as {a.reshape(-1)[0]!r}")
+    a = a.reshape(-1).astype(np.int64)
+    if int(a.min()) < lo:
+        raise ValueError(f"{what}: {int(a.min())} is below {lo}")
+    return a
 
 
 def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float = 1e-9,
@@ -359,7 +387,7 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
     """
     with StageBar(progress, "fracture") as bar:
         raw = _core.fracture(vertices, faces, _count(pieces, "--pieces"), _seed(seed), float(margin), sampler,
-                             bool(blue_noise), _count(threads, "threads"), [_count(r, "--recurse") for r in recurse],
+                             bool(blue_noise), _threads(threads), [_count(r, "--recurse") for r in recurse],
                              _count(recurse_pieces, "--recurse-pieces"),
                              *_site_source(sites), None if impact is None else _triple(impact, "--impact"),
                              float(impact_radius), float(site_noise), bool(island_split),

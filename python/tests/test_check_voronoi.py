@@ -57,3 +57,43 @@ def test_ulp_floor_judges_far_translate():
     assert relative["verdict"] == "volume-mismatch" and relative["counts"]["vertex-off"] > 0
     with pytest.raises(ValueError):
         dtlab.check_voronoi(pts, vd, ulps=-1)
+
+
+def test_cells_with_non_integer_ids_are_refused_not_truncated():
+    # A face index 1.7 was cast to 1 by np.asarray(..., uint32): cells with shifted
+    # float indices judged exact-topology (docs/probe3.md, "Not probed").
+    pts = np.random.default_rng(4).random((30, 3))
+    vd = dtlab.voronoi(pts)
+    cells = [(c.site, c.vertices, [list(f) for f in c.faces], c.face_neighbors) for c in vd.cells]
+    assert dtlab.check_voronoi(pts, cells, box=vd.box)["verdict"] == "exact-topology"
+    site, verts, faces, nbrs = cells[0]
+    for bad, message in [
+        ((site, verts, [[x + 0.7 for x in f] for f in faces], nbrs), "face 0: expected integer ids"),
+        ((site, verts, [[True, False, True]] + faces[1:], nbrs), "face 0: expected integer ids"),
+        ((site, verts, [[-1, 0, 1]] + faces[1:], nbrs), "face 0: -1 is below 0"),
+        ((site, verts, [[0, 1, len(verts)]] + faces[1:], nbrs), "out of range"),
+        ((0.5, verts, faces, nbrs), "site: expected integer ids"),
+        ((site, verts, faces, np.asarray(nbrs, dtype=np.float64)), "neighbours: expected integer ids"),
+        ((site, verts, faces, [-7] * len(nbrs)), "neighbours: -7 is below -6"),
+    ]:
+        with pytest.raises(ValueError, match=message):
+            dtlab.check_voronoi(pts, [bad] + cells[1:], box=vd.box)
+
+
+def test_a_scipy_voronoi_of_other_points_is_refused():
+    scipy_spatial = pytest.importorskip("scipy.spatial")
+    pts = np.random.default_rng(5).random((30, 3))
+    with pytest.raises(ValueError, match="other points"):
+        dtlab.check_voronoi(pts, scipy_spatial.Voronoi(pts[::-1].copy()))
+    with pytest.raises(ValueError, match="other points"):
+        dtlab.check_voronoi(pts[:29], scipy_spatial.Voronoi(pts))
+
+
+def test_thread_counts_are_bounded_as_in_the_cli():
+    pts = np.random.default_rng(6).random((30, 3))
+    for threads in (1025, 10**6, 2**70, -1, 1.5, True):
+        with pytest.raises(ValueError, match="threads"):
+            dtlab.voronoi(pts, threads=threads)
+        with pytest.raises(ValueError, match="threads"):
+            dtlab.tetrahedralize(pts, threads=threads)
+    assert len(dtlab.voronoi(pts, threads=1024).cells) == 30
