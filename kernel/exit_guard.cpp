@@ -1,5 +1,6 @@
 #include "kernel/exit_guard.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
@@ -9,6 +10,10 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <random>
 #include <chrono>
 #include <filesystem>
 #include <mutex>
@@ -30,6 +35,55 @@ std::atomic<int> g_socket{-1};
 pid_t g_watchdog = -1;
 std::atomic<bool> g_interrupted{false};
 int g_signal_pipe[2] = {-1, -1};
+// This process's nonce in the DTLAB_GUARD tags of its children (16 hex digits), set
+// before the watchdog's fork so that the watchdog knows it.
+char g_nonce[17] = {};
+constexpr int kPidDigits = 10;  // a tag's pid, zero-padded
+constexpr char kGuardVar[] = "DTLAB_GUARD=";
+
+// Kills (SIGKILL) every other process whose DTLAB_GUARD value holds a space-separated
+// word equal to `tag` (or, with `prefix`, starting with it). Repeated while it finds
+// some (a process may fork while the scan runs), at most 5 rounds. Processes of other
+// users, or gone, are skipped (their environ cannot be read).
+void kill_carrying(const std::string& tag, bool prefix) {
+  const pid_t self = getpid();
+  for (int round = 0; round < 5; ++round) {
+    int found = 0;
+    DIR* proc = opendir("/proc");
+    if (!proc) return;
+    while (const dirent* e = readdir(proc)) {
+      char* end = nullptr;
+      const long pid = std::strtol(e->d_name, &end, 10);
+      if (pid <= 1 || *end != '\0' || pid == self) continue;
+      std::ifstream in(std::string("/proc/") + e->d_name + "/environ", std::ios::binary);
+      const std::string env((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      std::size_t at = env.rfind(std::string(1, '\0') + kGuardVar);
+      at = at == std::string::npos ? (env.rfind(kGuardVar, 0) == 0 ? 0 : std::string::npos) : at + 1;
+      if (at == std::string::npos) continue;
+      const std::size_t begin = at + sizeof kGuardVar - 1, stop = env.find('\0', begin);
+      const std::string value = env.substr(begin, stop == std::string::npos ? std::string::npos : stop - begin);
+      for (std::size_t w = 0; w < value.size();) {
+        const std::size_t next = std::min(value.find(' ', w), value.size());
+        const std::string_view word(value.data() + w, next - w);
+        if (prefix ? word.substr(0, tag.size()) == tag : word == tag) {
+          kill(static_cast<pid_t>(pid), SIGKILL);
+          ++found;
+          break;
+        }
+        w = next + 1;
+      }
+    }
+    closedir(proc);
+    if (found == 0) return;
+  }
+}
+
+std::string child_tag(int pid) {
+  char digits[kPidDigits + 1];
+  std::snprintf(digits, sizeof digits, "%0*d", kPidDigits, pid);
+  return std::string(g_nonce) + "." + digits;
+}
+
 // Set around our own forks that exec (a child program) or run the watchdog: the fork
 // handler below leaves those children's state alone.
 thread_local bool t_own_fork = false;
@@ -89,6 +143,7 @@ void isolate_watchdog(int sock) {
     guarded.apply(buf.data(), static_cast<std::size_t>(n));
   }
   guarded.end_all();
+  if (g_nonce[0]) kill_carrying(std::string(g_nonce) + ".", true);  // those that left their groups
   _exit(0);
 }
 
@@ -123,6 +178,9 @@ void register_fork_handler() {
 void start_watchdog_locked() {
   if (g_socket.load() >= 0) return;
   register_fork_handler();
+  const std::uint64_t nonce = (std::uint64_t{std::random_device{}()} << 32) ^ std::random_device{}() ^
+                              static_cast<std::uint64_t>(getpid());
+  std::snprintf(g_nonce, sizeof g_nonce, "%016llx", static_cast<unsigned long long>(nonce));
   int sv[2];
   if (socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, sv) != 0)
     throw std::runtime_error("cannot start the exit watchdog: socketpair failed");
@@ -189,6 +247,32 @@ void guard_own_group_in_child() {
   for (int pid = getpid(); pid > 0 && n < 16; pid /= 10) digits[n++] = static_cast<char>('0' + pid % 10);
   for (int i = 0; i < n; ++i) rec[2 + i] = digits[n - 1 - i];
   send(sock, rec, static_cast<std::size_t>(2 + n), MSG_NOSIGNAL);
+}
+
+GuardedEnvironment::GuardedEnvironment() {
+  prepare_exit_guard();  // the nonce
+  std::string guard = kGuardVar;
+  for (char** e = environ; e && *e; ++e) {
+    if (std::strncmp(*e, kGuardVar, sizeof kGuardVar - 1) == 0)
+      guard = std::string(*e) + " ";  // dtlab under dtlab: the outer tags stay
+    else
+      entries_.emplace_back(*e);
+  }
+  guard += child_tag(0);
+  digits_ = guard.size() - kPidDigits;
+  guard_ = entries_.size();
+  entries_.push_back(std::move(guard));
+  for (auto& e : entries_) pointers_.push_back(e.data());
+  pointers_.push_back(nullptr);
+}
+
+void GuardedEnvironment::stamp_child_pid() {
+  char* d = pointers_[guard_] + digits_;
+  for (int pid = getpid(), k = kPidDigits - 1; k >= 0; --k, pid /= 10) d[k] = static_cast<char>('0' + pid % 10);
+}
+
+void end_tagged(int child_pid) {
+  if (g_nonce[0]) kill_carrying(child_tag(child_pid), false);
 }
 
 void end_guarded_now() {

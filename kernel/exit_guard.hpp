@@ -6,6 +6,7 @@
 // when the socket closes (the dtlab process ended, whatever way), it kills every group
 // still listed (SIGKILL) and then removes every path still listed.
 #include <string>
+#include <vector>
 
 namespace dtlab {
 
@@ -24,6 +25,28 @@ void prepare_exit_guard();
 // any other fork of a guarded process gets a fresh guard of its own in the child
 // (its own watchdog, the parent's death ending it: bench's measuring child).
 void mark_exec_fork(bool on);
+
+// Programs that leave their process group (setsid, setpgid) escape the group kills.
+// Every program dtlab runs gets DTLAB_GUARD=<tag> in its environment, which its
+// descendants inherit wherever they move: <tag> is this dtlab process's random nonce, a
+// dot and the child's pid (space-separated after the tags of the dtlab processes above,
+// when dtlab runs under dtlab). end_tagged(pid) kills (SIGKILL) every process whose
+// environment carries the tag of child `pid`; the watchdog, when dtlab ends, every
+// process that carries any tag of this dtlab process. (Jenkins' process-tree killer uses
+// the same inherited marker; a program that clears its environment still escapes.)
+class GuardedEnvironment {
+ public:
+  GuardedEnvironment();  // before the fork: this process's environment plus the tag, pid to come
+  // In the child, before exec (async-signal-safe: digits written into the prepared entry).
+  void stamp_child_pid();
+  char* const* envp() { return pointers_.data(); }
+
+ private:
+  std::vector<std::string> entries_;
+  std::vector<char*> pointers_;
+  std::size_t guard_ = 0, digits_ = 0;  // the DTLAB_GUARD entry and where its pid digits go
+};
+void end_tagged(int child_pid);
 
 // The interrupt path: ends every listed group, removes every listed path and waits
 // for the watchdog to finish; later guard and release calls block for ever (the

@@ -32,10 +32,11 @@ std::atomic<bool (*)()> g_interrupt_check{nullptr};
 // argument vector and the paths are prepared before the fork. Every descriptor of
 // the parent is close-on-exec (pipe2, socketpair with SOCK_CLOEXEC); dup2 clears the
 // flag on the copies the program gets.
-[[noreturn]] void exec_child(char* const* argv, const char* log, std::uint64_t memory, int stdin_fd, int reply_fd,
-                             int error_fd) {
+[[noreturn]] void exec_child(char* const* argv, GuardedEnvironment& env, const char* log, std::uint64_t memory,
+                             int stdin_fd, int reply_fd, int error_fd) {
   setpgid(0, 0);
   guard_own_group_in_child();
+  env.stamp_child_pid();
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
@@ -60,7 +61,7 @@ std::atomic<bool (*)()> g_interrupt_check{nullptr};
   }
   rlimit no_core{0, 0};
   setrlimit(RLIMIT_CORE, &no_core);
-  execvp(argv[0], argv);
+  execvpe(argv[0], argv, env.envp());
   const int err = errno;
   [[maybe_unused]] ssize_t w = write(error_fd, &err, sizeof err);
   _exit(127);
@@ -107,6 +108,7 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   int pipe_fd[2];
   if (pipe2(pipe_fd, O_CLOEXEC) != 0) throw std::runtime_error("run_child: pipe failed");
   prepare_exit_guard();
+  GuardedEnvironment env;  // DTLAB_GUARD: found again if it leaves its group (end_tagged)
   mark_exec_fork(true);
   const pid_t pid = fork();
   mark_exec_fork(false);
@@ -118,7 +120,7 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   }
   if (pid == 0) {
     close(pipe_fd[0]);
-    exec_child(argv.data(), limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes, stdin_fd,
+    exec_child(argv.data(), env, limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes, stdin_fd,
                reply_fd, pipe_fd[1]);
   }
   // Both sides set the group, so a kill right after fork reaches it.
@@ -183,6 +185,7 @@ WaitEnd wait_limited(pid_t pid, const ChildLimits& limits, Clock::time_point sta
     }
     if (interrupt_requested()) {
       kill(-pid, SIGKILL);
+      end_tagged(pid);
       wait4(pid, &status, 0, &usage);
       release_group(pid);
       throw ChildInterrupted();
@@ -204,8 +207,10 @@ WaitEnd wait_limited(pid_t pid, const ChildLimits& limits, Clock::time_point sta
 
 // The end of a child waited for by wait_limited: its group released, its status set.
 ChildResult& finish_child(pid_t pid, WaitEnd end, int status, const ChildLimits& limits, ChildResult& r) {
-  // The group may hold grandchildren that outlived their parent.
+  // The group may hold grandchildren that outlived their parent, and descendants that
+  // left the group carry its tag.
   kill(-pid, SIGKILL);
+  end_tagged(pid);
   release_group(pid);
   if (end == WaitEnd::wait_failed) {
     r.status = ChildStatus::not_started;

@@ -91,6 +91,7 @@ bool ServedChild::stop(int* status) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   kill(-pid_, SIGKILL);  // grandchildren
+  end_tagged(pid_);      // and descendants that left the group
   release_group(pid_);
   pid_ = -1;
   if (status) *status = s;
