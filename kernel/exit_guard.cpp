@@ -9,13 +9,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <random>
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <new>
 #include <set>
@@ -41,21 +44,34 @@ char g_nonce[17] = {};
 constexpr int kPidDigits = 10;  // a tag's pid, zero-padded
 constexpr char kGuardVar[] = "DTLAB_GUARD=";
 
-// Kills (SIGKILL) every other process whose DTLAB_GUARD value holds a space-separated
-// word equal to `tag` (or, with `prefix`, starting with it). Repeated while it finds
-// some (a process may fork while the scan runs), at most 5 rounds. Processes of other
-// users, or gone, are skipped (their environ cannot be read).
-void kill_carrying(const std::string& tag, bool prefix) {
-  const pid_t self = getpid();
-  for (int round = 0; round < 5; ++round) {
-    int found = 0;
-    DIR* proc = opendir("/proc");
-    if (!proc) return;
+// The pids in /proc now, sorted (a directory listing: no file read).
+std::vector<int> running_pids() {
+  std::vector<int> pids;
+  if (DIR* proc = opendir("/proc")) {
     while (const dirent* e = readdir(proc)) {
       char* end = nullptr;
       const long pid = std::strtol(e->d_name, &end, 10);
-      if (pid <= 1 || *end != '\0' || pid == self) continue;
-      std::ifstream in(std::string("/proc/") + e->d_name + "/environ", std::ios::binary);
+      if (pid > 1 && *end == '\0') pids.push_back(static_cast<int>(pid));
+    }
+    closedir(proc);
+  }
+  std::sort(pids.begin(), pids.end());
+  return pids;
+}
+
+// Kills (SIGKILL) every other process whose DTLAB_GUARD value holds a space-separated
+// word equal to `tag` (or, with `prefix`, starting with it), except those in `before`
+// (sorted: processes that ran before the child started cannot descend from it, so only
+// the environments of newer ones are read). Repeated while it finds some (a process may
+// fork while the scan runs), at most 5 rounds. Processes of other users, or gone, are
+// skipped (their environ cannot be read).
+void kill_carrying(const std::string& tag, bool prefix, const std::vector<int>& before = {}) {
+  const pid_t self = getpid();
+  for (int round = 0; round < 5; ++round) {
+    int found = 0;
+    for (const int pid : running_pids()) {
+      if (pid == self || std::binary_search(before.begin(), before.end(), pid)) continue;
+      std::ifstream in("/proc/" + std::to_string(pid) + "/environ", std::ios::binary);
       const std::string env((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
       std::size_t at = env.rfind(std::string(1, '\0') + kGuardVar);
       at = at == std::string::npos ? (env.rfind(kGuardVar, 0) == 0 ? 0 : std::string::npos) : at + 1;
@@ -73,10 +89,13 @@ void kill_carrying(const std::string& tag, bool prefix) {
         w = next + 1;
       }
     }
-    closedir(proc);
     if (found == 0) return;
   }
 }
+
+// Per running child: the pids that ran when it was started (GuardedEnvironment).
+std::mutex g_before_lock;
+std::map<int, std::vector<int>> g_before;
 
 std::string child_tag(int pid) {
   char digits[kPidDigits + 1];
@@ -264,6 +283,12 @@ GuardedEnvironment::GuardedEnvironment() {
   entries_.push_back(std::move(guard));
   for (auto& e : entries_) pointers_.push_back(e.data());
   pointers_.push_back(nullptr);
+  before_ = running_pids();
+}
+
+void GuardedEnvironment::started(int child_pid) {
+  std::lock_guard<std::mutex> hold(g_before_lock);
+  g_before[child_pid] = std::move(before_);
 }
 
 void GuardedEnvironment::stamp_child_pid() {
@@ -272,7 +297,16 @@ void GuardedEnvironment::stamp_child_pid() {
 }
 
 void end_tagged(int child_pid) {
-  if (g_nonce[0]) kill_carrying(child_tag(child_pid), false);
+  if (!g_nonce[0]) return;
+  std::vector<int> before;
+  {
+    std::lock_guard<std::mutex> hold(g_before_lock);
+    if (auto it = g_before.find(child_pid); it != g_before.end()) {
+      before = std::move(it->second);
+      g_before.erase(it);
+    }
+  }
+  kill_carrying(child_tag(child_pid), false, before);
 }
 
 void end_guarded_now() {

@@ -40,8 +40,12 @@ class GuardedEnvironment {
   // In the child, before exec (async-signal-safe: digits written into the prepared entry).
   void stamp_child_pid();
   char* const* envp() { return pointers_.data(); }
+  // In the parent, after the fork: end_tagged(child_pid) reads only the environments of
+  // processes newer than this object (the pids running at its construction are kept).
+  void started(int child_pid);
 
  private:
+  std::vector<int> before_;
   std::vector<std::string> entries_;
   std::vector<char*> pointers_;
   std::size_t guard_ = 0, digits_ = 0;  // the DTLAB_GUARD entry and where its pid digits go

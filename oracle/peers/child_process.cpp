@@ -125,6 +125,7 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   }
   // Both sides set the group, so a kill right after fork reaches it.
   setpgid(pid, pid);
+  env.started(pid);
   close(pipe_fd[1]);
   int exec_errno = 0;
   const ssize_t got = read(pipe_fd[0], &exec_errno, sizeof exec_errno);  // EOF when exec succeeded
