@@ -127,6 +127,8 @@ cube = {"site": 0, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 
         "faces": [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]],
         "neighbors": [-5, -6, -3, -4, -1, -2]}
 if kind == "garbage": open(out + ".json", "w").write("bananas\n")
+if kind == "nultail": open(out + ".json", "w").write(json.dumps({"cells": [cube]}) + "\n\0\0")
+if kind == "line3": open(out + ".json", "w").write('{"cells": [\n\n  bananas]}\n')
 if kind == "nan": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, vertices=[[float("nan"), 0, 0]] + cube["vertices"][1:])]}))
 if kind == "range": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, faces=[[0, 2, 99, 1]] + cube["faces"][1:])]}))
 if kind == "site": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, site=999)]}))
@@ -154,6 +156,28 @@ verdict "an unknown field" "$py $tmp/emit.py field {out} {in}" 3 "cells\[0\]: un
 verdict "a number beyond a double (docs/probe3.md)" "$py $tmp/emit.py bigexp {out} {in}" 3 "^p: refused: unreadable answer: out.json: not JSON: number overflow parsing '1e400'"
 verdict "a .vol vertex NaN" "$py $tmp/emit.py volnan {out} {in}" 3 "unreadable answer: out.vol:1: a vertex is not finite"
 verdict "a .vol line short of a vertex" "$py $tmp/emit.py vol {out} {in}" 3 "unreadable answer: out.vol:1: a vertex \(x,y,z\): expected \(a,b,...\), got '1'"
+verdict "a NUL after the JSON value" "$py $tmp/emit.py nultail {out} {in}" 3 \
+  "^p: refused: unreadable answer: out.json:2: not JSON: a NUL byte \\(byte [0-9]+\\)"
+verdict "a JSON error on line 3" "$py $tmp/emit.py line3 {out} {in}" 3 "^p: refused: unreadable answer: out.json:3: not JSON"
+# A 1000 MB sparse answer of NUL bytes (docs/probe3.md: read whole, twice, before it was
+# refused): refused at its first byte, dtlab's peak RSS far below the file's size.
+cat >"$tmp/rss.py" <<'PY'
+# rss.py OUT COMMAND...: runs COMMAND, writes its peak RSS (KiB, the largest of its processes) to OUT
+import resource, subprocess, sys
+rc = subprocess.run(sys.argv[2:]).returncode
+open(sys.argv[1], "w").write("%d\n" % resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
+sys.exit(rc)
+PY
+for ext in json vol; do
+  expect 3 "a sparse NUL .$ext answer" -- $py "$tmp/rss.py" "$tmp/rss" "$dtlab" voronoi "$tmp/pts.xyz" --against p --quiet \
+    --voronoi-peer "p=/bin/sh -c 'truncate -s 1000M \"\$1.$ext\"' {in} {out}"
+  case $ext in
+    json) has "^p: refused: unreadable answer: out.json:1: not JSON: a NUL byte \\(byte 1\\)" "NUL JSON refused at its first byte" ;;
+    vol) has "^p: refused: unreadable answer: out.vol:1: byte 0x00 at column 1: not a text file" "NUL .vol refused at its first byte" ;;
+  esac
+  [ "$(cat "$tmp/rss")" -lt 300000 ] && pass=$((pass + 1)) \
+    || { echo "FAIL: a sparse NUL .$ext answer: peak RSS $(cat "$tmp/rss") KiB (the file read whole)"; fails=$((fails + 1)); }
+done
 verdict "a cell of no site" "$py $tmp/emit.py site {out} {in}" 0 "^p: wrong-topology \(.*missing-cell 60.*extra-cell 1"
 verdict "no cells file" "/bin/true {in} {out}" 3 "^p: refused: exited 0 but wrote no \{out\}.json"
 verdict "exit 5" "/bin/sh -c 'echo cannot do this >&2; exit 5' {in} {out}" 3 "^p: refused: cannot do this"
