@@ -97,6 +97,12 @@ Box default_box(std::span<const Point3> sites, double margin) {
   return b;
 }
 
+double cell_scale(const Box& box, std::span<const Point3> sites) {
+  const double diagonal = box.diagonal();
+  if (sites.empty()) return diagonal;
+  return std::min(diagonal, default_box(sites, 0.1).diagonal());
+}
+
 namespace {
 
 // The largest face of `a` whose tag `b` lacks (0 if none).
@@ -516,6 +522,7 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   vd.box = o.box ? *o.box : default_box(sites, o.margin);
   if (!(finite(vd.box.lo) && finite(vd.box.hi)))
     throw std::invalid_argument("voronoi: the box overflows (coordinates or margin too large)");
+  vd.scale = cell_scale(vd.box, sites);
   vd.cells.resize(sites.size());
   const auto dup = find_duplicates(sites);
   const unsigned threads = thread_count(o.threads);

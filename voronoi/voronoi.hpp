@@ -63,6 +63,7 @@ inline VoronoiCell cell_view(const vor::ConvexCell& c) {
 
 struct VoronoiDiagram {
   vor::Box box;
+  double scale = 0;  // cell_scale(box, sites): what the cell checks' relative tolerances are of
   std::vector<Point3> sites;
   std::vector<VoronoiCell> cells;
   std::shared_ptr<const std::vector<vor::CellArena>> storage;  // owns the cells' arrays
@@ -87,6 +88,15 @@ void vertex_stars(std::size_t n, std::span<const Tet> tets, std::vector<std::uin
                   std::vector<std::uint32_t>& star);
 
 vor::Box default_box(std::span<const Point3> sites, double margin);
+
+// The length the cells' relative tolerances are of (`dtlab voronoi --check`'s cell
+// check): the box's diagonal, or the diagonal of the sites' default box (margin 0.1)
+// where that is shorter. The cells' vertices, edges and faces lie at the sites' spacing;
+// a box far larger than the sites only stretches the hull cells, and a tolerance of
+// 1e-9 of its diagonal (3.5e-3 at --margin 1e6 around the unit cube) calls real edges
+// of the cells zero-length. The rounding bounds stay the box's
+// (voronoi/rounding_bound.hpp): a vertex far out is as far off as its coordinates' ulps.
+double cell_scale(const vor::Box& box, std::span<const Point3> sites);
 
 // The cell of site i: `cell` is reset to the box and clipped (in coordinates
 // relative to the site, then translated back). `shrink` > 0 moves every bisector

@@ -203,6 +203,16 @@ expect 0 "--box inside the hull, --check" -- "$dtlab" voronoi "$tmp/pts.xyz" --b
 has "^check: 0 defect" "no defect for the empty cells of sites outside the box"
 has "^dtlab:exact: exact-topology" "the dtlab:exact peer answers"
 expect 0 "--box beside every site" -- "$dtlab" voronoi "$tmp/pts.xyz" --box 5 5 5 6 6 6 --quiet
+# A box far larger than the sites (docs/probe3.md, --margin 1e4..1e6): --check's cell
+# tolerance is of the cells' scale (cell_scale), not of the box diagonal, so the cells'
+# real edges of 1e-5 are no "zero-length edge" where the exact checker finds nothing.
+$py -c 'import random; random.seed(7); print("\n".join("%r %r %r" % tuple(random.random() for _ in "xyz") for _ in range(200)))' >"$tmp/u200.xyz"
+for m in 1e4 1e5; do
+  expect 0 "--margin $m --check --against dtlab:exact" -- "$dtlab" voronoi "$tmp/u200.xyz" --margin $m --check \
+    --against dtlab:exact --quiet
+  has "^check: 0 defect" "--margin $m: no --check defect"
+  has "^dtlab:exact: exact-topology" "--margin $m: the exact checker agrees"
+done
 
 # Bad definitions: exit 2, one line naming the problem.
 bad() {  # bad DESCRIPTION PATTERN dtlab-arguments...
