@@ -163,7 +163,8 @@ long line_of_byte(const std::string& path, std::size_t byte) {
 // parser met the real end, so a NUL is refused by name.
 json parse_json(const std::string& path, std::istream& in) {
   const auto nul = [&](std::size_t byte) {
-    fail(path + ":" + std::to_string(line_of_byte(path, byte)), "not JSON: a NUL byte (byte " + std::to_string(byte + 1) + ")");
+    fail(path + ":" + std::to_string(line_of_byte(path, byte)),
+         "not JSON: a NUL byte (byte " + std::to_string(byte + 1) + ")");
   };
   try {
     json root = json::parse(in);

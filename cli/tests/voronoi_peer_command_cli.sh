@@ -213,6 +213,18 @@ for m in 1e4 1e5; do
   has "^check: 0 defect" "--margin $m: no --check defect"
   has "^dtlab:exact: exact-topology" "--margin $m: the exact checker agrees"
 done
+# ... and the cells themselves are the sites' (the clip band and choose_cell of cell_scale):
+# a box of +-1e10 lost 313 faces (band 0.035), +-1e30..1e100 was refused as "sites too close".
+for b in 1e10 1e30 1e100; do
+  expect 0 "--box +-$b --check --against dtlab:exact" -- "$dtlab" voronoi "$tmp/u200.xyz" --box -$b -$b -$b $b $b $b \
+    --check --against dtlab:exact --quiet
+  has "^check: 0 defect" "--box +-$b: no --check defect"
+  has "^dtlab: exact-topology" "--box +-$b: our cells exact"
+done
+expect 0 "--margin 1e6 --check --against dtlab:exact" -- "$dtlab" voronoi "$tmp/u200.xyz" --margin 1e6 --check \
+  --against dtlab:exact --quiet
+has "^check: 0 defect" "--margin 1e6: no --check defect"
+has "^dtlab: exact-topology" "--margin 1e6: our cells exact"
 
 # Bad definitions: exit 2, one line naming the problem.
 bad() {  # bad DESCRIPTION PATTERN dtlab-arguments...
