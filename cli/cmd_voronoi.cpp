@@ -59,9 +59,10 @@ void check_voronoi_range(const std::string& input, const std::vector<Point3>& po
 // --check: each cell's shape and the volumes' sum, into m["check"]; the number of defects.
 std::size_t check_cells(const VoronoiDiagram& vd, nlohmann::json& m) {
   std::size_t defects = 0;
-  // The exact Voronoi checker's rule: relative tolerances with an ulp floor where the
-  // box is a few ulps of its coordinates wide (voronoi/rounding_bound.hpp).
-  const double tol = 1e-9 * vd.box.diagonal();
+  // The exact Voronoi checker's rule: relative tolerances (of the cells' scale,
+  // cell_scale) with an ulp floor where the cells are a few ulps of the box's
+  // coordinates wide (voronoi/rounding_bound.hpp).
+  const double tol = 1e-9 * vd.scale;
   const double vertex_error = cells_rounding_floor(vd, false).vertex_error;
   nlohmann::json bad = nlohmann::json::array();
   for (std::size_t i = 0; i < vd.cells.size(); ++i) {

@@ -62,7 +62,8 @@ int main(int argc, char** argv) {
   vor::ConvexCell cell;
   double sum = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
-    compute_cell(cell, pts, i, {adj.adj.data() + adj.off[i], adj.off[i + 1] - adj.off[i]}, box, 1e-12);
+    compute_cell(cell, pts, i, {adj.adj.data() + adj.off[i], adj.off[i + 1] - adj.off[i]}, box, 1e-12,
+                 cell_scale(box, pts));
     sum += cell.volume();
   }
   const double t_cells = since(t0);

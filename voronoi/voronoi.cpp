@@ -16,6 +16,7 @@
 #include "voronoi/circumcenter.hpp"
 #include "voronoi/dual_cell.hpp"
 #include "voronoi/exact_cell.hpp"
+#include "voronoi/rounding_bound.hpp"
 
 namespace dtlab {
 
@@ -97,6 +98,12 @@ Box default_box(std::span<const Point3> sites, double margin) {
   return b;
 }
 
+double cell_scale(const Box& box, std::span<const Point3> sites) {
+  const double diagonal = box.diagonal();
+  if (sites.empty()) return diagonal;
+  return std::min(diagonal, default_box(sites, 0.1).diagonal());
+}
+
 namespace {
 
 // The largest face of `a` whose tag `b` lacks (0 if none).
@@ -119,16 +126,18 @@ double largest_face_missing(const ConvexCell& a, const ConvexCell& b) {
 // shorter, no face smaller than tol^2, planar, convex); `representable` when it is
 // still a cell to the Voronoi checker: no edge collapsed (an exact edge of 1e-17 at a
 // box corner rounds to zero length), closed, planar faces and convex within `tol`
-// (faces below tol^2, whose plane rounding does not define, left out).
+// (faces below tol^2, whose plane rounding does not define, left out), or within what
+// vertices `vertex_error` off allow a face's plane where that is more (the ulp floor,
+// voronoi/cell_check.hpp: a face reaching a wall at 1e30 is planar only to its ulps).
 struct Rounded {
   bool clean, representable;
 };
-Rounded judge_rounded(const ConvexCell& c, double tol) {
+Rounded judge_rounded(const ConvexCell& c, double tol, double vertex_error) {
   if (c.empty()) return {true, true};
   const VoronoiCell view = cell_view(c);
   if (!check_cell_closed(view).empty()) return {false, false};
   bool tiny_face = false;
-  const bool convex = check_cell_convex(view, tol, true, &tiny_face).empty();
+  const bool convex = check_cell_convex(view, tol, true, &tiny_face, vertex_error).empty();
   const bool short_edge = has_edge_within(view, tol);  // implied by a collapsed one
   const bool representable = convex && !(short_edge && has_edge_within(view, 0));
   return {representable && !short_edge && !tiny_face, representable};
@@ -145,35 +154,38 @@ bool vertices_near(const ConvexCell& a, const ConvexCell& b, double tol) {
 
 enum class CellChoice { exact, band, refused };
 
-// Which of the exact cell and the band's cell an ambiguous cell keeps, in order:
+// Which of the exact cell and the band's cell an ambiguous cell keeps, in order (`scale`:
+// cell_scale):
 // - the exact one when it passes the cell check at half `--check`'s tolerance (1e-9 of
-//   the diagonal): no short edge, no tiny face, planar, convex;
-// - the band's when the two differ only by faces below kSmallFace of the diagonal
+//   the scale): no short edge, no tiny face, planar, convex;
+// - the band's when the two differ only by faces below kSmallFace of the scale
 //   squared, the band's is closed, planar and convex and its vertices lie where
 //   exact ones are (a grazing cut can move a band vertex by more than the Voronoi
 //   checker's 1e-9);
 // - the exact one when it survives rounding (its short edges are real);
-// - the band's when the two differ only by faces below kSmallFace;
+// - the band's when the two differ only by faces below kSmallFace and it is closed;
 // - neither. `off` is set to the largest face on which the two differ.
-CellChoice choose_cell(const ConvexCell& band, const ConvexCell& exact, double diag, double& off) {
+CellChoice choose_cell(const ConvexCell& band, const ConvexCell& exact, double scale, double vertex_error,
+                       double& off) {
   constexpr double kSmallFace = 1e-10;
-  const double tol = 0.5e-9 * diag;
+  const double tol = 0.5e-9 * scale;
   off = std::max(largest_face_missing(exact, band), largest_face_missing(band, exact));
-  const bool small = off <= kSmallFace * diag * diag;
-  const Rounded e = judge_rounded(exact, tol);
+  const bool small = off <= kSmallFace * scale * scale;
+  const Rounded e = judge_rounded(exact, tol, vertex_error);
   if (e.clean) return CellChoice::exact;
-  if (small && vertices_near(band, exact, tol) && judge_rounded(band, tol).representable) return CellChoice::band;
+  if (small && vertices_near(band, exact, tol) && judge_rounded(band, tol, vertex_error).representable)
+    return CellChoice::band;
   if (e.representable) return CellChoice::exact;
-  return small ? CellChoice::band : CellChoice::refused;
+  return small && check_cell_closed(cell_view(band)).empty() ? CellChoice::band : CellChoice::refused;
 }
 
 }  // namespace
 
 bool compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t i,
-                  std::span<const std::uint32_t> neighbors, const Box& box, double tol, double shrink) {
+                  std::span<const std::uint32_t> neighbors, const Box& box, double tol, double scale, double shrink) {
   const Point3 s = sites[i];
   cell.reset({box.lo - s, box.hi - s});
-  const double band = tol * box.diagonal();
+  const double band = tol * scale;
   for (auto j : neighbors) {
     // Bisector of s and sites[j], relative to s: n.x <= |n|^2 / 2 with n = p_j - s.
     const Point3 n = sites[j] - s;
@@ -190,15 +202,20 @@ bool compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t
   exact_clip_cell(exact_cell, sites, i, neighbors, box);
   exact_cell.translate(s);
   double off = 0;
-  switch (choose_cell(cell, exact_cell, box.diagonal(), off)) {
+  switch (choose_cell(cell, exact_cell, scale, rounding_floor_distance(box), off)) {
     case CellChoice::exact: cell = exact_cell; return true;
     case CellChoice::band: return true;
     case CellChoice::refused: break;
   }
-  const double diag = box.diagonal();
+  // At the sites' scale in a far larger box, a cell whose exact form does not survive
+  // rounding (cospherical sites: corners 1e-17 apart at the centre) and whose band is
+  // below its far vertices' rounding (the band's clip then does not close) is redone
+  // in the box's band, as before cell_scale: that band merges the corners.
+  if (scale < box.diagonal()) return compute_cell(cell, sites, i, neighbors, box, tol, box.diagonal(), shrink);
   throw std::runtime_error("voronoi: the cell of site " + std::to_string(i) +
                            " has faces that double precision cannot represent (a face of " +
-                           std::to_string(off / (diag * diag)) + " of the box diagonal squared is lost in rounding)");
+                           std::to_string(off / (scale * scale)) +
+                           " of the cells' scale squared is lost in rounding; voronoi.hpp's cell_scale)");
 }
 
 VoronoiCell cell_view(std::span<const Point3> vertices, std::span<const std::uint32_t> face_offsets,
@@ -326,7 +343,7 @@ void all_pairs_cells(std::span<const Point3> sites, const std::vector<std::int64
     for (std::uint32_t w = 0; w < sites.size(); ++w)
       if (w != v && dup[w] < 0) row.push_back(w);
     sort_by_distance(sites, v, row);
-    vd.exact_clipped += compute_cell(cell, sites, v, row, vd.box, o.tolerance, o.shrink);
+    vd.exact_clipped += compute_cell(cell, sites, v, row, vd.box, o.tolerance, vd.scale, o.shrink);
     store(storage->front(), cell, vd.cells[v]);
   }
   vd.storage = std::move(storage);
@@ -419,8 +436,7 @@ int crossed_walls(const CellBuffer& buf, const Box& box, double band) {
 // The dual cell in `sc.buffer` (site s) clipped by the walls it crosses, into `out`;
 // false (nothing stored) when a wall decision was ambiguous: the caller clips the
 // cell from its neighbours instead, with its exact fallback.
-bool clip_dual_to_walls(CellScratch& sc, const Point3& s, int walls, const Box& box, double tolerance,
-                        VoronoiCell& out) {
+bool clip_dual_to_walls(CellScratch& sc, const Point3& s, int walls, const Box& box, double band, VoronoiCell& out) {
   ConvexCell& cell = sc.cell;
   const CellBuffer& buf = sc.buffer;
   cell.assign(buf.vertices, buf.face_offsets, buf.face_vertices, buf.face_neighbor, s);
@@ -428,8 +444,8 @@ bool clip_dual_to_walls(CellScratch& sc, const Point3& s, int walls, const Box& 
   const Point3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   const double los[3] = {lo.x, lo.y, lo.z}, his[3] = {hi.x, hi.y, hi.z};
   for (int k = 0; k < 3 && !cell.empty(); ++k) {
-    if (walls >> (2 * k) & 1) cell.clip(-1 * axis[k], -los[k], -1 - 2 * k, tolerance * box.diagonal());
-    if (walls >> (2 * k + 1) & 1) cell.clip(axis[k], his[k], -2 - 2 * k, tolerance * box.diagonal());
+    if (walls >> (2 * k) & 1) cell.clip(-1 * axis[k], -los[k], -1 - 2 * k, band);
+    if (walls >> (2 * k + 1) & 1) cell.clip(axis[k], his[k], -2 - 2 * k, band);
   }
   if (cell.ambiguous()) return false;
   cell.translate(s);
@@ -464,14 +480,14 @@ CellPath one_cell(std::size_t rk, std::span<const Point3> sites, const std::vect
       store(scratch.arena, buf.vertices, buf.face_offsets, buf.face_vertices, buf.face_neighbor, out);
       return CellPath::dual;
     }
-    if (clip_dual_to_walls(scratch, s, walls, vd.box, o.tolerance, out)) return CellPath::dual_box_clipped;
+    if (clip_dual_to_walls(scratch, s, walls, vd.box, band, out)) return CellPath::dual_box_clipped;
   } else if (!dual_ok) {
     scratch.builder.gather(r, st, dt.tets, sc.bad);
   }
   scratch.row.clear();
   for (auto w : scratch.builder.neighbors()) scratch.row.push_back(dt.order[w]);
   sort_by_distance(sites, i, scratch.row);
-  const bool exact = compute_cell(scratch.cell, sites, i, scratch.row, vd.box, o.tolerance, o.shrink);
+  const bool exact = compute_cell(scratch.cell, sites, i, scratch.row, vd.box, o.tolerance, vd.scale, o.shrink);
   store(scratch.arena, scratch.cell, out);
   return exact ? CellPath::clipped_exact : CellPath::clipped;
 }
@@ -480,7 +496,7 @@ CellPath one_cell(std::size_t rk, std::span<const Point3> sites, const std::vect
 // (one arena per worker) then goes to the diagram.
 void dual_cells(std::span<const Point3> sites, const std::vector<std::int64_t>& dup, const RankedDelaunay& dt,
                 const StarsAndCentres& sc, const VoronoiOptions& o, unsigned threads, VoronoiDiagram& vd) {
-  const double band = o.tolerance * vd.box.diagonal();
+  const double band = o.tolerance * vd.scale;
   std::atomic<std::size_t> clipped{0}, box_clipped{0}, exact{0};
   std::vector<std::unique_ptr<CellScratch>> scratch(threads);
   parallel_chunks(sites.size(), threads, 256, [&](std::size_t b, std::size_t e, unsigned w) {
@@ -516,6 +532,7 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   vd.box = o.box ? *o.box : default_box(sites, o.margin);
   if (!(finite(vd.box.lo) && finite(vd.box.hi)))
     throw std::invalid_argument("voronoi: the box overflows (coordinates or margin too large)");
+  vd.scale = cell_scale(vd.box, sites);
   vd.cells.resize(sites.size());
   const auto dup = find_duplicates(sites);
   const unsigned threads = thread_count(o.threads);

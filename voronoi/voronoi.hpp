@@ -25,7 +25,7 @@ namespace dtlab {
 struct VoronoiOptions {
   std::optional<vor::Box> box;      // default: the bounding box grown by `margin` per side
   double margin = 0.1;              // relative to the box extent
-  double tolerance = 1e-12;         // relative to the box diagonal
+  double tolerance = 1e-12;         // relative to cell_scale (the box diagonal, or the sites')
   double shrink = 0;                // move each bisector this far towards its site
   PredicateSpec predicates{"adaptive", 1e-12, false, true};
   BuildOptions build;               // insertion order and seed of the Delaunay build
@@ -63,6 +63,7 @@ inline VoronoiCell cell_view(const vor::ConvexCell& c) {
 
 struct VoronoiDiagram {
   vor::Box box;
+  double scale = 0;  // cell_scale(box, sites): what VoronoiOptions::tolerance and the cell checks are relative to
   std::vector<Point3> sites;
   std::vector<VoronoiCell> cells;
   std::shared_ptr<const std::vector<vor::CellArena>> storage;  // owns the cells' arrays
@@ -88,13 +89,26 @@ void vertex_stars(std::size_t n, std::span<const Tet> tets, std::vector<std::uin
 
 vor::Box default_box(std::span<const Point3> sites, double margin);
 
+// The length the cells' relative tolerances are of (the clip band, choose_cell's and
+// `dtlab voronoi --check`'s cell checks): the box's diagonal, or the diagonal of the
+// sites' default box (margin 0.1) where that is shorter. The cells' vertices, edges and
+// faces lie at the sites' spacing; a box far larger than the sites only stretches the
+// hull cells, and tolerances of its diagonal merge real vertices (a band of 1e-12 of a
+// box of +-1e10 around the unit cube is 0.035) or call real edges zero-length (1e-9 at
+// --margin 1e6: 3.5e-3). The rounding bounds stay the box's (voronoi/rounding_bound.hpp):
+// a vertex far out is as far off as its coordinates' ulps, which the clip's error bounds
+// send to the exact fallback.
+double cell_scale(const vor::Box& box, std::span<const Point3> sites);
+
 // The cell of site i: `cell` is reset to the box and clipped (in coordinates
-// relative to the site, then translated back). `shrink` > 0 moves every bisector
+// relative to the site, then translated back), in a band of `tol` times `scale` (a
+// length: cell_scale, or the box diagonal). `shrink` > 0 moves every bisector
 // plane that distance towards the site (a gap of 2*shrink between neighbours).
 // Without shrink, a cell whose double clip was ambiguous is redone with exact signs
 // (voronoi/exact_cell.hpp); returns whether it was.
 bool compute_cell(vor::ConvexCell& cell, std::span<const Point3> sites, std::uint32_t i,
-                  std::span<const std::uint32_t> neighbors, const vor::Box& box, double tol, double shrink = 0);
+                  std::span<const std::uint32_t> neighbors, const vor::Box& box, double tol, double scale,
+                  double shrink = 0);
 
 // Throws std::invalid_argument on an empty input; fewer than four
 // or coplanar sites fall back to all-pairs clipping (quadratic, fine for small inputs).

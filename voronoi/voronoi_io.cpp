@@ -44,7 +44,7 @@ void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd, VtuForma
   std::vector<std::int64_t> site, walls;
   std::vector<double> volume;
   std::vector<std::uint8_t> defect;
-  const double tol = 1e-9 * vd.box.diagonal();
+  const double tol = 1e-9 * vd.scale;
   // Cells by vertex count (stable): meshio reads polyhedra into one block per vertex
   // count, in order of first appearance, but splits the cell data in ascending count;
   // the two agree only in this order. VTK and ParaView take any order.

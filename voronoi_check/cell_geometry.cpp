@@ -18,7 +18,7 @@ double face_area(const VoronoiCell& c, std::size_t f) {
   Point3 n{0, 0, 0};
   for (auto k = b + 1; k + 1 < e; ++k)
     n = n + cross(c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
-  return 0.5 * norm(n);
+  return 0.5 * std::hypot(n.x, n.y, n.z);  // |n|^2 overflows for faces at 1e100
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -26,17 +27,18 @@ constexpr std::uintmax_t kMaxCellsFile = std::uintmax_t{2} << 30;
   throw std::runtime_error(where + ": " + why);
 }
 
-std::string read_capped(const std::string& path) {
+// The file opened for reading after the checks that need no byte of it: a directory,
+// missing, or larger than the cap. Its bytes are then parsed as they are read (no copy
+// of the whole file in memory), so garbage is refused at its first bad byte.
+std::ifstream open_capped(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory");
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec) fail(path, "cannot open");
   if (size > kMaxCellsFile) fail(path, "larger than 2 GiB");
   std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) fail(path, "read error");
-  return text.str();
+  if (!in) fail(path, "cannot open");
+  return in;
 }
 
 // One cell being read: its vertices, face offsets, corners and neighbours.
@@ -139,14 +141,40 @@ void json_cell(const json& j, const std::string& where, CellParts& c) {
                                                                  std::numeric_limits<std::int32_t>::max())));
 }
 
-json parse_json(const std::string& path, const std::string& text) {
+// The line of byte `byte` (0-based) of the file: its newlines before it, counted in
+// blocks (only on an error, so the parse itself keeps no line table).
+long line_of_byte(const std::string& path, std::size_t byte) {
+  std::ifstream in(path, std::ios::binary);
+  long line = 1;
+  char block[1 << 16];
+  while (byte > 0 && in) {
+    in.read(block, static_cast<std::streamsize>(std::min(byte, sizeof block)));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    line += static_cast<long>(std::count(block, block + got, '\n'));
+    byte -= got;
+    if (got == 0) break;
+  }
+  return line;
+}
+
+// nlohmann's parser takes a NUL byte for the end of the input: a value followed by one
+// would be accepted and the rest of the file never read, and a NUL in place of a value
+// is "unexpected end of input". The stream is at its end after a parse only when the
+// parser met the real end, so a NUL is refused by name.
+json parse_json(const std::string& path, std::istream& in) {
+  const auto nul = [&](std::size_t byte) {
+    fail(path + ":" + std::to_string(line_of_byte(path, byte)),
+         "not JSON: a NUL byte (byte " + std::to_string(byte + 1) + ")");
+  };
   try {
-    return json::parse(text);
+    json root = json::parse(in);
+    if (!in.eof()) nul(static_cast<std::size_t>(in.tellg()) - 1);
+    return root;
   } catch (const json::parse_error& e) {
-    const std::size_t byte = std::min<std::size_t>(e.byte ? e.byte - 1 : 0, text.size());
-    const long line = 1 + static_cast<long>(std::count(text.begin(), text.begin() + static_cast<long>(byte), '\n'));
+    const std::size_t byte = e.byte ? e.byte - 1 : 0;
+    if (!in.eof()) nul(byte);
     const std::string what = e.what();
-    fail(path + ":" + std::to_string(line), "not JSON: " + what.substr(what.find(':') + 2));
+    fail(path + ":" + std::to_string(line_of_byte(path, byte)), "not JSON: " + what.substr(what.find(':') + 2));
   } catch (const json::exception& e) {  // a number out of range of a double (1e400)
     const std::string what = e.what();
     fail(path, "not JSON: " + what.substr(what.find(']') + 2));
@@ -201,6 +229,25 @@ class VolLine {
   std::string where_;
 };
 
+// The next line of a .vol file into `line` (false at the end), read byte by byte: a
+// byte that no text line holds (a NUL, a control byte, not ASCII) is refused where it
+// is, so a binary file ends the reading at its first byte, and only one line is held.
+bool vol_line(std::istream& in, std::string& line, const std::string& path, long number) {
+  line.clear();
+  std::streambuf& buf = *in.rdbuf();
+  for (int ch; (ch = buf.sbumpc()) != std::char_traits<char>::eof();) {
+    if (ch == '\n') return true;
+    if ((ch < 0x20 && ch != '\t' && ch != '\r') || ch >= 0x7f) {
+      char what[64];
+      std::snprintf(what, sizeof what, "byte 0x%02x at column %zu: not a text file", static_cast<unsigned>(ch),
+                    line.size() + 1);
+      fail(path + ":" + std::to_string(number), what);
+    }
+    line.push_back(static_cast<char>(ch));
+  }
+  return !line.empty();
+}
+
 void vol_cell(VolLine& in, const std::string& where, CellParts& c) {
   c = CellParts{};
   c.site = in.integer("the cell's id", 0, std::numeric_limits<std::int64_t>::max());
@@ -231,8 +278,8 @@ void vol_cell(VolLine& in, const std::string& where, CellParts& c) {
 }  // namespace
 
 PeerCells read_cells_json(const std::string& path) {
-  const std::string text = read_capped(path);
-  const json root = parse_json(path, text);
+  std::ifstream in = open_capped(path);
+  const json root = parse_json(path, in);
   if (!root.is_object() || !root.contains("cells")) fail(path, "expected {\"cells\": [...]}");
   PeerCells out;
   for (const auto& [key, value] : root.items()) {
@@ -254,12 +301,12 @@ PeerCells read_cells_json(const std::string& path) {
 }
 
 PeerCells read_cells_vol(const std::string& path) {
-  std::istringstream in(read_capped(path));
+  std::ifstream in = open_capped(path);
   PeerCells out;
   CellParts c;
   long number = 0;
-  for (std::string line; std::getline(in, line);) {
-    const std::string where = path + ":" + std::to_string(++number);
+  for (std::string line; vol_line(in, line, path, ++number);) {
+    const std::string where = path + ":" + std::to_string(number);
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     VolLine words(line, where);
     vol_cell(words, where, c);

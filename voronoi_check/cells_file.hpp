@@ -13,7 +13,9 @@
 // voro++'s command-line output ({out}.vol, `voro++ -c "%i %w %P %s %n %t" ...`): one
 // line per cell, "id nv (x,y,z)... nf n_1 .. n_nf (a,b,c,...)...".
 //
-// Faces are turned outward one by one (each against the mean of its cell's vertices,
+// Either file is parsed as it is read (the JSON tree from the stream, a .vol file one
+// line at a time), so garbage is refused at its first bad byte and no copy of the whole
+// text is held. Faces are turned outward one by one (each against the mean of its cell's vertices,
 // inside a convex cell), so a tool may write them in any orientation. Errors are
 // std::runtime_error "FILE: cells[3].faces[1][2]: reason" (JSON path) or "FILE:LINE:
 // reason"; never a crash, whatever the file holds.

@@ -137,7 +137,7 @@ void dual_cell(const DT& dt, DT::Vertex_handle h, Scratch& s) {
   }
 }
 
-// The clipping band of our own cells, relative to the box diagonal.
+// The clipping band of our own cells, relative to cell_scale (voronoi/voronoi.hpp).
 const double kBand = VoronoiOptions{}.tolerance;
 
 // The dual cell (relative to site s) clipped by the box walls it crosses, in our
@@ -148,10 +148,10 @@ const double kBand = VoronoiOptions{}.tolerance;
 // the caller clips the cell from CGAL's neighbours instead, as our own cells do (with
 // their exact fallback). A dual the rule refuses (CGAL's centres far off, not finite)
 // is kept as the clip left it: that is the answer to judge, not the adapter's clip.
-bool clip_to_box(vor::ConvexCell& cell, const Point3& s, const vor::Box& box, const Scratch& dual) {
+bool clip_to_box(vor::ConvexCell& cell, const Point3& s, const vor::Box& box, double scale, const Scratch& dual) {
   const double lo[3] = {box.lo.x - s.x, box.lo.y - s.y, box.lo.z - s.z};
   const double hi[3] = {box.hi.x - s.x, box.hi.y - s.y, box.hi.z - s.z};
-  const double band = kBand * box.diagonal();
+  const double band = kBand * scale;
   bool cut = false;
   for (int axis = 0; axis < 3 && !cell.empty(); ++axis) {
     Point3 n{0, 0, 0};
@@ -163,7 +163,7 @@ bool clip_to_box(vor::ConvexCell& cell, const Point3& s, const vor::Box& box, co
   for (const Point3& v : dual.v)
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return true;
   const VoronoiCell before = cell_view(dual.v, dual.offsets, dual.corners, dual.tags);
-  return !check_cell(before, 1e-9 * box.diagonal(), rounding_floor_distance(box)).empty();
+  return !check_cell(before, 1e-9 * scale, rounding_floor_distance(box)).empty();
 }
 
 }  // namespace
@@ -175,6 +175,7 @@ PeerCells peer_cgal_dual(const std::vector<Point3>& sites, const vor::Box& box) 
   for (std::uint32_t i = 0; i < sites.size(); ++i) in.push_back({{sites[i].x, sites[i].y, sites[i].z}, i});
   DT dt(in.begin(), in.end());
   if (dt.dimension() < 3) throw PeerRefusal("CGAL: the sites span fewer than 3 dimensions");
+  const double scale = cell_scale(box, sites);
   PeerCells out;
   Scratch s;
   vor::ConvexCell cell;
@@ -190,7 +191,7 @@ PeerCells peer_cgal_dual(const std::vector<Point3>& sites, const vor::Box& box) 
     if (!hull) {
       dual_cell(dt, h, s);
       cell.assign(s.v, s.offsets, s.corners, s.tags, site);
-      clipped_dual = clip_to_box(cell, site, box, s);
+      clipped_dual = clip_to_box(cell, site, box, scale, s);
       if (clipped_dual) cell.translate(site);
     }
     if (!clipped_dual) {
@@ -198,7 +199,7 @@ PeerCells peer_cgal_dual(const std::vector<Point3>& sites, const vor::Box& box) 
       dt.finite_adjacent_vertices(h, std::back_inserter(adj));
       nb.clear();
       for (auto w : adj) nb.push_back(w->info());
-      compute_cell(cell, sites, id, nb, box, kBand);
+      compute_cell(cell, sites, id, nb, box, kBand, scale);
     }
     if (cell.empty()) continue;
     out.cells.add_cell(id, cell.vertices(), cell.face_offsets(), cell.face_vertices(), cell.face_tags());

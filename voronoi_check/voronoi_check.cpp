@@ -127,6 +127,7 @@ class Judge {
         VoronoiCheckReport& r)
       : sites_(sites), box_(box), cells_(cells), o_(o), r_(r), shared_(relation(sites, o)), nb_(*shared_) {
     extent2_ = sites_extent(sites, box);
+    scale_ = cell_scale(box, sites);
     extent2_ *= extent2_;
     // The tolerances: the relative bound, or K ulps of the box's largest coordinate.
     auto& t = r_.tolerances;
@@ -260,8 +261,8 @@ class Judge {
   }
 
   // The exact face of (a, b) clipped to the box, in doubles: its area and diameter, or
-  // nullopt when it does not meet the box interior. The clip's band is our cells' (1e-12 of the
-  // diagonal): it moves an area by far less than small_face, and above the vertices'
+  // nullopt when it does not meet the box interior. The clip's band is our cells' (1e-12 of
+  // cell_scale): it moves an area by far less than small_face, and above the vertices'
   // rounding bounds, so only a truly ambiguous cell is redone with exact signs (a band
   // below them, as 1e-15 was, sent every clipped cell to GMP).
   std::optional<FaceSize> true_area(std::uint32_t a, std::uint32_t b, Scratch& s) const {
@@ -271,7 +272,7 @@ class Judge {
     if (s.clipped_site != a) {
       s.all.assign(s.pos.begin(), s.pos.end());
       s.all.insert(s.all.end(), s.deg.begin(), s.deg.end());
-      compute_cell(s.clipped, sites_, a, s.all, box_, VoronoiOptions{}.tolerance);
+      compute_cell(s.clipped, sites_, a, s.all, box_, VoronoiOptions{}.tolerance, scale_);
       s.clipped_site = a;
     }
     FaceSize size;
@@ -283,7 +284,7 @@ class Judge {
         Point3 n{0, 0, 0};
         for (std::size_t k = 1; k + 1 < fv.size(); ++k)
           n = n + cross(cc.vertices()[fv[k]] - o, cc.vertices()[fv[k + 1]] - o);
-        size.area += 0.5 * norm(n);
+        size.area += 0.5 * std::hypot(n.x, n.y, n.z);  // no overflow of |n|^2 in a box at 1e100
         size.diameter = std::max(size.diameter, polygon_diameter(cc.vertices(), fv));
       }
     if (size.area > 0) return size;
@@ -443,7 +444,7 @@ class Judge {
   VoronoiCheckReport& r_;
   std::shared_ptr<const VoronoiNeighbors> shared_;
   const VoronoiNeighbors& nb_;
-  double extent2_ = 1, ulp_ = 0, vertex_tol_ = 0, convex_tol_ = 0, vertex_error_ = 0, small_face_ = 0;
+  double extent2_ = 1, scale_ = 0, ulp_ = 0, vertex_tol_ = 0, convex_tol_ = 0, vertex_error_ = 0, small_face_ = 0;
   double volume_bound_ = 0, surface_ = 0;
   std::uint64_t not_closed_ = 0;
   std::vector<std::int64_t> cell_of_;

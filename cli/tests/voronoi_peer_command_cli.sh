@@ -127,6 +127,8 @@ cube = {"site": 0, "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 
         "faces": [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]],
         "neighbors": [-5, -6, -3, -4, -1, -2]}
 if kind == "garbage": open(out + ".json", "w").write("bananas\n")
+if kind == "nultail": open(out + ".json", "w").write(json.dumps({"cells": [cube]}) + "\n\0\0")
+if kind == "line3": open(out + ".json", "w").write('{"cells": [\n\n  bananas]}\n')
 if kind == "nan": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, vertices=[[float("nan"), 0, 0]] + cube["vertices"][1:])]}))
 if kind == "range": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, faces=[[0, 2, 99, 1]] + cube["faces"][1:])]}))
 if kind == "site": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, site=999)]}))
@@ -154,6 +156,28 @@ verdict "an unknown field" "$py $tmp/emit.py field {out} {in}" 3 "cells\[0\]: un
 verdict "a number beyond a double (docs/probe3.md)" "$py $tmp/emit.py bigexp {out} {in}" 3 "^p: refused: unreadable answer: out.json: not JSON: number overflow parsing '1e400'"
 verdict "a .vol vertex NaN" "$py $tmp/emit.py volnan {out} {in}" 3 "unreadable answer: out.vol:1: a vertex is not finite"
 verdict "a .vol line short of a vertex" "$py $tmp/emit.py vol {out} {in}" 3 "unreadable answer: out.vol:1: a vertex \(x,y,z\): expected \(a,b,...\), got '1'"
+verdict "a NUL after the JSON value" "$py $tmp/emit.py nultail {out} {in}" 3 \
+  "^p: refused: unreadable answer: out.json:2: not JSON: a NUL byte \\(byte [0-9]+\\)"
+verdict "a JSON error on line 3" "$py $tmp/emit.py line3 {out} {in}" 3 "^p: refused: unreadable answer: out.json:3: not JSON"
+# A 1000 MB sparse answer of NUL bytes (docs/probe3.md: read whole, twice, before it was
+# refused): refused at its first byte, dtlab's peak RSS far below the file's size.
+cat >"$tmp/rss.py" <<'PY'
+# rss.py OUT COMMAND...: runs COMMAND, writes its peak RSS (KiB, the largest of its processes) to OUT
+import resource, subprocess, sys
+rc = subprocess.run(sys.argv[2:]).returncode
+open(sys.argv[1], "w").write("%d\n" % resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
+sys.exit(rc)
+PY
+for ext in json vol; do
+  expect 3 "a sparse NUL .$ext answer" -- $py "$tmp/rss.py" "$tmp/rss" "$dtlab" voronoi "$tmp/pts.xyz" --against p --quiet \
+    --voronoi-peer "p=/bin/sh -c 'truncate -s 1000M \"\$1.$ext\"' {in} {out}"
+  case $ext in
+    json) has "^p: refused: unreadable answer: out.json:1: not JSON: a NUL byte \\(byte 1\\)" "NUL JSON refused at its first byte" ;;
+    vol) has "^p: refused: unreadable answer: out.vol:1: byte 0x00 at column 1: not a text file" "NUL .vol refused at its first byte" ;;
+  esac
+  [ "$(cat "$tmp/rss")" -lt 300000 ] && pass=$((pass + 1)) \
+    || { echo "FAIL: a sparse NUL .$ext answer: peak RSS $(cat "$tmp/rss") KiB (the file read whole)"; fails=$((fails + 1)); }
+done
 verdict "a cell of no site" "$py $tmp/emit.py site {out} {in}" 0 "^p: wrong-topology \(.*missing-cell 60.*extra-cell 1"
 verdict "no cells file" "/bin/true {in} {out}" 3 "^p: refused: exited 0 but wrote no \{out\}.json"
 verdict "exit 5" "/bin/sh -c 'echo cannot do this >&2; exit 5' {in} {out}" 3 "^p: refused: cannot do this"
@@ -179,6 +203,28 @@ expect 0 "--box inside the hull, --check" -- "$dtlab" voronoi "$tmp/pts.xyz" --b
 has "^check: 0 defect" "no defect for the empty cells of sites outside the box"
 has "^dtlab:exact: exact-topology" "the dtlab:exact peer answers"
 expect 0 "--box beside every site" -- "$dtlab" voronoi "$tmp/pts.xyz" --box 5 5 5 6 6 6 --quiet
+# A box far larger than the sites (docs/probe3.md, --margin 1e4..1e6): --check's cell
+# tolerance is of the cells' scale (cell_scale), not of the box diagonal, so the cells'
+# real edges of 1e-5 are no "zero-length edge" where the exact checker finds nothing.
+$py -c 'import random; random.seed(7); print("\n".join("%r %r %r" % tuple(random.random() for _ in "xyz") for _ in range(200)))' >"$tmp/u200.xyz"
+for m in 1e4 1e5; do
+  expect 0 "--margin $m --check --against dtlab:exact" -- "$dtlab" voronoi "$tmp/u200.xyz" --margin $m --check \
+    --against dtlab:exact --quiet
+  has "^check: 0 defect" "--margin $m: no --check defect"
+  has "^dtlab:exact: exact-topology" "--margin $m: the exact checker agrees"
+done
+# ... and the cells themselves are the sites' (the clip band and choose_cell of cell_scale):
+# a box of +-1e10 lost 313 faces (band 0.035), +-1e30..1e100 was refused as "sites too close".
+for b in 1e10 1e30 1e100; do
+  expect 0 "--box +-$b --check --against dtlab:exact" -- "$dtlab" voronoi "$tmp/u200.xyz" --box -$b -$b -$b $b $b $b \
+    --check --against dtlab:exact --quiet
+  has "^check: 0 defect" "--box +-$b: no --check defect"
+  has "^dtlab: exact-topology" "--box +-$b: our cells exact"
+done
+expect 0 "--margin 1e6 --check --against dtlab:exact" -- "$dtlab" voronoi "$tmp/u200.xyz" --margin 1e6 --check \
+  --against dtlab:exact --quiet
+has "^check: 0 defect" "--margin 1e6: no --check defect"
+has "^dtlab: exact-topology" "--margin 1e6: our cells exact"
 
 # Bad definitions: exit 2, one line naming the problem.
 bad() {  # bad DESCRIPTION PATTERN dtlab-arguments...

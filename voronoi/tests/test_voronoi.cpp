@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <random>
 
@@ -189,7 +190,7 @@ TEST_CASE("dual cells agree with the clipping engine; shrink and threads") {
   const Adjacency adj = delaunay_neighbors(dt.mesh);
   ConvexCell cell;
   for (std::uint32_t i = 0; i < pts.size(); ++i) {
-    compute_cell(cell, pts, i, {adj.adj.data() + adj.off[i], adj.off[i + 1] - adj.off[i]}, vd.box, 1e-12);
+    compute_cell(cell, pts, i, {adj.adj.data() + adj.off[i], adj.off[i + 1] - adj.off[i]}, vd.box, 1e-12, vd.scale);
     INFO("cell " << i);
     CHECK(std::abs(cell.volume() - vd.cells[i].volume) <= 1e-12 * vd.box.volume());
     CHECK(cell.face_count() == vd.cells[i].face_count());
@@ -204,6 +205,60 @@ TEST_CASE("dual cells agree with the clipping engine; shrink and threads") {
     sum += shrunk.cells[i].volume;
   }
   CHECK(sum < 0.99 * vd.box.volume());
+}
+
+TEST_CASE("a box 1e10 to 1e100 times the sites: the cells are the sites' own (cell_scale)") {
+  // docs/probe3.md: with tolerances of the box diagonal (a band of 0.035 at 1e10) the
+  // cells of 200 sites in the unit cube lost faces; at 1e30 they had no volume.
+  const auto pts = uniform(200, 11, 0, 1);
+  VoronoiOptions o;
+  o.predicates = kExact;
+  const VoronoiDiagram near = compute_voronoi(pts, o);
+  for (double b : {1e10, 1e30, 1e100}) {
+    INFO("box +-" << b);
+    o.box = Box{{-b, -b, -b}, {b, b, b}};
+    const VoronoiDiagram vd = compute_voronoi(pts, o);
+    CHECK(vd.scale == Approx(default_box(pts, 0.1).diagonal()));
+    CHECK(lost_cells_problem(vd).empty());
+    const double floor = cells_rounding_floor(vd, false).vertex_error;
+    std::size_t bounded = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      INFO("cell " << i);
+      CHECK(check_cell(vd.cells[i], 1e-9 * vd.scale, floor) == "");
+      // A cell the default box does not clip is bounded: the same cell in any box.
+      const auto& walls = near.cells[i].face_neighbor;
+      if (std::any_of(walls.begin(), walls.end(), [](std::int32_t t) { return t < 0; })) continue;
+      ++bounded;
+      CHECK(vd.cells[i].neighbors() == near.cells[i].neighbors());
+      CHECK(vd.cells[i].volume == Approx(near.cells[i].volume).epsilon(1e-12));
+    }
+    CHECK(bounded > 40);
+  }
+}
+
+TEST_CASE("cospherical sites in a box 1e10 times their size: closed cells (the redo in the box's band)") {
+  // 100 sites on a golden-angle spiral of the unit sphere: the exact corners at the
+  // centre lie ~1e-17 apart and round together, the band of the sites' scale is below the
+  // far vertices' rounding, so neither cell survives: the cell is redone in the box
+  // diagonal's band (without it two cells had a directed edge twice).
+  std::vector<Point3> pts;
+  for (int k = 0; k < 100; ++k) {
+    const double z = 0.99 - 0.02 * k, r = std::sqrt(1 - z * z), phi = 2.399963 * k;
+    pts.push_back({r * std::cos(phi), r * std::sin(phi), z});
+  }
+  VoronoiOptions o;
+  o.predicates = kExact;
+  for (double b : {1e10, 1e30}) {
+    INFO("box +-" << b);
+    o.box = Box{{-b, -b, -b}, {b, b, b}};
+    const VoronoiDiagram vd = compute_voronoi(pts, o);
+    CHECK(lost_cells_problem(vd).empty());
+    const double floor = cells_rounding_floor(vd, false).vertex_error;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      INFO("cell " << i);
+      CHECK(check_cell(vd.cells[i], 1e-9 * vd.scale, floor) == "");
+    }
+  }
 }
 
 TEST_CASE("voronoi_refusal: the sites' range first, then the box's, given or grown", "[voronoi][range]") {
