@@ -16,6 +16,7 @@
 #include "kernel/input_error.hpp"
 #include "kernel/node_reuse.hpp"
 #include "kernel/npy_writer.hpp"
+#include "kernel/output_file.hpp"
 #include "kernel/parallel_for.hpp"
 #include "kernel/point_io.hpp"
 #include "kernel/tet_io.hpp"
@@ -46,6 +47,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, int first_index) {
   const unsigned threads = a.kernel.threads;
   std::string node = "written";
+  // The old set goes first (kernel/output_file.hpp); an input .node that is the output stays.
+  const std::string vtu = a.vtu ? a.out + ".vtu" : "";
+  if (a.format == "npy")
+    remove_output_set({a.out + ".points.npy", a.out + ".tets.npy", vtu});
+  else
+    remove_output_set({a.out + ".node", a.out + ".ele", vtu}, a.input);
   if (a.format == "npy") {
     write_npy(a.out, mesh);
     node = "none";

@@ -140,6 +140,8 @@ int run_voronoi(const VoronoiArgs& a) {
     }
   }
   if (!a.out.empty()) {
+    remove_output_set({obj ? a.out + ".obj" : "", a.vtu ? a.out + ".vtu" : "", a.tets ? a.out + ".tets.vtu" : "",
+                       a.out + ".json"});  // the old set first (kernel/output_file.hpp)
     if (obj) write_cells_obj(a.out + ".obj", vd);
     if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
     if (a.tets) write_cells_tets_vtu(a.out + ".tets.vtu", vd, parse_vtu_format(a.vtu_format));

@@ -14,12 +14,31 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 
 #include "kernel/exit_guard.hpp"
 #include "kernel/input_error.hpp"
 
 namespace dtlab {
+
+// The files of one result written as a set (PREFIX.node and .ele, .points.npy and
+// .tets.npy, a cell set's .obj, .json and .vtu) are each replaced atomically, but one
+// after the other: an interrupt between two renames would leave a new file beside an
+// old one of the same prefix, a set no run wrote. Removing the old members before the
+// first is written leaves, at any interrupt, only files of the new run (a reader then
+// meets a missing member, never a stale one). Paths that are not regular files (a
+// device, a FIFO), are missing or are `keep` (the same file) are left alone.
+inline void remove_output_set(std::initializer_list<std::string> paths, const std::string& keep = "") {
+  struct stat kept {};
+  const bool has_keep = !keep.empty() && stat(keep.c_str(), &kept) == 0;
+  for (const std::string& p : paths) {
+    struct stat st {};
+    if (stat(p.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    if (has_keep && st.st_dev == kept.st_dev && st.st_ino == kept.st_ino) continue;
+    ::unlink(p.c_str());
+  }
+}
 
 class OutputFile {
  public:
