@@ -257,10 +257,11 @@ void add_fracture_command(CLI::App& app, int& rc) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   sub->add_flag("--vtu", args->vtu, "also write OUT/pieces.vtu (a polyhedron cell per piece) for ParaView");
-  args->vtu_format_option = sub->add_option("--vtu-format", args->vtu_format,
-                                            "encoding of the .vtu files (--vtu, --surfaces, --tets): binary (base64) | ascii")
-                                ->check(CLI::IsMember({"binary", "ascii"}))
-                                ->capture_default_str();
+  args->vtu_format_option =
+      sub->add_option("--vtu-format", args->vtu_format,
+                      "encoding of the .vtu files (--vtu, --surfaces, --tets): binary (base64) | ascii")
+          ->check(CLI::IsMember({"binary", "ascii"}))
+          ->capture_default_str();
   sub->add_option("--sites", args->sites,
                   "sites from a file (.xyz .node, or a mesh file's vertices) or 'mesh-vertices' (a seeded subset of "
                   "--pieces of them); default: --sampler")

@@ -127,14 +127,19 @@ void add_tetra_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<TetraArgs>();
   CLI::App* sub = app.add_subcommand("tetra", "Delaunay tetrahedralization of a point file (.node .xyz) or of a mesh file's vertices (.off .obj .ply .stl)");
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
-  CLI::Option* out = sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)")->type_name("PREFIX");
+  CLI::Option* out =
+      sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)")->type_name("PREFIX");
   sub->add_option("--format", args->format,
                   "node: PREFIX.node/.ele (a 0-based input .node is copied, not rewritten); npy: PREFIX.points.npy "
                   "and PREFIX.tets.npy (NumPy, dtlab's orientation)")
-      ->check(CLI::IsMember({"node", "npy"}))->capture_default_str()->needs(out);
+      ->check(CLI::IsMember({"node", "npy"}))
+      ->capture_default_str()
+      ->needs(out);
   CLI::Option* vtu = sub->add_flag("--vtu", args->vtu, "also write PREFIX.vtu for ParaView")->needs(out);
   sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu: binary (base64) | ascii")
-      ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str()->needs(vtu);
+      ->check(CLI::IsMember({"binary", "ascii"}))
+      ->capture_default_str()
+      ->needs(vtu);
   sub->add_flag("--json", args->json, "print a JSON summary on stdout");
   sub->add_flag("--check", args->check,
                 "verify the result with the exact checker (as `dtlab check`); exit 1 on a defect");

@@ -181,7 +181,7 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   CLI::App* sub = app.add_subcommand("voronoi", "Voronoi cells of a point file, clipped to a box");
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
   CLI::Option* out = sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)")
-      ->type_name("PREFIX");
+                         ->type_name("PREFIX");
   sub->add_option("--box", args->box,
                   "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
       ->expected(6)
@@ -196,12 +196,18 @@ void add_voronoi_command(CLI::App& app, int& rc) {
                 "also write PREFIX.tets.vtu: every cell as tetrahedra (cell data site, cell_volume), which VTK "
                 "integrates exactly")
       ->needs(out);
-  args->vtu_format_option = sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu (--vtu, --tets): binary (base64) | ascii")
-      ->check(CLI::IsMember({"binary", "ascii"}))->capture_default_str()->needs(out);
-  CLI::Option* png = sub->add_option("--png", args->png, "draw the cells (each shrunk about its centroid, own colour) to this PNG file")
-      ->type_name("FILE");
+  args->vtu_format_option =
+      sub->add_option("--vtu-format", args->vtu_format, "encoding of the .vtu (--vtu, --tets): binary (base64) | ascii")
+          ->check(CLI::IsMember({"binary", "ascii"}))
+          ->capture_default_str()
+          ->needs(out);
+  CLI::Option* png = sub->add_option("--png", args->png,
+                                     "draw the cells (each shrunk about its centroid, own colour) to this PNG file")
+                         ->type_name("FILE");
   sub->add_option("--png-shrink", args->png_shrink, "--png: scale of each cell about its centroid")
-      ->check(number_in(0.05, 1))->capture_default_str()->needs(png);
+      ->check(number_in(0.05, 1))
+      ->capture_default_str()
+      ->needs(png);
   sub->add_flag("--no-obj", args->no_obj, "do not write PREFIX.obj");
   sub->add_flag("--check", args->check, "check every cell (closed, convex, Euler 2) and the volume sum; exit 1 on a defect");
   sub->add_option(

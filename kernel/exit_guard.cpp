@@ -11,16 +11,16 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <random>
-#include <chrono>
-#include <filesystem>
 #include <map>
 #include <mutex>
 #include <new>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -197,8 +197,8 @@ void register_fork_handler() {
 void start_watchdog_locked() {
   if (g_socket.load() >= 0) return;
   register_fork_handler();
-  const std::uint64_t nonce = (std::uint64_t{std::random_device{}()} << 32) ^ std::random_device{}() ^
-                              static_cast<std::uint64_t>(getpid());
+  const std::uint64_t nonce =
+      (std::uint64_t{std::random_device{}()} << 32) ^ std::random_device{}() ^ static_cast<std::uint64_t>(getpid());
   std::snprintf(g_nonce, sizeof g_nonce, "%016llx", static_cast<unsigned long long>(nonce));
   int sv[2];
   if (socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_CLOEXEC, 0, sv) != 0)

@@ -23,7 +23,7 @@ TEST_CASE("remove_output_set: the old regular members go, the kept file, folders
   touch(p + ".node");
   touch(p + ".ele");
   touch(p + ".vtu");
-  touch(p + ".other");           // not a member: stays
+  touch(p + ".other");               // not a member: stays
   fs::create_directory(p + ".obj");  // not a regular file: stays
   REQUIRE(mkfifo((p + ".json").c_str(), 0600) == 0);
   fs::create_hard_link(p + ".node", p + ".input.node");  // the same file as .node: kept

@@ -120,8 +120,8 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   }
   if (pid == 0) {
     close(pipe_fd[0]);
-    exec_child(argv.data(), env, limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes, stdin_fd,
-               reply_fd, pipe_fd[1]);
+    exec_child(argv.data(), env, limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes,
+               stdin_fd, reply_fd, pipe_fd[1]);
   }
   // Both sides set the group, so a kill right after fork reaches it.
   setpgid(pid, pid);
