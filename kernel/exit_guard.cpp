@@ -16,12 +16,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <mutex>
 #include <new>
 #include <random>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -72,21 +72,17 @@ void kill_carrying(const std::string& tag, bool prefix, const std::vector<int>& 
     for (const int pid : running_pids()) {
       if (pid == self || std::binary_search(before.begin(), before.end(), pid)) continue;
       std::ifstream in("/proc/" + std::to_string(pid) + "/environ", std::ios::binary);
-      const std::string env((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      std::size_t at = env.rfind(std::string(1, '\0') + kGuardVar);
-      at = at == std::string::npos ? (env.rfind(kGuardVar, 0) == 0 ? 0 : std::string::npos) : at + 1;
-      if (at == std::string::npos) continue;
-      const std::size_t begin = at + sizeof kGuardVar - 1, stop = env.find('\0', begin);
-      const std::string value = env.substr(begin, stop == std::string::npos ? std::string::npos : stop - begin);
-      for (std::size_t w = 0; w < value.size();) {
-        const std::size_t next = std::min(value.find(' ', w), value.size());
-        const std::string_view word(value.data() + w, next - w);
-        if (prefix ? word.substr(0, tag.size()) == tag : word == tag) {
-          kill(static_cast<pid_t>(pid), SIGKILL);
-          ++found;
-          break;
-        }
-        w = next + 1;
+      // The environment: NUL-terminated NAME=VALUE entries; the tags are VALUE's words.
+      bool carries = false;
+      for (std::string entry; !carries && std::getline(in, entry, '\0');) {
+        if (entry.rfind(kGuardVar, 0) != 0) continue;
+        std::istringstream words(entry.substr(sizeof kGuardVar - 1));
+        for (std::string word; !carries && words >> word;)
+          carries = prefix ? word.rfind(tag, 0) == 0 : word == tag;
+      }
+      if (carries) {
+        kill(static_cast<pid_t>(pid), SIGKILL);
+        ++found;
       }
     }
     if (found == 0) return;

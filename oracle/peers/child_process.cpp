@@ -107,8 +107,7 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   argv.push_back(nullptr);
   int pipe_fd[2];
   if (pipe2(pipe_fd, O_CLOEXEC) != 0) throw std::runtime_error("run_child: pipe failed");
-  prepare_exit_guard();
-  GuardedEnvironment env;  // DTLAB_GUARD: found again if it leaves its group (end_tagged)
+  GuardedEnvironment env;  // starts the exit guard; DTLAB_GUARD: found again if it leaves its group (end_tagged)
   mark_exec_fork(true);
   const pid_t pid = fork();
   mark_exec_fork(false);
@@ -133,6 +132,7 @@ int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits,
   if (got == static_cast<ssize_t>(sizeof exec_errno)) {
     int status = 0;
     waitpid(pid, &status, 0);
+    end_tagged(pid);  // drops its record of the pids at the start
     release_group(pid);
     message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);
     return -1;
