@@ -67,8 +67,7 @@ std::size_t check_cells(const VoronoiDiagram& vd, nlohmann::json& m) {
   nlohmann::json bad = nlohmann::json::array();
   for (std::size_t i = 0; i < vd.cells.size(); ++i) {
     if (vd.cells[i].duplicate_of >= 0) continue;
-    // The empty cell of a site outside the box: its cell does not meet the box.
-    if (vd.cells[i].face_count() == 0 && i < vd.sites.size() && !vd.box.contains(vd.sites[i])) continue;
+    if (vd.cells[i].face_count() == 0 && vd.may_be_empty(i)) continue;
     const std::string why = check_cell(vd.cells[i], tol, vertex_error);
     if (!why.empty()) bad.push_back({{"cell", i}, {"defect", why}}), ++defects;
   }

@@ -74,6 +74,10 @@ struct VoronoiDiagram {
   std::size_t exact_clipped = 0;    // clipped cells redone exactly (vor::exact_clip_cell)
   double seconds_dt = 0, seconds_cells = 0;  // wall time
   double cpu_seconds_cells = 0;              // process CPU time of the cell phase (all threads)
+
+  // Cell i may be empty without a defect: its site lies outside the closed box (its cell
+  // need not meet the box); one inside always has volume.
+  bool may_be_empty(std::size_t i) const { return i < sites.size() && !box.contains(sites[i]); }
 };
 
 // Delaunay neighbours per vertex in compressed rows: neighbours of v are

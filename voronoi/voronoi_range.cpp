@@ -56,10 +56,7 @@ std::string lost_cells_problem(const VoronoiDiagram& vd) {
   for (std::size_t i = 0; i < vd.cells.size(); ++i) {
     const auto& c = vd.cells[i];
     if (c.duplicate_of >= 0) continue;
-    // A site outside the box may have an empty cell (its cell does not meet the box);
-    // one inside the closed box always has volume.
-    const bool inside = i >= vd.sites.size() || vd.box.contains(vd.sites[i]);
-    if (!std::isfinite(c.volume) || c.volume < 0 || (c.volume == 0 && inside))
+    if (!std::isfinite(c.volume) || c.volume < 0 || (c.volume == 0 && !vd.may_be_empty(i)))
       return "a Voronoi cell with no volume (zero or NaN): the sites are too close for cells in double precision";
     sum += c.volume;
   }
