@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <memory>
 #include <sstream>
+#include <unordered_set>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +12,7 @@
 #include "cli/command.hpp"
 #include "cli/input_points.hpp"
 #include "cli/number_options.hpp"
+#include "cli/old_outputs.hpp"
 #include "cli/progress.hpp"
 #include "fracture/piece_gltf.hpp"
 #include "fracture/piece_io.hpp"
@@ -130,11 +133,32 @@ nlohmann::json options_json(const FractureArgs& a) {
   return o;
 }
 
+// The files of DIR a fracture run writes, and those of the other options (an earlier
+// run's): all removed before the first new one, so that DIR never holds a manifest of one
+// run beside pieces of another (cli/old_outputs.hpp). The input mesh is never removed.
+OutputSet fracture_output_set(const FractureArgs& a, std::size_t pieces) {
+  OutputSet set;
+  set.keep = a.mesh;  // DIR/repaired.off or DIR/pieces.obj may be the input mesh
+  set.written = {a.out + "/pieces.obj", a.out + "/exploded.obj", a.out + "/pieces.mtl", a.out + "/manifest.json",
+                 a.out + "/adjacency.txt"};
+  for (auto [on, name] : {std::pair{a.repair, "/repaired.off"}, std::pair{a.vtu, "/pieces.vtu"},
+                          std::pair{a.surfaces, "/surfaces.vtu"}, std::pair{a.gltf, "/pieces.gltf"},
+                          std::pair{a.tets, "/tets.vtu"}})
+    (on ? set.written : set.others).push_back(a.out + name);
+  std::unordered_set<std::string> split;
+  if (a.split)
+    for (std::size_t i = 0; i < pieces; ++i) split.insert(a.out + "/pieces/" + piece_file_name(i));
+  for (std::string& p : piece_files_in(a.out + "/pieces"))
+    (split.contains(p) ? set.written : set.others).push_back(std::move(p));
+  return set;
+}
+
 // Every file of --out: the pieces (OBJ, and VTU, glTF, split files when asked), the
 // manifest and the adjacency list, one line per piece "i: j k l" (for breakable constraints).
 void write_fracture_outputs(const FractureArgs& a, const FractureResult& r, nlohmann::json& m,
                             const std::vector<PieceTets>& tets) {
   std::filesystem::create_directories(a.out);
+  remove_old_outputs(fracture_output_set(a, r.pieces.size()), a.quiet);
   write_pieces_obj(a.out + "/pieces.obj", r);
   write_pieces_obj(a.out + "/exploded.obj", r, a.explode);
   write_pieces_mtl(a.out + "/pieces.mtl");

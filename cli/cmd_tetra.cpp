@@ -12,6 +12,7 @@
 #include "cli/build_options.hpp"
 #include "cli/command.hpp"
 #include "cli/input_points.hpp"
+#include "cli/old_outputs.hpp"
 #include "cli/tetra_report.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/node_reuse.hpp"
@@ -47,12 +48,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, int first_index) {
   const unsigned threads = a.kernel.threads;
   std::string node = "written";
-  // The old set goes first (kernel/output_file.hpp); an input .node that is the output stays.
-  const std::string vtu = a.vtu ? a.out + ".vtu" : "";
-  if (a.format == "npy")
-    remove_output_set({a.out + ".points.npy", a.out + ".tets.npy", vtu});
-  else
-    remove_output_set({a.out + ".node", a.out + ".ele", vtu}, a.input);
+  // The old set goes first, every member of it (cli/old_outputs.hpp); an input .node that
+  // is the output stays.
+  const std::vector<std::string> text{a.out + ".node", a.out + ".ele"},
+      npy{a.out + ".points.npy", a.out + ".tets.npy"};
+  OutputSet set{a.format == "npy" ? npy : text, a.format == "npy" ? text : npy, a.input};
+  (a.vtu ? set.written : set.others).push_back(a.out + ".vtu");
+  remove_old_outputs(set, false);
   if (a.format == "npy") {
     write_npy(a.out, mesh);
     node = "none";

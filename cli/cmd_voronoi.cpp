@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +15,7 @@
 #include "cli/command.hpp"
 #include "cli/input_points.hpp"
 #include "cli/number_options.hpp"
+#include "cli/old_outputs.hpp"
 #include "cli/peer_definitions.hpp"
 #include "cli/voronoi_against.hpp"
 #include "fracture/render_png.hpp"
@@ -139,8 +141,10 @@ int run_voronoi(const VoronoiArgs& a) {
     }
   }
   if (!a.out.empty()) {
-    remove_output_set({obj ? a.out + ".obj" : "", a.vtu ? a.out + ".vtu" : "", a.tets ? a.out + ".tets.vtu" : "",
-                       a.out + ".json"});  // the old set first (kernel/output_file.hpp)
+    OutputSet set{{a.out + ".json"}, {}, a.input};  // the old set first (cli/old_outputs.hpp), never the input
+    for (auto [on, suffix] : {std::pair{obj, ".obj"}, std::pair{a.vtu, ".vtu"}, std::pair{a.tets, ".tets.vtu"}})
+      (on ? set.written : set.others).push_back(a.out + suffix);
+    remove_old_outputs(set, a.quiet);
     if (obj) write_cells_obj(a.out + ".obj", vd);
     if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
     if (a.tets) write_cells_tets_vtu(a.out + ".tets.vtu", vd, parse_vtu_format(a.vtu_format));

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
+#include <string_view>
 
 #include "sampling/mesh_report_json.hpp"
 #include "kernel/output_file.hpp"
@@ -38,11 +40,32 @@ std::size_t write_piece(std::FILE* f, std::size_t i, const Piece& p, const Point
 }
 }  // namespace
 
+std::string piece_file_name(std::size_t i) {
+  char name[32];
+  std::snprintf(name, sizeof name, "piece_%04zu.obj", i);
+  return name;
+}
+
+std::vector<std::string> piece_files_in(const std::string& dir) {
+  std::vector<std::string> paths;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    constexpr std::string_view head = "piece_", tail = ".obj";
+    if (name.size() <= head.size() + tail.size() || !name.starts_with(head) || !name.ends_with(tail)) continue;
+    const std::string_view digits = std::string_view(name).substr(head.size(), name.size() - head.size() - tail.size());
+    if (std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
+        e.is_regular_file(ec))
+      paths.push_back(e.path().string());
+  }
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
 std::vector<std::string> write_piece_files(const std::string& dir, const FractureResult& r) {
   std::vector<std::string> names;
   for (std::size_t i = 0; i < r.pieces.size(); ++i) {
-    char name[32];
-    std::snprintf(name, sizeof name, "piece_%04zu.obj", i);
+    const std::string name = piece_file_name(i);
     const std::string path = dir + "/" + name;
     OutputFile file(path);
     std::fprintf(file.get(), "# dtlab fracture: piece %zu of %zu\nmtllib ../pieces.mtl\n", i, r.pieces.size());

@@ -14,8 +14,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "kernel/exit_guard.hpp"
 #include "kernel/input_error.hpp"
@@ -27,17 +27,22 @@ namespace dtlab {
 // after the other: an interrupt between two renames would leave a new file beside an
 // old one of the same prefix, a set no run wrote. Removing the old members before the
 // first is written leaves, at any interrupt, only files of the new run (a reader then
-// meets a missing member, never a stale one). Paths that are not regular files (a
-// device, a FIFO), are missing or are `keep` (the same file) are left alone.
-inline void remove_output_set(std::initializer_list<std::string> paths, const std::string& keep = "") {
+// meets a missing member, never a stale one). `paths` are all the set's members, those
+// this run writes and those it does not (an old .vtu beside a new .node/.ele would be a
+// stale member too). Paths that are not regular files (a device, a FIFO), are missing
+// or are `keep` (the same file) are left alone. Returns the paths removed.
+inline std::vector<std::string> remove_output_set(const std::vector<std::string>& paths,
+                                                  const std::string& keep = "") {
   struct stat kept {};
   const bool has_keep = !keep.empty() && stat(keep.c_str(), &kept) == 0;
+  std::vector<std::string> removed;
   for (const std::string& p : paths) {
     struct stat st {};
-    if (stat(p.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    if (p.empty() || stat(p.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
     if (has_keep && st.st_dev == kept.st_dev && st.st_ino == kept.st_ino) continue;
-    ::unlink(p.c_str());
+    if (::unlink(p.c_str()) == 0) removed.push_back(p);
   }
+  return removed;
 }
 
 class OutputFile {

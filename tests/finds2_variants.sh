@@ -90,7 +90,7 @@ refused("sample tet 1e-160", "coordinates too small", lambda: dtlab.sample(tmp +
 m = dtlab.read_mesh(tmp + "/t80.off")
 v, f = (m.vertices, m.faces) if hasattr(m, "vertices") else m
 refused("fracture margin 1e300", "not smaller than the mesh", lambda: dtlab.fracture(v, f, pieces=3, margin=1e300))
-refused("fuzz.campaign points 1e12 (was std::bad_alloc as a ValueError)", "--points: 1000000000000 not in [1, 1e7]",
+refused("fuzz.campaign points 1e12 (was std::bad_alloc as a ValueError)", "points: 1000000000000 not in [1, 1e7]",
         lambda: dtlab.fuzz.campaign("dtlab:adaptive", "uniform", cases=1, points=10**12))
 assert len(dtlab.voronoi(P).cells) == 20
 print("ok")

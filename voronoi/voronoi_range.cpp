@@ -27,12 +27,12 @@ std::string voronoi_sites_problem(std::span<const Point3> sites) {
   return "";
 }
 
-std::string voronoi_box_problem(const vor::Box& box, bool given, double margin) {
+std::string voronoi_box_problem(const vor::Box& box, bool given, double margin, const BoxOptionNames& names) {
   for (double c : {box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z})
     if (!(std::abs(c) <= kBoxCoordinateMax)) {
       char what[96];
-      std::snprintf(what, sizeof what, "--margin %g grows the sites' bounding box", margin);
-      return std::string(given ? "--box: corners" : what) +
+      std::snprintf(what, sizeof what, " %g grows the sites' bounding box", margin);
+      return (given ? std::string(names.box) + ": corners" : std::string(names.margin) + what) +
              " beyond 1e101 in magnitude (cell volumes overflow a double near 1e102): cells are computed in a box "
              "within |x| <= 1e101";
     }
@@ -42,10 +42,10 @@ std::string voronoi_box_problem(const vor::Box& box, bool given, double margin) 
 }  // namespace
 
 std::optional<VoronoiRefusal> voronoi_refusal(std::span<const Point3> sites, const std::optional<vor::Box>& box,
-                                              double margin) {
+                                              double margin, const BoxOptionNames& names) {
   if (std::string why = voronoi_sites_problem(sites); !why.empty())
     return VoronoiRefusal{VoronoiRefusal::Range::sites, std::move(why)};
-  if (std::string why = voronoi_box_problem(box ? *box : default_box(sites, margin), box.has_value(), margin);
+  if (std::string why = voronoi_box_problem(box ? *box : default_box(sites, margin), box.has_value(), margin, names);
       !why.empty())
     return VoronoiRefusal{VoronoiRefusal::Range::box, std::move(why)};
   return std::nullopt;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "voronoi/voronoi.hpp"
 
@@ -23,11 +24,16 @@ struct VoronoiRefusal {
   std::string reason;
 };
 
+// How the caller names the box and the margin in its messages (Python: box=, margin=).
+struct BoxOptionNames {
+  std::string_view box = "--box", margin = "--margin";
+};
+
 // The sites' range (beyond 1e100 in magnitude, or spanning less than 1e-100), then the
 // clip box's (a corner beyond 1e101): `box`, or if none the sites' bounding box grown
 // by `margin` (default_box); nothing when both are in range.
 std::optional<VoronoiRefusal> voronoi_refusal(std::span<const Point3> sites, const std::optional<vor::Box>& box,
-                                              double margin);
+                                              double margin, const BoxOptionNames& names = {});
 
 // After the cells: computed cells that are no result: a cell of NaN, infinite or zero
 // volume, or cells that do not fill the box (double precision lost on these sites):

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "kernel/output_file.hpp"
 
@@ -28,14 +29,15 @@ TEST_CASE("remove_output_set: the old regular members go, the kept file, folders
   REQUIRE(mkfifo((p + ".json").c_str(), 0600) == 0);
   fs::create_hard_link(p + ".node", p + ".input.node");  // the same file as .node: kept
 
-  remove_output_set({p + ".ele", p + ".vtu", p + ".obj", p + ".json", p + ".missing"});
+  const auto removed = remove_output_set({p + ".ele", p + ".vtu", p + ".obj", p + ".json", p + ".missing", ""});
+  CHECK(removed == std::vector<std::string>{p + ".ele", p + ".vtu"});  // what was removed, in order
   CHECK(!fs::exists(p + ".ele"));
   CHECK(!fs::exists(p + ".vtu"));
   CHECK(fs::is_directory(p + ".obj"));
   CHECK(fs::is_fifo(p + ".json"));
   CHECK(fs::exists(p + ".other"));
 
-  remove_output_set({p + ".node", ""}, p + ".input.node");
+  CHECK(remove_output_set({p + ".node", ""}, p + ".input.node").empty());
   CHECK(fs::exists(p + ".node"));  // the input read as the output is kept
   remove_output_set({p + ".node"});
   CHECK(!fs::exists(p + ".node"));

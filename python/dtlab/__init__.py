@@ -8,8 +8,9 @@
 
 Point arrays are (n, 3) and finite; float64 C-contiguous arrays are used without a copy.
 Bad input (wrong shape, NaN, fewer than 4 points, an unknown option value, an unreadable
-file) raises ValueError with the message the `dtlab` command prints for it. Long calls
-release the GIL. Defaults are those of the `dtlab` command, so the same call gives the
+file) raises ValueError: a file's message is the `dtlab` command's ("file:line: reason"),
+a bad argument's names the parameter ("pieces: expected an integer in [1, 100000], got
+0"). Long calls release the GIL. Defaults are those of the `dtlab` command, so the same call gives the
 same result as the same command line (seeds included).
 """
 from __future__ import annotations
@@ -40,13 +41,13 @@ MeshLike = Union[str, "os.PathLike[str]", Mesh, tuple[Any, Any]]
 
 def _seed(seed: int) -> int:
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= int(seed) < 2**64:
-        raise ValueError(f"--seed: expected an integer in [0, 2^64), got {seed!r}")
+        raise ValueError(f"seed: expected an integer in [0, 2^64), got {seed!r}")
     return int(seed)
 
 
-def _count(value: int, name: str, most: int = 2**63 - 1) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 0 <= int(value) <= most:
-        raise ValueError(f"{name}: expected an integer in [0, {most}], got {value!r}")
+def _count(value: int, name: str, most: int = 2**63 - 1, least: int = 0) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not least <= int(value) <= most:
+        raise ValueError(f"{name}: expected an integer in [{least}, {most}], got {value!r}")
     return int(value)
 
 
@@ -200,7 +201,7 @@ def _box_arg(box: Any) -> list[float] | None:
         return None
     b = np.asarray(box, dtype=np.float64).reshape(-1)
     if b.size != 6 or not np.all(np.isfinite(b)):
-        raise ValueError("--box needs xmin ymin zmin xmax ymax zmax with min < max")
+        raise ValueError("box needs xmin ymin zmin xmax ymax zmax with min < max")
     return [float(x) for x in b]
 
 
@@ -330,7 +331,7 @@ def sample(mesh: MeshLike, n: int, method: str = "winding", seed: int = 1, *, bl
     Raises ValueError if the mesh encloses too little volume to find n points.
     """
     vertices, faces = _mesh_arrays(mesh)
-    count = _count(n, "--count")
+    count = _count(n, "n", 2**30, 1)  # the range of `dtlab sample --count`
     raw = _core.sample(vertices, faces, count, method, _seed(seed), bool(blue_noise), float(blue_noise_ratio))
     pts = raw["points"]
     if len(pts) < count:
@@ -386,12 +387,12 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
     called after each cell's boolean (from the worker that did it, with the GIL).
     """
     with StageBar(progress, "fracture") as bar:
-        raw = _core.fracture(vertices, faces, _count(pieces, "--pieces"), _seed(seed), float(margin), sampler,
-                             bool(blue_noise), _threads(threads), [_count(r, "--recurse") for r in recurse],
-                             _count(recurse_pieces, "--recurse-pieces"),
-                             *_site_source(sites), None if impact is None else _triple(impact, "--impact"),
+        raw = _core.fracture(vertices, faces, _count(pieces, "pieces", 100000, 1), _seed(seed), float(margin), sampler,
+                             bool(blue_noise), _threads(threads), [_count(r, "recurse") for r in recurse],
+                             _count(recurse_pieces, "recurse_pieces", 10000, 1),
+                             *_site_source(sites), None if impact is None else _triple(impact, "impact"),
                              float(impact_radius), float(site_noise), bool(island_split),
-                             _triple(cell_scale, "--cell-scale"), float(density), bool(exact_tiling), bool(tets),
+                             _triple(cell_scale, "cell_scale"), float(density), bool(exact_tiling), bool(tets),
                              str(tetgen), bar.callback)
     out = Pieces(Piece(p["vertices"], p["faces"], p["cut"], p["cut_tag"], float(p["volume"]), tuple(p["centroid"]),
                        tuple(p["site"]), float(p["interior_area"]), p["neighbors"], int(p["parent"]),

@@ -20,7 +20,7 @@ namespace {
 
 py::tuple point_tuple(const Point3& p) { return py::make_tuple(p.x, p.y, p.z); }
 
-// The CLI's --sites / --impact / --site-noise: site_source "sampler", "mesh-vertices"
+// The CLI's --sites / --impact / --site-noise (sites=, impact=, site_noise=): site_source "sampler", "mesh-vertices"
 // or "points" (then `sites`, an (n, 3) array).
 SiteOptions site_options(const std::string& source, py::handle sites, std::optional<std::array<double, 3>> impact,
                          double impact_radius, double site_noise) {
@@ -38,14 +38,14 @@ SiteOptions site_options(const std::string& source, py::handle sites, std::optio
   }
   if (impact) {
     for (double c : *impact)
-      if (!std::isfinite(c)) throw py::value_error("--impact: coordinates must be finite");
-    if (!(impact_radius > 0 && impact_radius <= 1e300)) throw py::value_error("--impact needs --impact-radius R > 0");
+      if (!std::isfinite(c)) throw py::value_error("impact: coordinates must be finite");
+    if (!(impact_radius > 0 && impact_radius <= 1e300)) throw py::value_error("impact needs impact_radius > 0");
     if (s.source == SiteSource::points)
-      throw py::value_error("--impact chooses sampled sites or mesh-vertices, not --sites FILE");
+      throw py::value_error("impact chooses sampled sites or sites='mesh-vertices', not an array of sites");
     s.impact = Point3{(*impact)[0], (*impact)[1], (*impact)[2]};
   }
   s.impact_radius = impact_radius;
-  if (!(site_noise >= 0 && site_noise <= 10)) throw py::value_error("--site-noise: not in [0 - 10]");
+  if (!(site_noise >= 0 && site_noise <= 10)) throw py::value_error("site_noise: not in [0 - 10]");
   s.noise = site_noise;
   return s;
 }
@@ -78,11 +78,11 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
                   bool exact_tiling, bool tets, const std::string& tetgen, const py::object& progress) {
   const auto method = parse_sample_method(sampler);
   if (!method || *method == SampleMethod::surface)
-    throw py::value_error("--sampler must be rays, sdf or winding (a volume sampler)");
-  if (pieces < 1 || pieces > 100000) throw py::value_error("--pieces: " + std::to_string(pieces) + " not in [1 - 100000]");
+    throw py::value_error("sampler must be rays, sdf or winding (a volume sampler)");
+  if (pieces < 1 || pieces > 100000) throw py::value_error("pieces: " + std::to_string(pieces) + " not in [1 - 100000]");
   if (recurse_pieces < 1 || recurse_pieces > 10000)
-    throw py::value_error("--recurse-pieces: " + std::to_string(recurse_pieces) + " not in [1 - 10000]");
-  if (!(margin >= 0)) throw py::value_error("--margin: must be a non-negative number");
+    throw py::value_error("recurse_pieces: " + std::to_string(recurse_pieces) + " not in [1 - 10000]");
+  if (!(margin >= 0)) throw py::value_error("margin: must be a non-negative number");
   const TriangleMesh mesh = mesh_from_arrays(vertices, faces);
   FractureOptions o;
   o.pieces = pieces;
@@ -96,9 +96,9 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
   o.sites = site_options(site_source, sites, impact, impact_radius, site_noise);
   o.island_split = island_split;
   for (double c : cell_scale)
-    if (!(c >= 1e-6 && c <= 1e6)) throw py::value_error("--cell-scale: every factor must be in [1e-06 - 1e+06]");
+    if (!(c >= 1e-6 && c <= 1e6)) throw py::value_error("cell_scale: every factor must be in [1e-06 - 1e+06]");
   o.cell_scale = {cell_scale[0], cell_scale[1], cell_scale[2]};
-  if (!(density > 0 && density <= 1e300)) throw py::value_error("--density: must be a positive number");
+  if (!(density > 0 && density <= 1e300)) throw py::value_error("density: must be a positive number");
   o.exact_tiling = exact_tiling;
   if (!progress.is_none()) {
     // Called from the boolean workers, one at a time (fracture/cell_boolean.cpp).

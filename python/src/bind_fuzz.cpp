@@ -35,7 +35,7 @@ py::list families() {
 
 py::array_t<double> generate(const std::string& family, std::size_t n, std::uint64_t seed) {
   const fuzz::Family* f = fuzz::find_family(family);
-  if (!f) throw py::value_error("--family: unknown family '" + family + "' (see dtlab fuzz --list)");
+  if (!f) throw py::value_error("family: unknown family '" + family + "' (see dtlab fuzz --list)");
   std::vector<Point3> points;
   {
     py::gil_scoped_release nogil;
@@ -80,14 +80,14 @@ py::list peer_campaign(const std::string& target, const py::dict& functions, con
                        std::size_t cases, std::size_t min_points, std::size_t max_points, std::uint64_t seed,
                        const std::string& out_dir, bool shrink, std::size_t shrink_budget, double timeout,
                        double memory_mb, const py::object& progress) {
-  if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("--timeout: must be a number in [0.001, 1e6]");
-  if (!(memory_mb >= 0 && memory_mb <= 1e9)) throw py::value_error("--memory: must be a number in [0, 1e9]");
+  if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("timeout: must be a number in [0.001, 1e6]");
+  if (!(memory_mb >= 0 && memory_mb <= 1e9)) throw py::value_error("memory_mb: must be a number in [0, 1e9]");
   // The CLI's ranges (cli/cmd_fuzz.cpp): 10^12 points ended in std::bad_alloc.
-  for (auto [name, v] : {std::pair{"--points", max_points}, std::pair{"--min-points", min_points}})
+  for (auto [name, v] : {std::pair{"points", max_points}, std::pair{"min_points", min_points}})
     if (v < 1 || v > 10000000) throw py::value_error(std::string(name) + ": " + std::to_string(v) + " not in [1, 1e7]");
-  if (cases > 1000000000000ull) throw py::value_error("--cases: " + std::to_string(cases) + " not in [0, 1e12]");
+  if (cases > 1000000000000ull) throw py::value_error("cases: " + std::to_string(cases) + " not in [0, 1e12]");
   if (min_points > max_points)
-    throw py::value_error("--min-points " + std::to_string(min_points) + " is above --points " +
+    throw py::value_error("min_points " + std::to_string(min_points) + " is above points " +
                           std::to_string(max_points));
   const FunctionPeers function_peers(functions);
   if (!is_peer_name(target)) throw py::value_error("unknown peer '" + target + "' (see dtlab oracle --help)");
@@ -96,7 +96,7 @@ py::list peer_campaign(const std::string& target, const py::dict& functions, con
   try {
     o.sources = experiments::fuzz_family_sources(families);
   } catch (const std::invalid_argument& e) {
-    throw py::value_error(std::string("--family: ") + e.what() + " (see dtlab fuzz --list)");
+    throw py::value_error(std::string("families: ") + e.what() + " (see dtlab fuzz --list)");
   }
   o.cases = cases;
   o.min_points = min_points;

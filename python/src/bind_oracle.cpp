@@ -201,13 +201,13 @@ py::dict oracle(py::handle points, const std::vector<std::string>& against, cons
                 const py::dict& functions, const py::object& progress) {
   // The same kernel options as `dtlab oracle` (and tetrahedralize()).
   const KernelChoice k = kernel_choice(predicates, perturb, boundary, order, seed, eps, eps_mode);
-  if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("--timeout: must be a number in [0.001, 1e6]");
-  if (!(memory_mb >= 0 && memory_mb <= 1e9)) throw py::value_error("--memory: must be a number in [0, 1e9]");
+  if (!(timeout >= 0.001 && timeout <= 1e6)) throw py::value_error("timeout: must be a number in [0.001, 1e6]");
+  if (!(memory_mb >= 0 && memory_mb <= 1e9)) throw py::value_error("memory_mb: must be a number in [0, 1e9]");
   const FunctionPeers function_peers(functions);
   try {
     expand_peer_names(against);
   } catch (const std::invalid_argument& e) {
-    throw py::value_error(std::string("--against: ") + e.what());
+    throw py::value_error(std::string("against: ") + e.what());
   }
   const DoubleArray pts_array = point_array(points, "points");
   const std::span<const Point3> pts = points_of(pts_array);

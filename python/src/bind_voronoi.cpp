@@ -24,18 +24,18 @@ py::dict voronoi(py::handle points, std::optional<std::vector<double>> box, doub
   o.margin = margin;
   o.threads = threads;
   if (predicates != "naive" && predicates != "epsilon" && predicates != "adaptive" && predicates != "exact")
-    throw py::value_error("--predicates: " + predicates + " not in {naive,epsilon,adaptive,exact}");
+    throw py::value_error("predicates: " + predicates + " not in {naive,epsilon,adaptive,exact}");
   o.predicates.backend = predicates;
   if (box) {
     const auto& b = *box;
     if (b.size() != 6 || !(b[0] < b[3] && b[1] < b[4] && b[2] < b[5]))
-      throw py::value_error("--box needs xmin ymin zmin xmax ymax zmax with min < max");
+      throw py::value_error("box needs xmin ymin zmin xmax ymax zmax with min < max");
     o.box = vor::Box{{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
   }
-  if (!(margin >= 0)) throw py::value_error("--margin must be non-negative");
+  if (!(margin >= 0)) throw py::value_error("margin must be non-negative");
   const auto sites = points_of(pts);
   // The CLI's ranges (voronoi/voronoi_range.hpp): cells right in doubles, or refused.
-  if (const auto refusal = voronoi_refusal(sites, o.box, margin)) throw py::value_error(refusal->reason);
+  if (const auto refusal = voronoi_refusal(sites, o.box, margin, {.box = "box", .margin = "margin"})) throw py::value_error(refusal->reason);
   auto vd = std::make_shared<VoronoiDiagram>();
   std::optional<Progress> listener = python_progress(py::none());  // Ctrl-C during the Delaunay build
   {

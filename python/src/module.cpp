@@ -3,20 +3,23 @@
 #include "kernel/input_error.hpp"
 #include "options/option_error.hpp"
 #include "python/src/bindings.hpp"
+#include "python/src/parameter_name.hpp"
 
 namespace py = pybind11;
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "dtlab's C++ core (use the `dtlab` package, not this module).";
-  // Bad input is a ValueError carrying the CLI's message: a file's "file:line: reason",
-  // an option's "--name: reason".
+  // Bad input is a ValueError: a file's "file:line: reason" as the CLI prints it, a bad
+  // option value as "name: reason" with the Python parameter's name (the CLI's
+  // "--eps-mode" is eps_mode=).
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const dtlab::InputError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const dtlab::OptionError& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      const std::string message = dtlab::python::parameter_name(e.option()) + ": " + e.reason();
+      PyErr_SetString(PyExc_ValueError, message.c_str());
     }
   });
   m.attr("__version__") = "0.1.0";

@@ -36,12 +36,21 @@ py::array integer_array(py::handle obj, const char* what) {
   return a;
 }
 
-void check_index(std::int64_t v, std::size_t limit, const char* what, std::size_t row, std::size_t col, bool matrix) {
+// The bits of an unsigned integer array, 0 for a signed one: a subtraction that went
+// below 0 wraps there (numpy's uint32 tets - 100 holds 4294967237), which the message says.
+int unsigned_bits(const py::array& a) {
+  return a.dtype().kind() == 'u' ? static_cast<int>(8 * a.dtype().itemsize()) : 0;
+}
+
+void check_index(std::int64_t v, std::size_t limit, const char* what, std::size_t row, std::size_t col, bool matrix,
+                 int unsigned_width) {
   if (v < 0 || static_cast<std::uint64_t>(v) >= limit) {
     std::ostringstream o;
     o << what << '[' << row;
     if (matrix) o << ", " << col;
     o << "]: vertex index " << v << " out of range (" << limit << " points)";
+    if (unsigned_width >= 8 && unsigned_width <= 32 && static_cast<std::uint64_t>(v) >= (1ull << (unsigned_width - 1)))
+      o << " (a uint" << unsigned_width << " array: " << (v - (std::int64_t{1} << unsigned_width)) << " wrapped around)";
     throw py::value_error(o.str());
   }
 }
@@ -86,11 +95,12 @@ std::vector<std::array<std::uint32_t, K>> index_rows(py::handle obj, std::size_t
   if (!a) throw py::error_already_set();
   const std::int64_t* d = a.data();
   const std::size_t m = static_cast<std::size_t>(a.shape(0));
+  const int width = unsigned_bits(raw);
   std::vector<std::array<std::uint32_t, K>> rows(m);
   for (std::size_t i = 0; i < m; ++i)
     for (std::size_t k = 0; k < K; ++k) {
       const std::int64_t v = d[i * K + k];
-      check_index(v, limit, what, i, k, true);
+      check_index(v, limit, what, i, k, true, width);
       rows[i][k] = static_cast<std::uint32_t>(v);
     }
   return rows;
@@ -106,9 +116,10 @@ std::vector<std::uint32_t> index_list(py::handle obj, std::size_t limit, const c
   using I64 = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
   const I64 a = I64::ensure(raw);
   if (!a) throw py::error_already_set();
+  const int width = unsigned_bits(raw);
   std::vector<std::uint32_t> out(static_cast<std::size_t>(a.size()));
   for (std::size_t i = 0; i < out.size(); ++i) {
-    check_index(a.data()[i], limit, what, i, 0, false);
+    check_index(a.data()[i], limit, what, i, 0, false, width);
     out[i] = static_cast<std::uint32_t>(a.data()[i]);
   }
   return out;

@@ -281,7 +281,7 @@ def test_campaign_bad_arguments():
         dtlab.fuzz.campaign(scipy_fn, families=["no_such_family"], cases=1)
     with pytest.raises(ValueError, match="unknown peer"):
         dtlab.fuzz.campaign("no-such-peer", cases=1)
-    with pytest.raises(ValueError, match="min-points"):
+    with pytest.raises(ValueError, match="^min_points 20 is above points 10"):
         dtlab.fuzz.campaign(scipy_fn, cases=1, points=10, min_points=20)
 
 
