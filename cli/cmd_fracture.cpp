@@ -141,9 +141,9 @@ OutputSet fracture_output_set(const FractureArgs& a, std::size_t pieces) {
   set.keep = a.mesh;  // DIR/repaired.off or DIR/pieces.obj may be the input mesh
   set.written = {a.out + "/pieces.obj", a.out + "/exploded.obj", a.out + "/pieces.mtl", a.out + "/manifest.json",
                  a.out + "/adjacency.txt"};
-  for (auto [on, name] : {std::pair{a.repair, "/repaired.off"}, std::pair{a.vtu, "/pieces.vtu"},
-                          std::pair{a.surfaces, "/surfaces.vtu"}, std::pair{a.gltf, "/pieces.gltf"},
-                          std::pair{a.tets, "/tets.vtu"}})
+  for (auto [on, name] :
+       {std::pair{a.repair, "/repaired.off"}, std::pair{a.vtu, "/pieces.vtu"}, std::pair{a.surfaces, "/surfaces.vtu"},
+        std::pair{a.gltf, "/pieces.gltf"}, std::pair{a.tets, "/tets.vtu"}})
     (on ? set.written : set.others).push_back(a.out + name);
   std::unordered_set<std::string> split;
   if (a.split)

@@ -50,8 +50,7 @@ std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, in
   std::string node = "written";
   // The old set goes first, every member of it (cli/old_outputs.hpp); an input .node that
   // is the output stays.
-  const std::vector<std::string> text{a.out + ".node", a.out + ".ele"},
-      npy{a.out + ".points.npy", a.out + ".tets.npy"};
+  const std::vector<std::string> text{a.out + ".node", a.out + ".ele"}, npy{a.out + ".points.npy", a.out + ".tets.npy"};
   OutputSet set{a.format == "npy" ? npy : text, a.format == "npy" ? text : npy, a.input};
   (a.vtu ? set.written : set.others).push_back(a.out + ".vtu");
   remove_old_outputs(set, false);

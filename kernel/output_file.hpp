@@ -31,8 +31,7 @@ namespace dtlab {
 // this run writes and those it does not (an old .vtu beside a new .node/.ele would be a
 // stale member too). Paths that are not regular files (a device, a FIFO), are missing
 // or are `keep` (the same file) are left alone. Returns the paths removed.
-inline std::vector<std::string> remove_output_set(const std::vector<std::string>& paths,
-                                                  const std::string& keep = "") {
+inline std::vector<std::string> remove_output_set(const std::vector<std::string>& paths, const std::string& keep = "") {
   struct stat kept {};
   const bool has_keep = !keep.empty() && stat(keep.c_str(), &kept) == 0;
   std::vector<std::string> removed;

@@ -79,7 +79,8 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
   const auto method = parse_sample_method(sampler);
   if (!method || *method == SampleMethod::surface)
     throw py::value_error("sampler must be rays, sdf or winding (a volume sampler)");
-  if (pieces < 1 || pieces > 100000) throw py::value_error("pieces: " + std::to_string(pieces) + " not in [1 - 100000]");
+  if (pieces < 1 || pieces > 100000)
+    throw py::value_error("pieces: " + std::to_string(pieces) + " not in [1 - 100000]");
   if (recurse_pieces < 1 || recurse_pieces > 10000)
     throw py::value_error("recurse_pieces: " + std::to_string(recurse_pieces) + " not in [1 - 10000]");
   if (!(margin >= 0)) throw py::value_error("margin: must be a non-negative number");

@@ -28,9 +28,9 @@ py::dict sample(py::handle vertices, py::handle faces, std::size_t count, const 
                 std::uint64_t seed, bool blue_noise, double blue_noise_ratio) {
   const auto m = parse_sample_method(method);
   if (!m) throw py::value_error("method: expected surface, rays, sdf or winding, got '" + method + "'");
-  if (count < 1 || count > (1ul << 30)) throw py::value_error("n: " + std::to_string(count) + " not in [1 - 1073741824]");
-  if (!(blue_noise_ratio >= 1 && blue_noise_ratio <= 100))
-    throw py::value_error("blue_noise_ratio: not in [1 - 100]");
+  if (count < 1 || count > (1ul << 30))
+    throw py::value_error("n: " + std::to_string(count) + " not in [1 - 1073741824]");
+  if (!(blue_noise_ratio >= 1 && blue_noise_ratio <= 100)) throw py::value_error("blue_noise_ratio: not in [1 - 100]");
   const TriangleMesh mesh = mesh_from_arrays(vertices, faces);
   SampleRequest req;
   req.method = *m;

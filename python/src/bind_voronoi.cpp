@@ -35,7 +35,8 @@ py::dict voronoi(py::handle points, std::optional<std::vector<double>> box, doub
   if (!(margin >= 0)) throw py::value_error("margin must be non-negative");
   const auto sites = points_of(pts);
   // The CLI's ranges (voronoi/voronoi_range.hpp): cells right in doubles, or refused.
-  if (const auto refusal = voronoi_refusal(sites, o.box, margin, {.box = "box", .margin = "margin"})) throw py::value_error(refusal->reason);
+  if (const auto refusal = voronoi_refusal(sites, o.box, margin, {.box = "box", .margin = "margin"}))
+    throw py::value_error(refusal->reason);
   auto vd = std::make_shared<VoronoiDiagram>();
   std::optional<Progress> listener = python_progress(py::none());  // Ctrl-C during the Delaunay build
   {

@@ -50,7 +50,8 @@ void check_index(std::int64_t v, std::size_t limit, const char* what, std::size_
     if (matrix) o << ", " << col;
     o << "]: vertex index " << v << " out of range (" << limit << " points)";
     if (unsigned_width >= 8 && unsigned_width <= 32 && static_cast<std::uint64_t>(v) >= (1ull << (unsigned_width - 1)))
-      o << " (a uint" << unsigned_width << " array: " << (v - (std::int64_t{1} << unsigned_width)) << " wrapped around)";
+      o << " (a uint" << unsigned_width << " array: " << (v - (std::int64_t{1} << unsigned_width))
+        << " wrapped around)";
     throw py::value_error(o.str());
   }
 }
