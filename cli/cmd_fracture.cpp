@@ -136,9 +136,17 @@ nlohmann::json options_json(const FractureArgs& a) {
 // The files of DIR a fracture run writes, and those of the other options (an earlier
 // run's): all removed before the first new one, so that DIR never holds a manifest of one
 // run beside pieces of another (cli/old_outputs.hpp). The input mesh is never removed.
+// The input files: the mesh and a --sites FILE.
+std::vector<std::string> fracture_inputs(const FractureArgs& a) {
+  std::vector<std::string> in;
+  if (a.mesh != "builtin") in.push_back(a.mesh);
+  if (!a.sites.empty() && a.sites != "mesh-vertices") in.push_back(a.sites);
+  return in;
+}
+
 OutputSet fracture_output_set(const FractureArgs& a, std::size_t pieces) {
   OutputSet set;
-  set.keep = a.mesh;  // DIR/repaired.off or DIR/pieces.obj may be the input mesh
+  set.inputs = fracture_inputs(a);  // DIR/pieces.obj, a split piece may be the mesh or the sites
   set.written = {a.out + "/pieces.obj", a.out + "/exploded.obj", a.out + "/pieces.mtl", a.out + "/manifest.json",
                  a.out + "/adjacency.txt"};
   for (auto [on, name] :
@@ -204,6 +212,17 @@ int run_fracture(const FractureArgs& a) {
   const auto method = parse_sample_method(a.sampler);
   if (!method || *method == SampleMethod::surface)
     throw UsageError("--sampler must be rays, sdf or winding (a volume sampler)");
+  // Before the booleans: DIR usable, no output over an input (the pieces' count is not
+  // known yet: with --split every existing piece file counts as an output).
+  std::vector<std::string> outputs;
+  if (!a.out.empty()) {
+    check_out_folder(a.out);
+    outputs = fracture_output_set(a, 0).written;
+    if (a.split)
+      for (std::string& piece : piece_files_in(a.out + "/pieces")) outputs.push_back(std::move(piece));
+  }
+  if (!a.png.empty()) outputs.push_back(a.png);
+  refuse_overwriting_inputs(outputs, fracture_inputs(a));
   Progress progress("fracture", a.quiet);
   const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
   FractureOptions o = fracture_options(a, *method);
@@ -217,6 +236,11 @@ int run_fracture(const FractureArgs& a) {
     throw InputError(a.mesh, 0, e.what());
   } catch (const std::runtime_error& e) {  // a named failure of a boolean (time budget)
     std::fprintf(stderr, "dtlab fracture: %s: %s\n", a.mesh.c_str(), e.what());
+    return kDefect;
+  }
+  if (r.pieces.empty()) {  // e.g. a gap wider than every cell: nothing of the mesh is left
+    std::fprintf(stderr, "dtlab fracture: %s: no piece is left (--gap %g removes every cell's part of the mesh)\n",
+                 a.mesh.c_str(), a.gap);
     return kDefect;
   }
   nlohmann::json m = fracture_manifest(r, a.density);
@@ -322,7 +346,8 @@ void add_fracture_command(CLI::App& app, int& rc) {
       ->capture_default_str();
   sub->add_option("--png", args->png, "draw the exploded view (--explode) to this PNG file")->type_name("FILE");
   sub->add_option("--out", args->out, "output folder (pieces.obj, exploded.obj, manifest.json, adjacency.txt)")
-      ->type_name("DIR");
+      ->type_name("DIR")
+      ->check(non_empty_path);
   sub->add_flag("--json", args->json, "print the manifest on stdout");
   sub->add_flag("--quiet", args->quiet, "no progress lines on stderr");
   sub->callback([args, &rc] { rc = run_fracture(*args); });

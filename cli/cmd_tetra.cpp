@@ -44,16 +44,30 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The set of PREFIX: .node/.ele or the .npy pair, and .vtu (cli/old_outputs.hpp).
+OutputSet tetra_output_set(const TetraArgs& a) {
+  const std::vector<std::string> text{a.out + ".node", a.out + ".ele"}, npy{a.out + ".points.npy", a.out + ".tets.npy"};
+  OutputSet set{a.format == "npy" ? npy : text, a.format == "npy" ? text : npy, {a.input}};
+  (a.vtu ? set.written : set.others).push_back(a.out + ".vtu");
+  return set;
+}
+
+// Before the build: no output replaces the input, except a 0-based input .node that is
+// PREFIX.node (it already is the output's .node: kept, kernel/node_reuse.hpp).
+void refuse_output_over_input(const TetraArgs& a, int first_index) {
+  if (a.out.empty()) return;
+  const bool node_reused = a.format != "npy" && a.input.ends_with(".node") && first_index == 0;
+  std::vector<std::string> outputs;
+  for (const std::string& p : tetra_output_set(a).written)
+    if (!(node_reused && p == a.out + ".node")) outputs.push_back(p);
+  refuse_overwriting_inputs(outputs, {a.input});
+}
+
 // The output files; returns what became of PREFIX.node (written, copied, kept).
 std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, int first_index) {
   const unsigned threads = a.kernel.threads;
   std::string node = "written";
-  // The old set goes first, every member of it (cli/old_outputs.hpp); an input .node that
-  // is the output stays.
-  const std::vector<std::string> text{a.out + ".node", a.out + ".ele"}, npy{a.out + ".points.npy", a.out + ".tets.npy"};
-  OutputSet set{a.format == "npy" ? npy : text, a.format == "npy" ? text : npy, a.input};
-  (a.vtu ? set.written : set.others).push_back(a.out + ".vtu");
-  remove_old_outputs(set, false);
+  remove_old_outputs(tetra_output_set(a), false);  // the old set first; the input stays
   if (a.format == "npy") {
     write_npy(a.out, mesh);
     node = "none";
@@ -71,7 +85,9 @@ std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, in
 int run_tetra(const TetraArgs& a) {
   const BuildOptions options = a.kernel.build_options();
   const auto start = std::chrono::steady_clock::now();
+  if (!a.out.empty()) check_out_prefix(a.out);
   PointFile in = read_input_points(a.input);
+  refuse_output_over_input(a, in.first_index);
   const double read_seconds = seconds_since(start);
   const auto build_start = std::chrono::steady_clock::now();
   BuildResult r = build_delaunay(std::move(in.points), a.kernel.predicate_spec(), options);
@@ -129,7 +145,9 @@ void add_tetra_command(CLI::App& app, int& rc) {
   CLI::App* sub = app.add_subcommand("tetra", "Delaunay tetrahedralization of a point file (.node .xyz) or of a mesh file's vertices (.off .obj .ply .stl)");
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
   CLI::Option* out =
-      sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)")->type_name("PREFIX");
+      sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)")
+          ->type_name("PREFIX")
+          ->check(non_empty_path);
   sub->add_option("--format", args->format,
                   "node: PREFIX.node/.ele (a 0-based input .node is copied, not rewritten); npy: PREFIX.points.npy "
                   "and PREFIX.tets.npy (NumPy, dtlab's orientation)")

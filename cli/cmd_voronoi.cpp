@@ -87,10 +87,27 @@ std::size_t check_cells(const VoronoiDiagram& vd, nlohmann::json& m) {
   return defects;
 }
 
+// The set of PREFIX: .obj (unless --no-obj), .json, .vtu, .tets.vtu (cli/old_outputs.hpp).
+OutputSet voronoi_output_set(const VoronoiArgs& a) {
+  OutputSet set{{a.out + ".json"}, {}, {a.input}};
+  for (auto [on, suffix] : {std::pair{!a.no_obj, ".obj"}, std::pair{a.vtu, ".vtu"}, std::pair{a.tets, ".tets.vtu"}})
+    (on ? set.written : set.others).push_back(a.out + suffix);
+  return set;
+}
+
+// Every file the run writes: the set and --png.
+std::vector<std::string> voronoi_outputs(const VoronoiArgs& a) {
+  std::vector<std::string> files = a.out.empty() ? std::vector<std::string>{} : voronoi_output_set(a).written;
+  if (!a.png.empty()) files.push_back(a.png);
+  return files;
+}
+
 int run_voronoi(const VoronoiArgs& a) {
   const bool obj = !a.no_obj;
   if (a.vtu_format_option->count() > 0 && !a.vtu && !a.tets) throw UsageError("--vtu-format needs --vtu or --tets");
   a.defined.register_all();  // before the cells: a bad definition ends the run at once
+  if (!a.out.empty()) check_out_prefix(a.out);
+  refuse_overwriting_inputs(voronoi_outputs(a), {a.input});  // before the cells
   PointFile in = read_input_points(a.input);
   if (in.points.empty()) throw InputError(a.input, 0, "no points");
   VoronoiOptions o;
@@ -141,10 +158,7 @@ int run_voronoi(const VoronoiArgs& a) {
     }
   }
   if (!a.out.empty()) {
-    OutputSet set{{a.out + ".json"}, {}, a.input};  // the old set first (cli/old_outputs.hpp), never the input
-    for (auto [on, suffix] : {std::pair{obj, ".obj"}, std::pair{a.vtu, ".vtu"}, std::pair{a.tets, ".tets.vtu"}})
-      (on ? set.written : set.others).push_back(a.out + suffix);
-    remove_old_outputs(set, a.quiet);
+    remove_old_outputs(voronoi_output_set(a), a.quiet);  // the old set first, never the input
     if (obj) write_cells_obj(a.out + ".obj", vd);
     if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
     if (a.tets) write_cells_tets_vtu(a.out + ".tets.vtu", vd, parse_vtu_format(a.vtu_format));
@@ -184,7 +198,8 @@ void add_voronoi_command(CLI::App& app, int& rc) {
   CLI::App* sub = app.add_subcommand("voronoi", "Voronoi cells of a point file, clipped to a box");
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
   CLI::Option* out = sub->add_option("--out", args->out, "write PREFIX.obj (a group per cell), PREFIX.json (manifest)")
-                         ->type_name("PREFIX");
+                         ->type_name("PREFIX")
+                         ->check(non_empty_path);
   sub->add_option("--box", args->box,
                   "clip box: xmin ymin zmin xmax ymax zmax (default: bounding box grown by --margin)")
       ->expected(6)

@@ -1,11 +1,18 @@
 #pragma once
-// The old set of a command's outputs removed before the new one is written
-// (kernel/output_file.hpp, remove_output_set), with a note on stderr for each old file
-// that this run does not write again: it is gone, not left stale beside the new set.
+// A command's outputs as one set (kernel/output_file.hpp, remove_output_set): before
+// anything is computed, no output may be one of the run's input files (the run would
+// replace what it reads: `voronoi S.obj --out S`, `fracture DIR/pieces.obj --out DIR`,
+// `--png` onto the input); before the first new file, the old members of the set go,
+// with a note on stderr for each old file that this run does not write again (it is gone,
+// not left stale beside the new set); inputs are never removed.
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "cli/cli_error.hpp"
+#include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 
 namespace dtlab::cli {
@@ -13,14 +20,39 @@ namespace dtlab::cli {
 struct OutputSet {
   std::vector<std::string> written;  // what this run writes
   std::vector<std::string> others;   // the set's other members (older runs' options)
-  std::string keep;                  // a file to keep even when it is a member (the input)
+  std::vector<std::string> inputs;   // the run's input files: never written, never removed
 };
+
+// Exit 2 (InputError naming the output) when an output path is an existing input file
+// (the same file through any path or link) or when two outputs are one path (`--png`
+// onto a member of `--out`'s set).
+inline void refuse_overwriting_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const std::string& out = outputs[i];
+    struct stat o {};
+    if (out.empty() || stat(out.c_str(), &o) != 0) {
+      for (std::size_t j = 0; j < i; ++j)
+        if (outputs[j] == out && !out.empty()) throw InputError(out, 0, "written twice by this run (two options name it)");
+      continue;
+    }
+    for (const std::string& in : inputs) {
+      struct stat s {};
+      if (!in.empty() && stat(in.c_str(), &s) == 0 && same_file(o, s))
+        throw InputError(out, 0, "is the input file " + in + ": the run would replace what it reads (choose another output)");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      struct stat e {};
+      if (stat(outputs[j].c_str(), &e) == 0 && same_file(o, e))
+        throw InputError(out, 0, "written twice by this run (two options name it)");
+    }
+  }
+}
 
 inline void remove_old_outputs(const OutputSet& set, bool quiet) {
   std::vector<std::string> all = set.written;
   all.insert(all.end(), set.others.begin(), set.others.end());
   std::vector<std::string> gone;
-  for (const std::string& p : remove_output_set(all, set.keep))
+  for (const std::string& p : remove_output_set(all, set.inputs))
     for (const std::string& o : set.others)
       if (p == o) gone.push_back(p);
   if (quiet || gone.empty()) return;
@@ -29,6 +61,24 @@ inline void remove_old_outputs(const OutputSet& set, bool quiet) {
   else
     std::fprintf(stderr, "note: removed %zu files of an earlier run that this run does not write (%s, ...)\n",
                  gone.size(), gone[0].c_str());
+}
+
+// CLI11's check of --out: an empty path names no file ("" would mean "no --out").
+inline std::string non_empty_path(const std::string& path) { return path.empty() ? "an empty path names no file" : ""; }
+
+// --out PREFIX (tetra, voronoi): a prefix of file names, so neither empty, nor ending in
+// '/', nor an existing folder (`--out d/` wrote hidden files d/.node and d/.ele).
+inline void check_out_prefix(const std::string& prefix) {
+  struct stat st {};
+  if (prefix.empty() || prefix.back() == '/' || (stat(prefix.c_str(), &st) == 0 && S_ISDIR(st.st_mode)))
+    throw UsageError("--out '" + prefix + "': expected a file prefix (PREFIX.node, ...), not a folder");
+}
+
+// --out DIR (fracture): a folder, or a path where one can be made.
+inline void check_out_folder(const std::string& dir) {
+  struct stat st {};
+  if (dir.empty()) throw UsageError("--out '': expected a folder");
+  if (stat(dir.c_str(), &st) == 0 && !S_ISDIR(st.st_mode)) throw InputError(dir, 0, "--out: exists and is not a folder");
 }
 
 }  // namespace dtlab::cli

@@ -54,7 +54,10 @@ std::vector<std::string> piece_files_in(const std::string& dir) {
     constexpr std::string_view head = "piece_", tail = ".obj";
     if (name.size() <= head.size() + tail.size() || !name.starts_with(head) || !name.ends_with(tail)) continue;
     const std::string_view digits = std::string_view(name).substr(head.size(), name.size() - head.size() - tail.size());
-    if (std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }) && e.is_regular_file(ec))
+    // Only names piece_file_name gives (piece_12.obj or piece_00012.obj are someone else's).
+    if (digits.size() > 18 || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      continue;
+    if (name == piece_file_name(std::stoull(std::string(digits))) && e.is_regular_file(ec))
       paths.push_back(e.path().string());
   }
   std::sort(paths.begin(), paths.end());

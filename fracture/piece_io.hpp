@@ -23,8 +23,8 @@ void write_pieces_mtl(const std::string& path);
 std::vector<std::string> write_piece_files(const std::string& dir, const FractureResult& r);
 // "piece_0007.obj": the name of piece i's file in the --split folder.
 std::string piece_file_name(std::size_t i);
-// The piece files in DIR that a --split run may have written (piece_ and digits .obj,
-// regular files), as paths: an earlier run's set, removed before a new one is written.
+// The piece files in DIR that a --split run may have written (regular files named as
+// piece_file_name names them), as paths: an earlier run's set, removed before a new one is written.
 std::vector<std::string> piece_files_in(const std::string& dir);
 // Every piece as one VTK_POLYHEDRON cell (its triangles as faces) with cell data
 // `piece`, `site` (the site's index among its level's sites), `parent` (-1 at the top

@@ -30,16 +30,24 @@ namespace dtlab {
 // meets a missing member, never a stale one). `paths` are all the set's members, those
 // this run writes and those it does not (an old .vtu beside a new .node/.ele would be a
 // stale member too). Paths that are not regular files (a device, a FIFO), are missing
-// or are `keep` (the same file) are left alone. Returns the paths removed.
-inline std::vector<std::string> remove_output_set(const std::vector<std::string>& paths, const std::string& keep = "") {
-  struct stat kept {};
-  const bool has_keep = !keep.empty() && stat(keep.c_str(), &kept) == 0;
+// or are one of `keep` (the same file: the run's inputs) are left alone. Returns the
+// paths removed.
+inline bool same_file(const struct stat& a, const struct stat& b) { return a.st_dev == b.st_dev && a.st_ino == b.st_ino; }
+
+inline std::vector<std::string> remove_output_set(const std::vector<std::string>& paths,
+                                                  const std::vector<std::string>& keep = {}) {
+  std::vector<struct stat> kept;
+  for (const std::string& k : keep) {
+    struct stat st {};
+    if (!k.empty() && stat(k.c_str(), &st) == 0) kept.push_back(st);
+  }
   std::vector<std::string> removed;
   for (const std::string& p : paths) {
     struct stat st {};
     if (p.empty() || stat(p.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
-    if (has_keep && st.st_dev == kept.st_dev && st.st_ino == kept.st_ino) continue;
-    if (::unlink(p.c_str()) == 0) removed.push_back(p);
+    bool is_kept = false;
+    for (const struct stat& k : kept) is_kept = is_kept || same_file(st, k);
+    if (!is_kept && ::unlink(p.c_str()) == 0) removed.push_back(p);
   }
   return removed;
 }

@@ -52,5 +52,48 @@ expect 0 "fracture DIR/repaired.off --out DIR (no --repair)" -- "$dtlab" fractur
   --out "$tmp/g" --quiet
 ok "the input repaired.off is kept" cmp -s "$tmp/r.off" "$tmp/g/repaired.off"
 
+# No output may replace an input (exit 2 before anything is computed), nor two outputs be one file.
+head -300 "$tmp/p.xyz" | sed 's/^/v /' >"$tmp/S.obj"; echo "f 1 2 3" >>"$tmp/S.obj"; cp "$tmp/S.obj" "$tmp/S0.obj"
+expect 2 "voronoi S.obj --out S" -- "$dtlab" voronoi "$tmp/S.obj" --out "$tmp/S"
+says "named" "S.obj:0: is the input file"
+ok "S.obj untouched" cmp -s "$tmp/S.obj" "$tmp/S0.obj"
+cp "$tmp/p.xyz" "$tmp/p0.xyz"
+expect 2 "voronoi --png onto the input" -- "$dtlab" voronoi "$tmp/p.xyz" --png "$tmp/p.xyz"
+ok "the input untouched" cmp -s "$tmp/p.xyz" "$tmp/p0.xyz"
+expect 2 "voronoi --png onto the set's .json" -- "$dtlab" voronoi "$tmp/p.xyz" --out "$tmp/w" --png "$tmp/w.json"
+says "named" "w.json:0: written twice"
+/usr/bin/python3 -c "
+import random
+random.seed(1)
+print('50 3 2 1')
+for i in range(50): print(i + 1, random.random(), random.random(), random.random(), 7.5, 8.5, 1)
+" >"$tmp/A.node"
+cp "$tmp/A.node" "$tmp/A0.node"
+expect 2 "tetra A.node --out A (1-based, with attributes: not the output's .node)" -- "$dtlab" tetra "$tmp/A.node" --out "$tmp/A"
+ok "A.node untouched" cmp -s "$tmp/A.node" "$tmp/A0.node"
+mkdir "$tmp/folder"
+expect 2 "tetra --out FOLDER" -- "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/folder"
+expect 2 "tetra --out PREFIX/" -- "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/x/"
+expect 2 "voronoi --out ''" -- "$dtlab" voronoi "$tmp/p.xyz" --out ""
+touch "$tmp/afile"
+expect 2 "fracture --out FILE" -- "$dtlab" fracture builtin --pieces 3 --out "$tmp/afile"
+says "named" "afile:0: --out: exists and is not a folder"
+expect 0 "fracture 1 piece" -- "$dtlab" fracture builtin --pieces 1 --out "$tmp/h" --quiet
+cp "$tmp/h/pieces.obj" "$tmp/h0.obj"
+expect 2 "fracture DIR/pieces.obj --out DIR" -- "$dtlab" fracture "$tmp/h/pieces.obj" --pieces 3 --out "$tmp/h"
+ok "the input mesh untouched" cmp -s "$tmp/h/pieces.obj" "$tmp/h0.obj"
+expect 0 "fracture --split" -- "$dtlab" fracture builtin --pieces 4 --out "$tmp/k" --split --quiet
+touch "$tmp/k/pieces/piece_12.obj"  # not a name dtlab writes: stays
+expect 0 "fracture --sites DIR/pieces/piece_0002.obj --out DIR (no --split)" -- "$dtlab" fracture builtin \
+  --sites "$tmp/k/pieces/piece_0002.obj" --out "$tmp/k" --quiet
+ok "the sites file is kept, the other piece files go" \
+  test -f "$tmp/k/pieces/piece_0002.obj" -a ! -e "$tmp/k/pieces/piece_0001.obj" -a -f "$tmp/k/pieces/piece_12.obj"
+expect 2 "fracture --sites DIR/pieces/piece_0002.obj --out DIR --split" -- "$dtlab" fracture builtin \
+  --sites "$tmp/k/pieces/piece_0002.obj" --out "$tmp/k" --split --quiet
+printf 'OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n' >"$tmp/cube.off"
+expect 1 "fracture with a gap that leaves no piece" -- "$dtlab" fracture "$tmp/cube.off" --gap 1 --out "$tmp/gq" --quiet
+says "named" "no piece is left"
+ok "nothing written" test ! -e "$tmp/gq/manifest.json"
+
 echo "output_sets: $pass passed, $fails failed"
 [ "$fails" -eq 0 ]
