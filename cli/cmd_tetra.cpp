@@ -14,6 +14,7 @@
 #include "cli/input_points.hpp"
 #include "cli/old_outputs.hpp"
 #include "cli/tetra_report.hpp"
+#include "fuzz/outcome.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/node_reuse.hpp"
 #include "kernel/npy_writer.hpp"
@@ -93,7 +94,14 @@ int run_tetra(const TetraArgs& a) {
   BuildResult r = build_delaunay(std::move(in.points), a.kernel.predicate_spec(), options);
   const double build_seconds = seconds_since(build_start);  // the whole call: order, build, compaction
   // No 3D triangulation (fewer than 4 points, all coplanar): bad input, exit 2.
-  if (r.failure && r.failure->kind == FailureKind::lower_dimensional) throw InputError(a.input, 0, r.failure->detail);
+  // With a non-robust backend that verdict may be the backend's error: bad input only
+  // when exact predicates agree (fuzz/outcome.hpp), else a named failure (exit 1).
+  if (r.failure && r.failure->kind == FailureKind::lower_dimensional) {
+    if (robust_backend(a.kernel.predicates) || fuzz::is_lower_dimensional(r.mesh.points))
+      throw InputError(a.input, 0, r.failure->detail);
+    r.failure->detail += " by the " + a.kernel.predicates +
+                         " predicates, but exact predicates find four affinely independent points";
+  }
   const auto write_start = std::chrono::steady_clock::now();
   const std::string node = a.out.empty() ? "" : write_outputs(a, r.mesh, in.first_index);
   const double write_seconds = seconds_since(write_start);

@@ -78,5 +78,19 @@ for f in cgal-dual-far_translate-n51-0 cgal-dual-kettner_grid-n44-0; do
   says "voronoi --check $f says the ulp floor applied" "ulp floor"
 done
 
+# A non-robust backend's "lower-dimensional" is bad input only when exact predicates agree:
+# subnormal coordinates (naive: "all points are collinear") are a named failure, exit 1.
+/usr/bin/python3 -c "
+import random
+random.seed(2)
+for i in range(200): print(*(repr(random.random() * 1e-310) for _ in range(3)))
+" >"$tmp/subnormal.xyz"
+expect 1 "tetra --predicates naive on subnormal points: a failure of the backend" -- "$dtlab" tetra \
+  "$tmp/subnormal.xyz" --predicates naive --perturb none
+says "named" "lower-dimensional.*by the naive predicates, but exact predicates find four affinely independent points"
+expect 0 "the same points with adaptive" -- "$dtlab" tetra "$tmp/subnormal.xyz"
+printf '0 0 0\n1 0 0\n2 0 0\n3 0 0\n' >"$tmp/collinear.xyz"
+expect 2 "truly collinear points with naive: bad input" -- "$dtlab" tetra "$tmp/collinear.xyz" --predicates naive
+
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]
