@@ -108,6 +108,15 @@ Level fracture_once(const MeshClipper& clipper, const FractureOptions& o, const 
     if (!g.mesh.triangles.empty()) ++(g.boolean_skipped ? level.skipped : level.booleans);
   level.pieces = level_islands(std::move(geometry), sites, o.island_split);
   for (auto& p : level.pieces) measure_piece(p);
+  std::vector<char> has_piece(sites.size(), 0);
+  for (const auto& p : level.pieces)
+    if (p.site_index >= 0) has_piece[static_cast<std::size_t>(p.site_index)] = 1;
+  timing.sites += sites.size();
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    if (cells.diagram.cells[i].duplicate_of >= 0)
+      ++timing.duplicate_sites;
+    else if (!has_piece[i])
+      ++timing.sites_without_piece;
   return level;
 }
 }  // namespace

@@ -53,6 +53,9 @@ struct FractureResult {
   double mesh_volume = 0;
   std::vector<Piece> pieces;
   std::size_t booleans = 0, skipped = 0;
+  // Every site of every level is accounted for: it gave pieces, repeats an earlier site of
+  // its level (its cell is empty: one piece for the two), or its cell misses the mesh.
+  std::size_t sites = 0, duplicate_sites = 0, sites_without_piece = 0;
   double seconds_sampling = 0, seconds_voronoi = 0, seconds_boolean = 0;
   // The exact tiling, at every level: the pieces' exact volumes as the corefinement
   // built them (before rounding to doubles) sum to their solid's exact volume.

@@ -245,6 +245,7 @@ nlohmann::json fracture_manifest(const FractureResult& r, double density) {
   if (r.exact_tiling_checked)
     m["volume_identity"]["exact_tiling"] = {{"holds", r.exact_tiling}, {"difference", r.exact_tiling_difference}};
   m["density"] = density;
+  m["sites"] = {{"count", r.sites}, {"duplicates", r.duplicate_sites}, {"without_piece", r.sites_without_piece}};
   m["booleans"] = r.booleans;
   m["skipped_booleans"] = r.skipped;
   m["seconds"] = {{"sampling", r.seconds_sampling}, {"voronoi", r.seconds_voronoi}, {"boolean", r.seconds_boolean}};

@@ -95,5 +95,12 @@ expect 1 "fracture with a gap that leaves no piece" -- "$dtlab" fracture "$tmp/c
 says "named" "no piece is left"
 ok "nothing written" test ! -e "$tmp/gq/manifest.json"
 
+# Every site is accounted for: a repeated site and one whose cell misses the mesh are counted.
+printf '0.5 0.5 0.5\n0.5 0.5 0.5\n0.2 0.2 0.2\n5 5 5\n' >"$tmp/s.xyz"
+expect 0 "fracture --sites with a repeat and an outsider" -- "$dtlab" fracture "$tmp/cube.off" --sites "$tmp/s.xyz" --out "$tmp/sq"
+says "counted" "sites: 4, of which 1 repeat an earlier site .* and 1 have cells that miss the mesh"
+ok "the manifest counts them" /usr/bin/python3 -c "import json, sys; m = json.load(open('$tmp/sq/manifest.json')); \
+sys.exit(m['sites'] != {'count': 4, 'duplicates': 1, 'without_piece': 1} or len(m['pieces']) != 2)"
+
 echo "output_sets: $pass passed, $fails failed"
 [ "$fails" -eq 0 ]
