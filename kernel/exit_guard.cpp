@@ -13,6 +13,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -304,6 +305,16 @@ void end_tagged(int child_pid) {
   }
   kill_carrying(child_tag(child_pid), false, before);
 }
+
+std::string guard_tag_prefix() {
+  prepare_exit_guard();
+  const char* outer = std::getenv(std::string(kGuardVar, sizeof kGuardVar - 2).c_str());  // without the '='
+
+  std::string prefix = outer && *outer ? std::string(outer) + " " : "";
+  return prefix + g_nonce + ".";
+}
+
+int guard_pid_digits() { return kPidDigits; }
 
 void end_guarded_now() {
   g_lock.lock();  // never released: the process ends after this

@@ -51,6 +51,12 @@ class GuardedEnvironment {
   std::size_t guard_ = 0, digits_ = 0;  // the DTLAB_GUARD entry and where its pid digits go
 };
 void end_tagged(int child_pid);
+// For a child forked by other code (Python's function peers fork in Python): its
+// DTLAB_GUARD value is guard_tag_prefix() followed by its pid in guard_pid_digits()
+// zero-padded digits, set in the child before it runs anything; end_tagged(pid) then
+// finds its descendants as for the children above. Starts the guard (the nonce).
+std::string guard_tag_prefix();
+int guard_pid_digits();
 
 // The interrupt path: ends every listed group, removes every listed path and waits
 // for the watchdog to finish; later guard and release calls block for ever (the

@@ -27,6 +27,8 @@ from typing import Any
 
 import numpy as np
 
+from . import _core
+
 _INT64_MAX = 2**63 - 1
 
 
@@ -45,10 +47,14 @@ def _encode(result: Any, seconds: float) -> bytes:
     return b"T" + struct.pack("<dQ", seconds, rows.shape[0]) + rows.tobytes()
 
 
-def _child(fn: Callable[[np.ndarray], Any], points: np.ndarray, memory_bytes: int, log_path: str, w: int) -> None:
+def _child(fn: Callable[[np.ndarray], Any], points: np.ndarray, memory_bytes: int, log_path: str, w: int,
+           guard_prefix: str) -> None:
     code = 1
     try:
         os.setpgid(0, 0)
+        # The exit guard's tag (kernel/exit_guard.hpp): what the function starts inherits
+        # it, so a descendant that leaves the group (setsid) is still found and killed.
+        os.environ["DTLAB_GUARD"] = guard_prefix + str(os.getpid()).zfill(_core.guard_pid_digits())
         signal.signal(signal.SIGINT, signal.SIG_DFL)
         fd = os.open(log_path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
         os.dup2(fd, 1)
@@ -124,6 +130,7 @@ def run_in_child(fn: Callable[[np.ndarray], Any], points: np.ndarray, timeout_s:
             stream.flush()
         except (AttributeError, ValueError, OSError):
             pass
+    guard_prefix = _core.guard_tag_prefix()  # the parent's nonce, before the fork
     r, w = os.pipe()
     start = time.monotonic()
     try:
@@ -134,7 +141,7 @@ def run_in_child(fn: Callable[[np.ndarray], Any], points: np.ndarray, timeout_s:
         return ("not_started", -1, 0, 0.0, 0, f"fork failed: {e.strerror}")
     if pid == 0:
         os.close(r)
-        _child(fn, points, memory_bytes, log_path, w)
+        _child(fn, points, memory_bytes, log_path, w, guard_prefix)
     os.close(w)
     try:
         os.setpgid(pid, pid)  # both sides set it: a kill right after the fork reaches the group
@@ -168,6 +175,7 @@ def run_in_child(fn: Callable[[np.ndarray], Any], points: np.ndarray, timeout_s:
             _kill_group(pid)
             os.waitpid(pid, 0)
         _kill_group(pid)  # what the function started, if it outlived the child
+        _core.end_tagged(pid)  # and what left the group
         os.close(r)
     seconds = time.monotonic() - start
     answer = b"".join(chunks)

@@ -24,6 +24,7 @@
 #include "oracle/peers/child_process.hpp"
 #include "oracle/peers/oracle_session.hpp"
 
+#include "kernel/exit_guard.hpp"
 #include "python/src/bindings.hpp"
 #include "python/src/function_peers.hpp"
 #include "python/src/interrupt_check.hpp"
@@ -240,6 +241,16 @@ py::dict session_dict(const OracleSession& s) {
 }  // namespace
 
 void bind_oracle(py::module_& m) {
+  // The exit guard's tag for a child that Python forks (dtlab/_function_peer.py).
+  m.def("guard_tag_prefix", &guard_tag_prefix, "DTLAB_GUARD's value for a child, up to its pid's digits.");
+  m.def("guard_pid_digits", &guard_pid_digits, "The zero-padded width of the pid in a DTLAB_GUARD tag.");
+  m.def(
+      "end_tagged",
+      [](int pid) {
+        py::gil_scoped_release nogil;
+        end_tagged(pid);
+      },
+      py::arg("pid"), "Kills every process whose DTLAB_GUARD carries child pid's tag (left its group).");
   set_interrupt_check(&host_interrupt_requested);
   m.def("oracle", &oracle, py::arg("points"), py::arg("against"), py::arg("predicates"), py::arg("perturb"),
         py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"), py::arg("tetgen"),

@@ -306,3 +306,28 @@ def test_the_child_dies_with_a_killed_interpreter(tmp_path):
     while not ended(child):
         assert time.monotonic() < deadline, "the peer's child outlived the killed interpreter"
         time.sleep(0.01)
+
+
+def test_a_descendant_that_leaves_the_group_is_ended(tmp_path):
+    """A function peer's descendant that calls setsid leaves the peer's process group;
+    the inherited DTLAB_GUARD tag (kernel/exit_guard.hpp) still finds it after the peer's
+    time limit."""
+    marker = f"{tmp_path}/escaped"
+
+    def escape(points):
+        os.system(f"setsid sh -c 'exec -a {marker} sleep 300' &")
+        time.sleep(60)
+
+    r = dtlab.oracle(np.random.default_rng(1).random((30, 3)), against=[], peers={"escape": escape}, timeout=1)
+    assert r.peers["escape"].verdict == "hung"
+    time.sleep(0.3)
+    left = [p for p in os.listdir("/proc") if p.isdigit() and _cmdline(p).startswith(marker)]
+    assert left == []
+
+
+def _cmdline(pid):
+    try:
+        with open(f"/proc/{pid}/cmdline", "rb") as f:
+            return f.read().replace(b"\0", b" ").decode()
+    except OSError:
+        return ""
