@@ -292,8 +292,8 @@ FractureResult fracture_mesh(const TriangleMesh& mesh, const FractureOptions& o)
   // A gap as wide as the mesh leaves no piece (the CLI and Python both refuse it here).
   if (const Box3 box = bounding_box(mesh); o.margin > 0 && !(o.margin < norm(box.hi - box.lo))) {
     char why[160];
-    std::snprintf(why, sizeof why, "--gap %g is not smaller than the mesh (bounding box diagonal %g)", o.margin,
-                  norm(box.hi - box.lo));
+    std::snprintf(why, sizeof why, "%.*s %g is not smaller than the mesh (bounding box diagonal %g)",
+                  static_cast<int>(o.margin_name.size()), o.margin_name.data(), o.margin, norm(box.hi - box.lo));
     throw std::invalid_argument(why);
   }
   FractureResult r;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <string_view>
 #include <vector>
 
 #include "fracture/cell_boolean.hpp"
@@ -22,6 +23,7 @@ struct FractureOptions {
   bool blue_noise = false;
   std::uint64_t seed = 1;
   double margin = 0;                 // gap between neighbouring pieces (absolute length)
+  std::string_view margin_name = "--gap";  // how the caller names `margin` in messages (Python: margin)
   unsigned threads = 0;              // 0: all hardware threads
   std::vector<std::size_t> recurse;  // top-level pieces to fracture again
   std::size_t recurse_pieces = 4;    // pieces each of those is split into

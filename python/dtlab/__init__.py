@@ -22,6 +22,7 @@ from typing import Any, Union
 import numpy as np
 
 from . import _core, _function_peer, _meshio, fuzz
+from ._args import _count, _items, _peer_limits, _real, _reals, _seed, _threads
 from ._progress import ProgressArg, StageBar
 from ._results import (DEFECT_KINDS, BuildFailure, CheckReport, Comparison, Defect, Failure, Mesh,
                        OracleReport, OracleRun, Piece, Pieces, Tetrahedralization, VoronoiCell,
@@ -39,20 +40,7 @@ __all__ = [
 MeshLike = Union[str, "os.PathLike[str]", Mesh, tuple[Any, Any]]
 
 
-def _seed(seed: int) -> int:
-    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= int(seed) < 2**64:
-        raise ValueError(f"seed: expected an integer in [0, 2^64), got {seed!r}")
-    return int(seed)
-
-
-def _count(value: int, name: str, most: int = 2**63 - 1, least: int = 0) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not least <= int(value) <= most:
-        raise ValueError(f"{name}: expected an integer in [{least}, {most}], got {value!r}")
-    return int(value)
-
-
-def _threads(value: int) -> int:
-    return _count(value, "threads", 1024)  # the CLI's bound of --threads
+_EPS_MAX = 1e300  # the CLI's range of --eps: [0, 1e300]
 
 
 def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "sos",
@@ -81,11 +69,9 @@ def tetrahedralize(points: Any, predicates: str = "adaptive", perturb: str = "so
     it raises (KeyboardInterrupt too) stops the build and propagates.
     """
     nthreads = _threads(threads)
-    if nthreads > 1024:
-        raise ValueError(f"threads: expected at most 1024, got {threads!r}")
     with StageBar(progress, "tetrahedralize") as bar:
-        raw = _core.tetrahedralize(points, predicates, perturb, boundary, order, _seed(seed), float(eps), eps_mode,
-                                   nthreads, bar.callback)
+        raw = _core.tetrahedralize(points, predicates, perturb, boundary, order, _seed(seed),
+                                   _real(eps, "eps", 0, _EPS_MAX), eps_mode, nthreads, bar.callback)
     summary = dict(raw["summary"])
     f = summary.pop("failure")
     summary.pop("duplicates")
@@ -125,8 +111,6 @@ def check(points: Any, tets: Any, orientation: str = "any", *, duplicates: Any =
     called as each of the checker's 8 numbered steps ends.
     """
     nthreads = _threads(threads)
-    if nthreads > 1024:
-        raise ValueError(f"threads: expected at most 1024, got {threads!r}")
     with StageBar(progress, "check") as bar:
         raw = _core.check(points, tets, orientation, duplicates, _count(witnesses, "witnesses"), bool(delaunay),
                           nthreads, bar.callback)
@@ -173,10 +157,11 @@ def oracle(points: Any, against: Sequence[str] | str = ("cgal", "tetgen"), *, pr
     it raises (KeyboardInterrupt too) ends the running peer's process and propagates."""
     if isinstance(against, str):
         against = [a for a in against.split(",") if a]
-    against = list(against) + [name for name in (peers or {}) if name not in against]
+    against = _items(against, "against", "a peer name or a sequence of them") + [name for name in (peers or {}) if name not in against]
     with StageBar(progress, "oracle") as bar:
-        raw = _core.oracle(points, against, predicates, perturb, boundary, order, int(seed), float(eps), eps_mode,
-                           tetgen, float(timeout), float(memory_mb), _function_peer.runners(peers), bar.callback)
+        raw = _core.oracle(points, against, predicates, perturb, boundary, order, _seed(seed),
+                           _real(eps, "eps", 0, _EPS_MAX), eps_mode, tetgen, *_peer_limits(timeout, memory_mb),
+                           _function_peer.runners(peers), bar.callback)
     checks = raw["peer_checks"]
 
     def run(name: str, r: dict[str, Any], tets: Any, check: dict[str, Any] | None) -> OracleRun:
@@ -199,10 +184,13 @@ def oracle(points: Any, against: Sequence[str] | str = ("cgal", "tetgen"), *, pr
 def _box_arg(box: Any) -> list[float] | None:
     if box is None:
         return None
-    b = np.asarray(box, dtype=np.float64).reshape(-1)
-    if b.size != 6 or not np.all(np.isfinite(b)):
-        raise ValueError("box needs xmin ymin zmin xmax ymax zmax with min < max")
-    return [float(x) for x in b]
+    try:
+        b = np.asarray(box, dtype=object).reshape(-1)
+    except ValueError:  # ragged
+        b = np.zeros(0)
+    if b.size != 6:
+        raise ValueError(f"box needs xmin ymin zmin xmax ymax zmax with min < max, got {box!r}")
+    return [_real(x, "box", -1e101, 1e101) for x in b]  # the CLI's range of --box
 
 
 def voronoi(points: Any, box: Any = None, *, margin: float = 0.1, predicates: str = "adaptive",
@@ -215,7 +203,8 @@ def voronoi(points: Any, box: Any = None, *, margin: float = 0.1, predicates: st
     A repeated point gets an empty cell (duplicate_of names the first). The cells' arrays
     are read-only views of the diagram's storage.
     """
-    raw = _core.voronoi(points, _box_arg(box), float(margin), predicates, _threads(threads))
+    raw = _core.voronoi(points, _box_arg(box), _real(margin, "margin", 0, 1e6),  # the CLI's --margin
+                        predicates, _threads(threads))
     cells = []
     for i, c in enumerate(raw["cells"]):
         off = c["face_offsets"]
@@ -289,14 +278,17 @@ def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float
     witnesses, largest_wrong_face, max_vertex_ulps, volume_error, tolerances, ...
     Every tolerance has an ulp floor: at least what `ulps` ulps of the box's largest
     coordinate allow (0: the relative tolerances alone); `tolerances` says which applied.
+    small_face, vertex_tolerance and volume_tolerance are relative, each in (0, 1]; ulps
+    in [0, 1e6].
     """
     if box is None:
         b = _box_arg(cells.box) if isinstance(cells, VoronoiDiagram) else _core.default_box(points, 0.1)
     else:
         b = _box_arg(box)
     assert b is not None
-    return _core.check_voronoi(points, _tool_cells(points, cells, b), b, float(small_face), float(vertex_tolerance),
-                               float(volume_tolerance), float(ulps))
+    tolerances = [_real(t, name, 0, 1, above=True) for t, name in ((small_face, "small_face"),
+                  (vertex_tolerance, "vertex_tolerance"), (volume_tolerance, "volume_tolerance"))]
+    return _core.check_voronoi(points, _tool_cells(points, cells, b), b, *tolerances, _real(ulps, "ulps", 0, 1e6))
 
 
 def read_mesh(path: str | os.PathLike[str]) -> Mesh:
@@ -332,7 +324,8 @@ def sample(mesh: MeshLike, n: int, method: str = "winding", seed: int = 1, *, bl
     """
     vertices, faces = _mesh_arrays(mesh)
     count = _count(n, "n", 2**30, 1)  # the range of `dtlab sample --count`
-    raw = _core.sample(vertices, faces, count, method, _seed(seed), bool(blue_noise), float(blue_noise_ratio))
+    raw = _core.sample(vertices, faces, count, method, _seed(seed), bool(blue_noise),
+                      _real(blue_noise_ratio, "blue_noise_ratio", 1, 100))  # the CLI's --blue-noise-ratio
     pts = raw["points"]
     if len(pts) < count:
         raise ValueError(f"only {len(pts)} of {count} points after {raw['candidates']} candidates "
@@ -348,13 +341,6 @@ def _site_source(sites: Any) -> tuple[str, Any]:
             raise ValueError("sites: an (n, 3) array or 'mesh-vertices'")
         return "mesh-vertices", None
     return "points", sites
-
-
-def _triple(values: Sequence[float], option: str) -> tuple[float, float, float]:
-    t = tuple(float(c) for c in values)
-    if len(t) != 3:
-        raise ValueError(f"{option} takes three numbers")
-    return t  # type: ignore[return-value]
 
 
 def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin: float = 0.0, *,
@@ -387,13 +373,16 @@ def fracture(vertices: Any, faces: Any, pieces: int = 20, seed: int = 1, margin:
     called after each cell's boolean (from the worker that did it, with the GIL).
     """
     with StageBar(progress, "fracture") as bar:
-        raw = _core.fracture(vertices, faces, _count(pieces, "pieces", 100000, 1), _seed(seed), float(margin), sampler,
-                             bool(blue_noise), _threads(threads), [_count(r, "recurse") for r in recurse],
-                             _count(recurse_pieces, "recurse_pieces", 10000, 1),
-                             *_site_source(sites), None if impact is None else _triple(impact, "impact"),
-                             float(impact_radius), float(site_noise), bool(island_split),
-                             _triple(cell_scale, "cell_scale"), float(density), bool(exact_tiling), bool(tets),
-                             str(tetgen), bar.callback)
+        # The ranges of the CLI's --gap, --recurse, --impact, --impact-radius, ... (dtlab fracture --help).
+        raw = _core.fracture(vertices, faces, _count(pieces, "pieces", 100000, 1), _seed(seed),
+                             _real(margin, "margin", 0, 1e300), sampler, bool(blue_noise), _threads(threads),
+                             [_count(r, "recurse", 10**9) for r in _items(recurse, "recurse", "a sequence of piece ids")],
+                             _count(recurse_pieces, "recurse_pieces", 10000, 1), *_site_source(sites),
+                             None if impact is None else _reals(impact, "impact", 3, -1e300, 1e300),
+                             _real(impact_radius, "impact_radius", 0, 1e300), _real(site_noise, "site_noise", 0, 10),
+                             bool(island_split), _reals(cell_scale, "cell_scale", 3, 1e-6, 1e6),
+                             _real(density, "density", 1e-300, 1e300), bool(exact_tiling), bool(tets), str(tetgen),
+                             bar.callback)
     out = Pieces(Piece(p["vertices"], p["faces"], p["cut"], p["cut_tag"], float(p["volume"]), tuple(p["centroid"]),
                        tuple(p["site"]), float(p["interior_area"]), p["neighbors"], int(p["parent"]),
                        int(p["site_index"]), int(p["island"]), p.get("tet_points"), p.get("tets"))

@@ -16,13 +16,14 @@ from typing import Any, Union
 import numpy as np
 
 from . import _core, _function_peer
+from ._args import _count, _items, _peer_limits, _seed
 from ._progress import ProgressArg, StageBar
 
+_POINTS_MAX = 10**7  # the CLI's range of --points and --min-points: [1, 1e7]
 
-def _uint(value: int, name: str, bits: int = 64) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 0 <= int(value) < 2**bits:
-        raise ValueError(f"{name}: expected an integer in [0, 2^{bits}), got {value!r}")
-    return int(value)
+
+def _points(value: int, name: str) -> int:
+    return _count(value, name, _POINTS_MAX, 1)
 
 
 def families() -> dict[str, str]:
@@ -33,20 +34,20 @@ def families() -> dict[str, str]:
 def generate(family: str, n: int, seed: int) -> np.ndarray:
     """Exactly n points of `family` from `seed`, as an (n, 3) float64 array: the same
     bits on every IEEE-754 platform and the same as the CLI's for (family, n, seed)."""
-    return _core.fuzz_generate(family, _uint(n, "n"), _uint(seed, "seed"))
+    return _core.fuzz_generate(family, _points(n, "n"), _seed(seed))
 
 
 def case_seed(seed: int, family: str, index: int) -> int:
     """The seed of case `index` of `family` in a campaign run with --seed `seed`."""
-    return _core.fuzz_case_seed(_uint(seed, "seed"), family, _uint(index, "index"))
+    return _core.fuzz_case_seed(_seed(seed), family, _seed(index, "index"))
 
 
 def case_points(case_seed: int, min_points: int = 8, max_points: int = 64) -> int:
     """The number of points of a campaign case, drawn from its seed in [min_points, max_points]."""
-    lo, hi = _uint(min_points, "min_points"), _uint(max_points, "max_points")
+    lo, hi = _points(min_points, "min_points"), _points(max_points, "max_points")
     if lo > hi:
         raise ValueError(f"min_points {lo} > max_points {hi}")
-    return _core.fuzz_case_points(_uint(case_seed, "case_seed"), lo, hi)
+    return _core.fuzz_case_points(_seed(case_seed, "case_seed"), lo, hi)
 
 
 def case(family: str, index: int, seed: int = 1, min_points: int = 8, max_points: int = 64) -> np.ndarray:
@@ -134,20 +135,24 @@ def campaign(target: PeerTarget, families: Sequence[str] | str = "all", cases: i
     progress: None, True (a tqdm bar) or a callable progress(done, total, family) after
     each case (and its shrink): the family's cases done, total = cases. What it raises
     (KeyboardInterrupt too) stops the campaign and propagates."""
-    lo = min(8, _uint(points, "points")) if min_points is None else _uint(min_points, "min_points")  # the CLI's
+    lo = min(8, _points(points, "points")) if min_points is None else _points(min_points, "min_points")  # the CLI's
+    if out is not None and os.path.exists(out) and not os.path.isdir(out):
+        raise ValueError(f"out: {os.fspath(out)!r} is not a directory")
     peer = _peer_name(target, name)
     functions = {} if isinstance(target, str) else _function_peer.runners({peer: target})
     if isinstance(families, str):
         families = [f for f in families.split(",") if f]
+    families = _items(families, "families", "a family name or a sequence of them")
     names = [f for f in families if f != "all"]
     if len(names) < len(families):
         names = [n for n, _ in _core.fuzz_families()] + names
     names = list(dict.fromkeys(names))
     with StageBar(progress, "fuzz") as bar:
-        raw = _core.fuzz_peer_campaign(peer, functions, names, _uint(cases, "cases"), lo, _uint(points, "points"),
-                                       _uint(seed, "seed"), "" if out is None else os.fspath(out), bool(shrink),
-                                       _uint(shrink_budget, "shrink_budget"), float(timeout), float(memory_mb),
-                                       bar.callback)
+        # The CLI's ranges of --cases [1, 1e12], --shrink-budget [0, 1e9].
+        raw = _core.fuzz_peer_campaign(peer, functions, names, _count(cases, "cases", 10**12, 1), lo,
+                                       _points(points, "points"), _seed(seed), "" if out is None else os.fspath(out),
+                                       bool(shrink), _count(shrink_budget, "shrink_budget", 10**9),
+                                       *_peer_limits(timeout, memory_mb), bar.callback)
     results = [CaseResult(**c) for c in raw]
     per_family: dict[str, FamilyResult] = {}
     for f in names:

@@ -91,6 +91,7 @@ py::dict fracture(py::handle vertices, py::handle faces, std::size_t pieces, std
   o.blue_noise = blue_noise;
   o.seed = seed;
   o.margin = margin;
+  o.margin_name = "margin";  // fracture_mesh's refusal of a gap as wide as the mesh
   o.threads = threads;
   o.recurse = recurse;
   o.recurse_pieces = recurse_pieces;

@@ -46,7 +46,6 @@ py::object check_voronoi(py::handle points, py::handle cells, const std::vector<
   o.small_face = small_face;
   o.vertex_tolerance = vertex_tolerance;
   o.volume_tolerance = volume_tolerance;
-  if (!(ulps >= 0)) throw py::value_error("ulps must be >= 0");
   o.ulps = ulps;
   VoronoiCheckReport r;
   try {
