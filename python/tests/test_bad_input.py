@@ -150,3 +150,30 @@ def test_wrapped_unsigned_index_is_explained():
         bad = t.astype(np.int64)
         bad[0, 0] = 99
         dtlab.check(GOOD, bad)
+
+
+@pytest.mark.parametrize("call,message", [
+    (lambda: dtlab.check_voronoi(GOOD, dtlab.voronoi(GOOD), vertex_tolerance=-1), r"^vertex_tolerance: "),
+    (lambda: dtlab.check_voronoi(GOOD, dtlab.voronoi(GOOD), volume_tolerance=float("nan")), r"^volume_tolerance: "),
+    (lambda: dtlab.check_voronoi(GOOD, dtlab.voronoi(GOOD), ulps=float("inf")), r"^ulps: "),
+    (lambda: dtlab.voronoi(GOOD, margin=1e30), r"^margin: "),
+    (lambda: dtlab.voronoi(GOOD, margin="x"), r"^margin: expected a number"),
+    (lambda: dtlab.oracle(GOOD, against=[], seed=2.5), r"^seed: "),
+    (lambda: dtlab.oracle(GOOD, against=[], seed=True), r"^seed: "),
+    (lambda: dtlab.fuzz.generate("uniform", 10**13, 1), r"^n: "),
+    (lambda: dtlab.tetrahedralize(GOOD, eps="x"), r"^eps: "),
+    (lambda: dtlab.fracture(*dtlab.read_mesh("builtin"), pieces=2, recurse=3), r"^recurse"),
+    (lambda: dtlab.fracture(*dtlab.read_mesh("builtin"), pieces=2, margin=1e6), r"^margin"),
+])
+def test_numbers_are_checked_as_the_cli_checks_them(call, message):
+    """nan, inf, bools, strings, a float for an integer and values out of the CLI's range
+    are refused naming the parameter, never truncated or silently used."""
+    with pytest.raises(ValueError, match=message):
+        call()
+
+
+def test_campaign_out_must_be_a_folder(tmp_path):
+    f = tmp_path / "afile"
+    f.write_text("")
+    with pytest.raises(ValueError, match=r"^out: .*is not a directory"):
+        dtlab.fuzz.campaign("dtlab:adaptive", "uniform", cases=1, out=f)
