@@ -127,6 +127,8 @@ int run_voronoi(const VoronoiArgs& a) {
   std::optional<VoronoiDiagram> built;
   try {
     built = compute_voronoi(in.points, o);
+  } catch (const UnrepresentableCell& e) {
+    throw InputError(a.input, 0, e.what());
   } catch (const std::runtime_error&) {
     // compute_voronoi reports a failed Delaunay build as an error without its kind;
     // the same build (deterministic, the same options, as compute_voronoi runs it)

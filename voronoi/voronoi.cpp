@@ -7,6 +7,7 @@
 #include <ctime>
 #include <memory>
 #include <numeric>
+#include <cstdio>
 #include <stdexcept>
 
 #include "kernel/ids.hpp"
@@ -212,10 +213,11 @@ bool compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t
   // below its far vertices' rounding (the band's clip then does not close) is redone
   // in the box's band, as before cell_scale: that band merges the corners.
   if (scale < box.diagonal()) return compute_cell(cell, sites, i, neighbors, box, tol, box.diagonal(), shrink);
-  throw std::runtime_error("voronoi: the cell of site " + std::to_string(i) +
-                           " has faces that double precision cannot represent (a face of " +
-                           std::to_string(off / (scale * scale)) +
-                           " of the cells' scale squared is lost in rounding; voronoi.hpp's cell_scale)");
+  char fraction[32];
+  std::snprintf(fraction, sizeof fraction, "%.3g", off / (scale * scale));
+  throw UnrepresentableCell("the Voronoi cell of site " + std::to_string(i) +
+                            " has faces that double precision cannot represent (a face of " + fraction +
+                            " of the cells' scale squared is lost in rounding; voronoi.hpp's cell_scale)");
 }
 
 VoronoiCell cell_view(std::span<const Point3> vertices, std::span<const std::uint32_t> face_offsets,

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -92,6 +93,15 @@ void vertex_stars(std::size_t n, std::span<const Tet> tets, std::vector<std::uin
                   std::vector<std::uint32_t>& star);
 
 vor::Box default_box(std::span<const Point3> sites, double margin);
+
+// compute_voronoi's refusal of sites whose cells doubles cannot hold (a face far below
+// the cells' scale squared lost in rounding, so no rounded cell is closed and convex):
+// bad input for these sites (the CLI: FILE:0: reason, exit 2; Python: ValueError), not
+// a crash nor a wrong cell.
+class UnrepresentableCell : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
 
 // The length the cells' relative tolerances are of (the clip band, choose_cell's and
 // `dtlab voronoi --check`'s cell checks): the box's diagonal, or the diagonal of the
