@@ -198,9 +198,10 @@ void print_fracture_summary(const FractureArgs& a, const FractureResult& r, doub
   std::printf("%s: %zu pieces (%zu booleans, %zu skipped), mesh volume %.12g, relative volume error %.3g\n",
               a.mesh.c_str(), r.pieces.size(), r.booleans, r.skipped, r.mesh_volume, rel);
   if (r.duplicate_sites > 0 || r.sites_without_piece > 0)
-    std::printf("  sites: %zu, of which %zu repeat an earlier site (no piece of their own) and %zu have cells that "
-                "miss the mesh\n",
-                r.sites, r.duplicate_sites, r.sites_without_piece);
+    std::printf(
+        "  sites: %zu, of which %zu repeat an earlier site (no piece of their own) and %zu have cells that "
+        "miss the mesh\n",
+        r.sites, r.duplicate_sites, r.sites_without_piece);
   if (!a.out.empty())
     std::printf("wrote %s/{pieces.obj, exploded.obj, pieces.mtl, manifest.json, adjacency.txt%s%s%s%s%s}\n",
                 a.out.c_str(), a.split ? ", pieces/piece_NNNN.obj" : "", a.vtu ? ", pieces.vtu" : "",
@@ -232,7 +233,7 @@ int run_fracture(const FractureArgs& a) {
   FractureOptions o = fracture_options(a, *method);
   o.progress = [&progress](std::size_t done, std::size_t total) { progress.update("booleans", done, total); };
   FractureResult r;
-  const std::string source = a.sites.empty() ? std::to_string(a.pieces) + " " + a.sampler + " sites"
+  const std::string source = a.sites.empty()              ? std::to_string(a.pieces) + " " + a.sampler + " sites"
                              : a.sites == "mesh-vertices" ? std::to_string(a.pieces) + " mesh-vertex sites"
                                                           : "the sites of " + a.sites;
   progress.say("fracturing " + a.mesh + " at " + source + " (one boolean per cell, then its islands)");

@@ -99,8 +99,8 @@ int run_tetra(const TetraArgs& a) {
   if (r.failure && r.failure->kind == FailureKind::lower_dimensional) {
     if (robust_backend(a.kernel.predicates) || fuzz::is_lower_dimensional(r.mesh.points))
       throw InputError(a.input, 0, r.failure->detail);
-    r.failure->detail += " by the " + a.kernel.predicates +
-                         " predicates, but exact predicates find four affinely independent points";
+    r.failure->detail +=
+        " by the " + a.kernel.predicates + " predicates, but exact predicates find four affinely independent points";
   }
   const auto write_start = std::chrono::steady_clock::now();
   const std::string node = a.out.empty() ? "" : write_outputs(a, r.mesh, in.first_index);
@@ -152,10 +152,9 @@ void add_tetra_command(CLI::App& app, int& rc) {
   auto args = std::make_shared<TetraArgs>();
   CLI::App* sub = app.add_subcommand("tetra", "Delaunay tetrahedralization of a point file (.node .xyz) or of a mesh file's vertices (.off .obj .ply .stl)");
   sub->add_option("INPUT", args->input, kInputPointsHelp)->required();
-  CLI::Option* out =
-      sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)")
-          ->type_name("PREFIX")
-          ->check(non_empty_path);
+  CLI::Option* out = sub->add_option("--out", args->out, "write PREFIX.node and PREFIX.ele (TetGen format)")
+                         ->type_name("PREFIX")
+                         ->check(non_empty_path);
   sub->add_option("--format", args->format,
                   "node: PREFIX.node/.ele (a 0-based input .node is copied, not rewritten); npy: PREFIX.points.npy "
                   "and PREFIX.tets.npy (NumPy, dtlab's orientation)")

@@ -32,13 +32,15 @@ inline void refuse_overwriting_inputs(const std::vector<std::string>& outputs, c
     struct stat o {};
     if (out.empty() || stat(out.c_str(), &o) != 0) {
       for (std::size_t j = 0; j < i; ++j)
-        if (outputs[j] == out && !out.empty()) throw InputError(out, 0, "written twice by this run (two options name it)");
+        if (outputs[j] == out && !out.empty())
+          throw InputError(out, 0, "written twice by this run (two options name it)");
       continue;
     }
     for (const std::string& in : inputs) {
       struct stat s {};
       if (!in.empty() && stat(in.c_str(), &s) == 0 && same_file(o, s))
-        throw InputError(out, 0, "is the input file " + in + ": the run would replace what it reads (choose another output)");
+        throw InputError(out, 0,
+                         "is the input file " + in + ": the run would replace what it reads (choose another output)");
     }
     for (std::size_t j = 0; j < i; ++j) {
       struct stat e {};
@@ -78,7 +80,8 @@ inline void check_out_prefix(const std::string& prefix) {
 inline void check_out_folder(const std::string& dir) {
   struct stat st {};
   if (dir.empty()) throw UsageError("--out '': expected a folder");
-  if (stat(dir.c_str(), &st) == 0 && !S_ISDIR(st.st_mode)) throw InputError(dir, 0, "--out: exists and is not a folder");
+  if (stat(dir.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+    throw InputError(dir, 0, "--out: exists and is not a folder");
 }
 
 }  // namespace dtlab::cli

@@ -32,7 +32,9 @@ namespace dtlab {
 // stale member too). Paths that are not regular files (a device, a FIFO), are missing
 // or are one of `keep` (the same file: the run's inputs) are left alone. Returns the
 // paths removed.
-inline bool same_file(const struct stat& a, const struct stat& b) { return a.st_dev == b.st_dev && a.st_ino == b.st_ino; }
+inline bool same_file(const struct stat& a, const struct stat& b) {
+  return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
 
 inline std::vector<std::string> remove_output_set(const std::vector<std::string>& paths,
                                                   const std::vector<std::string>& keep = {}) {

@@ -4,10 +4,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <memory>
 #include <numeric>
-#include <cstdio>
 #include <stdexcept>
 
 #include "kernel/ids.hpp"
