@@ -172,7 +172,7 @@ progress "fuzz campaign" "^dtlab fuzz: cases 2/2 \(100%\), 0 failing; .* so far,
 progress "fuzz --target" "^dtlab fuzz: cases 2/2" -- fuzz --target dtlab:exact --family uniform --cases 2 --no-shrink --out "$tmp/pt"
 progress "oracle peers" "^dtlab oracle: peers 0/2 \(0%\), running cgal" -- oracle "$tmp/ok.xyz" --against cgal,dtlab:exact
 progress "bench runs" "^dtlab bench: runs 1/2 \(50%\).*ETA" -- bench --sizes 100 --tools dtlab --runs 2
-progress "fracture stages" "^dtlab fracture: fracturing builtin into 2 pieces" -- fracture builtin --pieces 2 --out "$tmp/pfr"
+progress "fracture stages" "^dtlab fracture: fracturing builtin at 2 winding sites" -- fracture builtin --pieces 2 --out "$tmp/pfr"
 progress "fracture booleans" "^dtlab fracture: booleans 2/2 \(100%\)" -- fracture builtin --pieces 2 --out "$tmp/pfr"
 
 echo "$pass passed, $fails failed"
