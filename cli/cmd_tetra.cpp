@@ -53,11 +53,16 @@ OutputSet tetra_output_set(const TetraArgs& a) {
   return set;
 }
 
-// Before the build: no output replaces the input, except a 0-based input .node that is
-// PREFIX.node (it already is the output's .node: kept, kernel/node_reuse.hpp).
+// A 0-based input .node already is the output's .node (kernel/node_reuse.hpp): kept when
+// it is PREFIX.node, else copied byte for byte.
+bool input_node_reusable(const TetraArgs& a, int first_index) {
+  return a.format != "npy" && a.input.ends_with(".node") && first_index == 0;
+}
+
+// Before the build: no output replaces the input, except a reusable input .node.
 void refuse_output_over_input(const TetraArgs& a, int first_index) {
   if (a.out.empty()) return;
-  const bool node_reused = a.format != "npy" && a.input.ends_with(".node") && first_index == 0;
+  const bool node_reused = input_node_reusable(a, first_index);
   std::vector<std::string> outputs;
   for (const std::string& p : tetra_output_set(a).written)
     if (!(node_reused && p == a.out + ".node")) outputs.push_back(p);
@@ -73,8 +78,7 @@ std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, in
     write_npy(a.out, mesh);
     node = "none";
   } else {
-    const NodeReuse reuse = a.input.ends_with(".node") && first_index == 0 ? reuse_node_file(a.input, a.out + ".node")
-                                                                          : NodeReuse::none;
+    const NodeReuse reuse = input_node_reusable(a, first_index) ? reuse_node_file(a.input, a.out + ".node") : NodeReuse::none;
     if (reuse == NodeReuse::none) write_node(a.out + ".node", mesh.points, threads);
     node = reuse == NodeReuse::same_file ? "kept" : reuse == NodeReuse::copied ? "copied" : "written";
     write_ele(a.out + ".ele", mesh.tets, threads);

@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/cli_error.hpp"
@@ -23,30 +24,31 @@ struct OutputSet {
   std::vector<std::string> inputs;   // the run's input files: never written, never removed
 };
 
-// Exit 2 (InputError naming the output) when an output path is an existing input file
-// (the same file through any path or link) or when two outputs are one path (`--png`
-// onto a member of `--out`'s set).
+// A path and, when it exists, its file (device and inode): two paths name one file when
+// they are equal or both exist as the same file (through any link).
+struct PathFile {
+  explicit PathFile(std::string p) : path(std::move(p)) { exists = !path.empty() && stat(path.c_str(), &st) == 0; }
+  bool same(const PathFile& o) const { return path == o.path || (exists && o.exists && same_file(st, o.st)); }
+  std::string path;
+  struct stat st {};
+  bool exists = false;
+};
+
+// Exit 2 (InputError naming the output) when an output is an input file or two outputs
+// are one file (`--png` onto a member of `--out`'s set).
 inline void refuse_overwriting_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const std::string& out = outputs[i];
-    struct stat o {};
-    if (out.empty() || stat(out.c_str(), &o) != 0) {
-      for (std::size_t j = 0; j < i; ++j)
-        if (outputs[j] == out && !out.empty())
-          throw InputError(out, 0, "written twice by this run (two options name it)");
-      continue;
-    }
-    for (const std::string& in : inputs) {
-      struct stat s {};
-      if (!in.empty() && stat(in.c_str(), &s) == 0 && same_file(o, s))
-        throw InputError(out, 0,
-                         "is the input file " + in + ": the run would replace what it reads (choose another output)");
-    }
-    for (std::size_t j = 0; j < i; ++j) {
-      struct stat e {};
-      if (stat(outputs[j].c_str(), &e) == 0 && same_file(o, e))
-        throw InputError(out, 0, "written twice by this run (two options name it)");
-    }
+  std::vector<PathFile> in, out;
+  for (const std::string& p : inputs)
+    if (!p.empty()) in.emplace_back(p);
+  for (const std::string& p : outputs) {
+    if (p.empty()) continue;
+    const PathFile o(p);
+    for (const PathFile& i : in)
+      if (o.exists && o.same(i))
+        throw InputError(p, 0, "is the input file " + i.path + ": the run would replace what it reads (choose another output)");
+    for (const PathFile& e : out)
+      if (o.same(e)) throw InputError(p, 0, "written twice by this run (two options name it)");
+    out.push_back(o);
   }
 }
 
@@ -68,18 +70,17 @@ inline void remove_old_outputs(const OutputSet& set, bool quiet) {
 // CLI11's check of --out: an empty path names no file ("" would mean "no --out").
 inline std::string non_empty_path(const std::string& path) { return path.empty() ? "an empty path names no file" : ""; }
 
-// --out PREFIX (tetra, voronoi): a prefix of file names, so neither empty, nor ending in
-// '/', nor an existing folder (`--out d/` wrote hidden files d/.node and d/.ele).
+// --out PREFIX (tetra, voronoi; not empty: non_empty_path): a prefix of file names, so
+// neither ending in '/' nor an existing folder (`--out d/` wrote hidden files d/.node and d/.ele).
 inline void check_out_prefix(const std::string& prefix) {
   struct stat st {};
-  if (prefix.empty() || prefix.back() == '/' || (stat(prefix.c_str(), &st) == 0 && S_ISDIR(st.st_mode)))
+  if (prefix.back() == '/' || (stat(prefix.c_str(), &st) == 0 && S_ISDIR(st.st_mode)))
     throw UsageError("--out '" + prefix + "': expected a file prefix (PREFIX.node, ...), not a folder");
 }
 
-// --out DIR (fracture): a folder, or a path where one can be made.
+// --out DIR (fracture; not empty: non_empty_path): a folder, or a path where one can be made.
 inline void check_out_folder(const std::string& dir) {
   struct stat st {};
-  if (dir.empty()) throw UsageError("--out '': expected a folder");
   if (stat(dir.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
     throw InputError(dir, 0, "--out: exists and is not a folder");
 }

@@ -267,14 +267,9 @@ void guard_own_group_in_child() {
 
 GuardedEnvironment::GuardedEnvironment() {
   prepare_exit_guard();  // the nonce
-  std::string guard = kGuardVar;
-  for (char** e = environ; e && *e; ++e) {
-    if (std::strncmp(*e, kGuardVar, sizeof kGuardVar - 1) == 0)
-      guard = std::string(*e) + " ";  // dtlab under dtlab: the outer tags stay
-    else
-      entries_.emplace_back(*e);
-  }
-  guard += child_tag(0);
+  for (char** e = environ; e && *e; ++e)
+    if (std::strncmp(*e, kGuardVar, sizeof kGuardVar - 1) != 0) entries_.emplace_back(*e);
+  std::string guard = kGuardVar + guard_tag_prefix() + std::string(kPidDigits, '0');  // the outer tags stay
   digits_ = guard.size() - kPidDigits;
   guard_ = entries_.size();
   entries_.push_back(std::move(guard));
@@ -308,8 +303,7 @@ void end_tagged(int child_pid) {
 
 std::string guard_tag_prefix() {
   prepare_exit_guard();
-  const char* outer = std::getenv(std::string(kGuardVar, sizeof kGuardVar - 2).c_str());  // without the '='
-
+  const char* outer = std::getenv("DTLAB_GUARD");  // kGuardVar's name: dtlab under dtlab
   std::string prefix = outer && *outer ? std::string(outer) + " " : "";
   return prefix + g_nonce + ".";
 }
