@@ -78,7 +78,8 @@ std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, in
     write_npy(a.out, mesh);
     node = "none";
   } else {
-    const NodeReuse reuse = input_node_reusable(a, first_index) ? reuse_node_file(a.input, a.out + ".node") : NodeReuse::none;
+    const NodeReuse reuse =
+        input_node_reusable(a, first_index) ? reuse_node_file(a.input, a.out + ".node") : NodeReuse::none;
     if (reuse == NodeReuse::none) write_node(a.out + ".node", mesh.points, threads);
     node = reuse == NodeReuse::same_file ? "kept" : reuse == NodeReuse::copied ? "copied" : "written";
     write_ele(a.out + ".ele", mesh.tets, threads);

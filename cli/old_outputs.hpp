@@ -45,7 +45,8 @@ inline void refuse_overwriting_inputs(const std::vector<std::string>& outputs, c
     const PathFile o(p);
     for (const PathFile& i : in)
       if (o.exists && o.same(i))
-        throw InputError(p, 0, "is the input file " + i.path + ": the run would replace what it reads (choose another output)");
+        throw InputError(
+            p, 0, "is the input file " + i.path + ": the run would replace what it reads (choose another output)");
     for (const PathFile& e : out)
       if (o.same(e)) throw InputError(p, 0, "written twice by this run (two options name it)");
     out.push_back(o);
