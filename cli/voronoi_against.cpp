@@ -80,7 +80,9 @@ int judge_voronoi_peers(const std::vector<Point3>& sites, const VoronoiDiagram& 
     out["peers"][a.peers[k]] = j;
     if (!json) std::printf("%s\n", line_of(r).c_str());
   }
-  if (ours.verdict != VoronoiVerdict::exact_topology) return kDefect;
+  // Rounded topology is the best doubles can hold (faces below the small-face fraction).
+  if (ours.verdict != VoronoiVerdict::exact_topology && ours.verdict != VoronoiVerdict::rounded_topology)
+    return kDefect;
   return all_answered ? kOk : kNoAnswer;
 }
 

@@ -107,18 +107,25 @@ double cell_scale(const Box& box, std::span<const Point3> sites) {
 
 namespace {
 
+// Faces of at most this fraction of the scale squared may differ between an
+// ambiguous cell's band and exact forms (or be dropped by drop_tiny_faces).
+constexpr double kSmallFace = 1e-10;
+
+// The area of face f of `c` (its rounded corners, fanned from the first).
+double face_area(const ConvexCell& c, std::size_t f) {
+  const auto fv = c.face(f);
+  const Point3 o = c.vertices()[fv[0]];
+  Point3 n{0, 0, 0};
+  for (std::size_t k = 1; k + 1 < fv.size(); ++k) n = n + cross(c.vertices()[fv[k]] - o, c.vertices()[fv[k + 1]] - o);
+  return 0.5 * norm(n);
+}
+
 // The largest face of `a` whose tag `b` lacks (0 if none).
 double largest_face_missing(const ConvexCell& a, const ConvexCell& b) {
   double largest = 0;
   const auto tb = b.face_tags();
-  for (std::size_t f = 0; f < a.face_count(); ++f) {
-    if (std::find(tb.begin(), tb.end(), a.face_tag(f)) != tb.end()) continue;
-    const auto fv = a.face(f);
-    const Point3 o = a.vertices()[fv[0]];
-    Point3 n{0, 0, 0};
-    for (std::size_t k = 1; k + 1 < fv.size(); ++k) n = n + cross(a.vertices()[fv[k]] - o, a.vertices()[fv[k + 1]] - o);
-    largest = std::max(largest, 0.5 * norm(n));
-  }
+  for (std::size_t f = 0; f < a.face_count(); ++f)
+    if (std::find(tb.begin(), tb.end(), a.face_tag(f)) == tb.end()) largest = std::max(largest, face_area(a, f));
   return largest;
 }
 
@@ -168,7 +175,6 @@ enum class CellChoice { exact, band, refused };
 // - neither. `off` is set to the largest face on which the two differ.
 CellChoice choose_cell(const ConvexCell& band, const ConvexCell& exact, double scale, double vertex_error,
                        double& off) {
-  constexpr double kSmallFace = 1e-10;
   const double tol = 0.5e-9 * scale;
   off = std::max(largest_face_missing(exact, band), largest_face_missing(band, exact));
   const bool small = off <= kSmallFace * scale * scale;
@@ -178,6 +184,38 @@ CellChoice choose_cell(const ConvexCell& band, const ConvexCell& exact, double s
     return CellChoice::band;
   if (e.representable) return CellChoice::exact;
   return small && check_cell_closed(cell_view(band)).empty() ? CellChoice::band : CellChoice::refused;
+}
+
+// `exact` (sites[i]'s exact cell, translated) redone without the bisectors whose
+// faces are tiny, if that makes a cell doubles can hold. Near-degenerate sites give a
+// cell that is exactly closed and convex but has a cluster of faces of 1e-14..1e-36
+// of the scale squared whose corners round together (collapsed edges, open faces).
+// The faces below each threshold in turn (1e-16 .. kSmallFace of `scale` squared,
+// walls never) are dropped and the cell clipped again exactly by the other
+// neighbours; the first result that survives rounding and grew by at most 1e-15 of
+// `scale` cubed (a dropped face's plane only gives the cell a sliver back) is kept.
+// The dropped faces are what the Voronoi checker calls small missing faces; every
+// vertex is still exactly on its three planes before rounding.
+bool drop_tiny_faces(ConvexCell& exact, std::span<const Point3> sites, std::uint32_t i,
+                     std::span<const std::uint32_t> neighbors, const Box& box, double scale) {
+  const double volume = exact.volume(), area_unit = scale * scale;
+  std::vector<std::uint32_t> kept(neighbors.begin(), neighbors.end());
+  std::vector<std::int32_t> tiny;
+  for (const double fraction : {1e-16, 1e-14, 1e-12, kSmallFace}) {
+    tiny.clear();
+    for (std::size_t f = 0; f < exact.face_count(); ++f)
+      if (exact.face_tag(f) >= 0 && face_area(exact, f) <= fraction * area_unit) tiny.push_back(exact.face_tag(f));
+    if (tiny.empty()) continue;
+    std::erase_if(kept, [&](std::uint32_t j) {
+      return std::find(tiny.begin(), tiny.end(), static_cast<std::int32_t>(j)) != tiny.end();
+    });
+    exact_clip_cell(exact, sites, i, kept, box);
+    exact.translate(sites[i]);
+    if (exact.volume() - volume <= 1e-15 * area_unit * scale &&
+        judge_rounded(exact, 0.5e-9 * scale, rounding_floor_distance(box)).representable)
+      return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -213,6 +251,11 @@ bool compute_cell(ConvexCell& cell, std::span<const Point3> sites, std::uint32_t
   // below its far vertices' rounding (the band's clip then does not close) is redone
   // in the box's band, as before cell_scale: that band merges the corners.
   if (scale < box.diagonal()) return compute_cell(cell, sites, i, neighbors, box, tol, box.diagonal(), shrink);
+  // Last: the exact cell without its faces far below rounding, if that is a cell.
+  if (drop_tiny_faces(exact_cell, sites, i, neighbors, box, scale)) {
+    cell = exact_cell;
+    return true;
+  }
   char fraction[32];
   std::snprintf(fraction, sizeof fraction, "%.3g", off / (scale * scale));
   throw UnrepresentableCell("the Voronoi cell of site " + std::to_string(i) +
