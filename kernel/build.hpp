@@ -41,6 +41,11 @@ struct BuildOptions {
   // DTLAB_CHECK_COMBINATORICS=1 does the same); serial builds only, slow (a pass over the
   // mesh per flip). Release builds compile the check out and ignore this.
   bool check_combinatorics = false;
+  // Keep each facet's mirror in the result (Tetrahedralization::adjacency, 16 bytes per
+  // tet), for consumers that would otherwise pair the facets again (the Voronoi
+  // checker's tables). Serial builds only: a threaded build's canonical compaction
+  // reorders the tets and leaves it empty.
+  bool keep_adjacency = false;
 };
 
 // The runtime predicate choice: backend name (naive|epsilon|adaptive|exact),

@@ -42,24 +42,38 @@ bool collinear(const B& pred, const Point3& a, const Point3& b, const Point3& c)
 }
 
 // The finite live tets, vertex ids translated back to input indices (vertex v is
-// input point order[v]). The records' pages are handed back as they are read (the caller
-// frees the buffer): the mesh cannot be used afterwards.
+// input point order[v]), and with `adjacency` non-null each facet's mirror among them
+// (Tetrahedralization::adjacency). The records' pages are handed back as they are read
+// (the caller frees the buffer): the mesh cannot be used afterwards.
 inline void compact(TetRecord* records, std::size_t size, std::uint32_t n, const std::vector<std::uint32_t>& order,
-                    std::vector<Tet>& out) {
+                    std::vector<Tet>& out, std::vector<std::uint32_t>* adjacency = nullptr) {
   const auto finite = [n](const TetRecord& r) {
     return r.v[0] < n && r.v[1] < n && r.v[2] < n && r.v[3] < n;  // dead tets have v[0] == kNone
   };
+  // With adjacency: each record's index among the finite tets (kNone for the others).
+  std::vector<std::uint32_t> index(adjacency ? size : 0, kNone);
   std::size_t count = 0;
-  for (std::size_t t = 0; t < size; ++t) count += finite(records[t]);
+  for (std::size_t t = 0; t < size; ++t)
+    if (finite(records[t])) {
+      if (adjacency) index[t] = static_cast<std::uint32_t>(count);
+      ++count;
+    }
   out.clear();
   out.reserve(count);
+  if (adjacency) adjacency->clear(), adjacency->reserve(4 * count);
   constexpr std::size_t kChunk = 1 << 15;  // records between two releases (1 MiB)
   const char* unreleased = reinterpret_cast<const char*>(records);
   for (std::size_t start = 0; start < size; start += kChunk) {
     const std::size_t stop = std::min(size, start + kChunk);
     for (std::size_t t = start; t < stop; ++t) {
       const TetRecord& r = records[t];
-      if (finite(r)) out.push_back({order[r.v[0]], order[r.v[1]], order[r.v[2]], order[r.v[3]]});
+      if (!finite(r)) continue;
+      out.push_back({order[r.v[0]], order[r.v[1]], order[r.v[2]], order[r.v[3]]});
+      if (adjacency)
+        for (const Facet m : r.adj) {
+          const std::uint32_t u = m.none() ? kNone : index[m.tet()];
+          adjacency->push_back(u == kNone ? kNone : 4 * u + static_cast<std::uint32_t>(m.face()));
+        }
     }
     unreleased = release_pages(unreleased, reinterpret_cast<const char*>(records + stop));
   }
@@ -178,7 +192,8 @@ void insert_serially(InsertionJob<B>& j) {
   j.res.peak_tets = ins.mesh().size();
   resolve_log(j.res, j.log, j.order);
   std::vector<TetRecord>& records = ins.mesh().records();
-  detail::compact(records.data(), records.size(), j.n, j.order, j.res.mesh.tets);
+  detail::compact(records.data(), records.size(), j.n, j.order, j.res.mesh.tets,
+                  j.opt.keep_adjacency ? &j.res.mesh.adjacency : nullptr);
   std::vector<TetRecord>().swap(records);
 }
 

@@ -583,7 +583,9 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   const unsigned threads = thread_count(o.threads);
 
   auto t0 = Clock::now();
-  BuildResult r = build_delaunay(sites, o.predicates, o.build);
+  BuildOptions build = o.build;
+  build.keep_adjacency = o.keep_dt;  // the checker's tables pair no facets (serial builds)
+  BuildResult r = build_delaunay(sites, o.predicates, build);
   vd.tets = r.mesh.tets.size();
   if (r.failure && r.failure->kind != FailureKind::lower_dimensional)
     throw std::runtime_error("Delaunay build failed: " + r.failure->detail);

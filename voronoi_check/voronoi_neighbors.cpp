@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "kernel/build.hpp"
+#include "kernel/ids.hpp"
 #include "kernel/parallel_for.hpp"
 #include "oracle/check/facet_table.hpp"
 #include "oracle/check/filtered_exact.hpp"
@@ -46,6 +47,7 @@ VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, unsigned threa
   BuildOptions bo;
   bo.threads = threads;
   bo.count_stages = false;
+  bo.keep_adjacency = true;  // the tables then pair no facets (serial builds)
   BuildResult r = build_delaunay(sites, PredicateSpec{"adaptive", 0, false, true}, bo);
   if (r.failure) {
     if (r.failure->kind == FailureKind::lower_dimensional)
@@ -82,6 +84,43 @@ void VoronoiNeighbors::classify_tets(unsigned threads, std::span<const TetSphere
   degenerate_ = flat_;
 }
 
+// The facets of the tets paired by sorting (oracle/check/facet_table.hpp); each pair
+// that `cospherical` flags marks both tets degenerate. Returns the boundary facets.
+std::vector<std::uint32_t> VoronoiNeighbors::pair_by_table(const FacetPairClassifier& cospherical, unsigned threads) {
+  const auto mark = [&](const FacetPair& f, int) { degenerate_[f.r1 / 4] = degenerate_[f.r2 / 4] = 1; };
+  return build_facet_table(dt_->tets, first_appearance(dt_->tets, dt_->points.size()), cospherical, mark, threads)
+      .boundary_refs;
+}
+
+// The same from the build's own adjacency (Tetrahedralization::adjacency): each
+// interior facet once, from its lower tet, classified in parallel; the flagged tets
+// marked afterwards (per-chunk lists, no shared writes). No sort of all facets.
+std::vector<std::uint32_t> VoronoiNeighbors::pair_by_adjacency(const FacetPairClassifier& cospherical,
+                                                               unsigned threads) {
+  const auto& tets = dt_->tets;
+  const auto& adj = dt_->adjacency;
+  constexpr std::size_t kChunk = 4096;
+  std::vector<std::vector<std::uint32_t>> flagged((tets.size() + kChunk - 1) / kChunk);
+  parallel_chunks(tets.size(), threads, kChunk, [&](std::size_t b, std::size_t e, unsigned) {
+    auto& out = flagged[b / kChunk];
+    for (std::size_t t = b; t < e; ++t)
+      for (int f = 0; f < 4; ++f) {
+        const std::uint32_t m = adj[4 * t + f];
+        if (m == kNone || m / 4 < t) continue;
+        const auto v = facet_vertices(tets[t], f);
+        const FacetPair pair{
+            static_cast<std::uint32_t>(4 * t + f), m, {v[0], v[1], v[2]}, tets[t][f], tets[m / 4][m % 4], false};
+        if (cospherical(pair)) out.push_back(static_cast<std::uint32_t>(t)), out.push_back(m / 4);
+      }
+  });
+  for (const auto& chunk : flagged)
+    for (const std::uint32_t t : chunk) degenerate_[t] = 1;
+  std::vector<std::uint32_t> boundary;
+  for (std::size_t r = 0; r < adj.size(); ++r)
+    if (adj[r] == kNone) boundary.push_back(static_cast<std::uint32_t>(r));
+  return boundary;
+}
+
 // Stars, flat tets, then tets with a cospherical facet (exact insphere 0 of a facet and
 // its two apexes, asked only when the tets' certified centres are not apart; a flat tet
 // is degenerate too), hull edges and the degenerate ones.
@@ -96,9 +135,9 @@ void VoronoiNeighbors::build_tables(unsigned threads) {
     if ((flat_[t1] && flat_[t2]) || surely_apart(spheres[t1], spheres[t2])) return 0;
     return pred.insphere(p[f.v[0]], p[f.v[1]], p[f.v[2]], p[f.apex1], p[f.apex2]) == 0 ? 1 : 0;
   };
-  const auto mark = [&](const FacetPair& f, int) { degenerate_[f.r1 / 4] = degenerate_[f.r2 / 4] = 1; };
-  const FacetTable table =
-      build_facet_table(dt_->tets, first_appearance(dt_->tets, p.size()), cospherical, mark, threads);
+  const std::vector<std::uint32_t> boundary_refs = dt_->adjacency.size() == 4 * dt_->tets.size()
+                                                       ? pair_by_adjacency(cospherical, threads)
+                                                       : pair_by_table(cospherical, threads);
   // Hull facets by edge: the third vertex and the tet's fourth of both facets at an edge.
   struct Side {
     std::uint64_t key;
@@ -106,7 +145,7 @@ void VoronoiNeighbors::build_tables(unsigned threads) {
   };
   std::vector<Side> sides;
   hull_vertex_.assign(p.size(), 0);
-  for (auto ref : table.boundary_refs) {
+  for (auto ref : boundary_refs) {
     const Tet& q = dt_->tets[ref / 4];
     const auto v = facet_vertices(q, static_cast<int>(ref % 4));
     for (int k = 0; k < 3; ++k) {

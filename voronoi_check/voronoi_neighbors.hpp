@@ -25,6 +25,7 @@
 #include "voronoi_check/tet_spheres.hpp"
 
 #include "kernel/tetrahedralization.hpp"
+#include "oracle/check/facet_table.hpp"
 
 namespace dtlab {
 
@@ -73,6 +74,8 @@ class VoronoiNeighbors {
   bool edge_positive(std::uint32_t a, std::uint32_t b, bool degenerate_star, NeighborScratch& s) const;
   bool ring_collinear(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const;
   void build_tables(unsigned threads);
+  std::vector<std::uint32_t> pair_by_table(const FacetPairClassifier& cospherical, unsigned threads);
+  std::vector<std::uint32_t> pair_by_adjacency(const FacetPairClassifier& cospherical, unsigned threads);
   void classify_tets(unsigned threads, std::span<const TetSphere> spheres);
 
   std::vector<std::uint32_t> rep_;

@@ -97,7 +97,7 @@ void require_same_as_serial(const std::vector<Point3>& pts, const PredicateSpec&
 TEST_CASE("canonical tets: the smallest vertex first, the orientation kept", "[threads]") {
   const std::vector<Point3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   const Tet base = {0, 1, 3, 2};  // positive (Shewchuk's sign), canonical
-  REQUIRE(test::validate(BuildResult{{p, {base}}, {}, {}, {}, {}, 0}) == "");
+  REQUIRE(test::validate(BuildResult{{p, {base}, {}}, {}, {}, {}, {}, 0}) == "");
   // The 12 even permutations of its vertices give it back, the 12 odd ones its mirror.
   std::array<int, 4> perm = {0, 1, 2, 3};
   int even = 0;
