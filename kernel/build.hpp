@@ -43,8 +43,9 @@ struct BuildOptions {
   bool check_combinatorics = false;
   // Keep each facet's mirror in the result (Tetrahedralization::adjacency, 16 bytes per
   // tet), for consumers that would otherwise pair the facets again (the Voronoi
-  // checker's tables). Serial builds only: a threaded build's canonical compaction
-  // reorders the tets and leaves it empty.
+  // checker's tables). A threaded build copies its records before the canonical
+  // compaction and finds each in the output afterwards (kernel/canonical_order.hpp):
+  // 32 bytes per record more at the end of the build.
   bool keep_adjacency = false;
 };
 

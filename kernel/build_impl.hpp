@@ -205,8 +205,13 @@ void finish_threaded(InsertionJob<B>& j, ParallelInsertion<B>& par) {
   j.res.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - j.t0).count();
   j.res.peak_tets = par.store().size();
   resolve_log(j.res, j.log, j.order);
+  // With keep_adjacency: a copy of the records, read again once the tets are in place.
+  std::vector<TetRecord> copy;
+  if (j.opt.keep_adjacency) copy.assign(par.store().records(), par.store().records() + par.store().size());
   compact_canonical(par.store().records(), par.store().size(), j.n, j.order, j.res.mesh.tets, j.threads);
   std::free(par.store().release_records());
+  if (j.opt.keep_adjacency)
+    j.res.mesh.adjacency = canonical_adjacency(copy.data(), copy.size(), j.n, j.order, j.res.mesh.tets, j.threads);
 }
 
 // The threaded build (kernel/parallel_build.hpp); fills j.res.

@@ -283,4 +283,53 @@ void compact_canonical(TetRecord* records, std::size_t size, std::uint32_t n, co
   sort_buckets(out, n, order, l, threads);
 }
 
+std::vector<std::uint32_t> canonical_adjacency(const TetRecord* records, std::size_t size, std::uint32_t n,
+                                               const std::vector<std::uint32_t>& order, const std::vector<Tet>& out,
+                                               unsigned threads) {
+  constexpr std::size_t kChunk = 1 << 14;
+  // Vertex id of each input index, and where each vertex id's run of tets starts in `out`
+  // (out is sorted on vertex ids, then translated to input indices).
+  std::vector<std::uint32_t> id(order.size(), kNone), run(n, kNone);
+  for (std::uint32_t v = 0; v < n; ++v) id[order[v]] = v;
+  parallel_chunks(out.size(), threads, kChunk, [&](std::size_t b, std::size_t e, unsigned) {
+    for (std::size_t j = b; j < e; ++j)
+      if (j == 0 || out[j - 1][0] != out[j][0]) run[id[out[j][0]]] = static_cast<std::uint32_t>(j);
+  });
+  // Each finite record's place in `out`.
+  std::vector<std::uint32_t> at(size, kNone);
+  parallel_chunks(size, threads, kChunk, [&](std::size_t b, std::size_t e, unsigned) {
+    for (std::size_t r = b; r < e; ++r) {
+      if (!finite(records[r], n)) continue;
+      const Tet t = rotate({records[r].v[0], records[r].v[1], records[r].v[2], records[r].v[3]});
+      const Tet want{order[t[0]], order[t[1]], order[t[2]], order[t[3]]};
+      for (std::size_t j = run[t[0]]; j < out.size() && out[j][0] == want[0]; ++j)
+        if (out[j] == want) {
+          at[r] = static_cast<std::uint32_t>(j);
+          break;
+        }
+    }
+  });
+  // Output slot k of a record's tet holds input index out[at][k]; its facet's mirror is
+  // the record's adj at the slot with that vertex, moved the same way on the other side.
+  const auto slot_of = [&](const Tet& t, std::uint32_t input) {
+    return static_cast<std::uint32_t>(std::find(t.begin(), t.end(), input) - t.begin());
+  };
+  std::vector<std::uint32_t> adjacency(4 * out.size(), kNone);
+  parallel_chunks(size, threads, kChunk, [&](std::size_t b, std::size_t e, unsigned) {
+    for (std::size_t r = b; r < e; ++r) {
+      if (at[r] == kNone) continue;
+      const TetRecord& rec = records[r];
+      for (int s = 0; s < 4; ++s) {
+        const Facet m = rec.adj[s];
+        if (m.none() || at[m.tet()] == kNone) continue;
+        const std::uint32_t u = at[m.tet()];
+        const std::uint32_t k = slot_of(out[at[r]], order[rec.v[s]]);
+        const std::uint32_t g = slot_of(out[u], order[records[m.tet()].v[m.face()]]);
+        adjacency[4 * std::size_t(at[r]) + k] = 4 * u + g;
+      }
+    }
+  });
+  return adjacency;
+}
+
 }  // namespace dtlab

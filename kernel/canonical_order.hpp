@@ -34,4 +34,14 @@ void canonical_order(std::vector<Tet>& tets, std::size_t points, unsigned thread
 void compact_canonical(TetRecord* records, std::size_t size, std::uint32_t n, const std::vector<std::uint32_t>& order,
                        std::vector<Tet>& out, unsigned threads);
 
+// Tetrahedralization::adjacency of compact_canonical's output `out`, from a copy of the
+// records it was made from (`records`, all `size` of them, read before compact_canonical
+// overwrote them): every finite record found in `out` (the run of its first id, located
+// through the inverse of `order`, scanned for its other three), then each of its facets'
+// mirrors moved to the output's rotations. In parallel; 8 bytes per point and 4 per record
+// beside the copy.
+std::vector<std::uint32_t> canonical_adjacency(const TetRecord* records, std::size_t size, std::uint32_t n,
+                                               const std::vector<std::uint32_t>& order, const std::vector<Tet>& out,
+                                               unsigned threads);
+
 }  // namespace dtlab

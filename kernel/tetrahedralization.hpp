@@ -16,7 +16,7 @@ struct Tetrahedralization {
   std::vector<Tet> tets;       // finite tets; orient3d(p[t0],p[t1],p[t2],p[t3]) > 0
   // Empty, or 4 per tet: at 4t+f the facet opposite tets[t][f] seen from the tet across
   // it, as 4u+g (tets[u][g] is u's vertex opposite the facet), kNone on the boundary. Only
-  // our serial build fills it, when asked (BuildOptions::keep_adjacency).
+  // our build fills it, when asked (BuildOptions::keep_adjacency).
   std::vector<std::uint32_t> adjacency;
 };
 

@@ -333,3 +333,73 @@ TEST_CASE("parallel build with a non-robust backend: a named failure or a result
     CHECK(r.stats.inserted + r.skipped.size() + r.duplicates.size() == pts.size());
   }
 }
+
+namespace {
+
+// Each facet of the tets as (its three vertices sorted, its apex, the apex across it or
+// kNone), sorted: the adjacency as a function of the tet set, whatever the tets' order
+// and rotations. Empty when some entry is not the mirror facet (not symmetric, the three
+// vertices not shared, or the apex shared).
+std::vector<std::array<std::uint32_t, 5>> facet_mirrors(const Tetrahedralization& m) {
+  std::vector<std::array<std::uint32_t, 5>> out;
+  const auto& adj = m.adjacency;
+  if (adj.size() != 4 * m.tets.size()) return {};
+  for (std::size_t r = 0; r < adj.size(); ++r) {
+    const Tet& t = m.tets[r / 4];
+    const int f = static_cast<int>(r % 4);
+    std::array<std::uint32_t, 3> v{};
+    for (int k = 0, i = 0; k < 4; ++k)
+      if (k != f) v[i++] = t[k];
+    std::sort(v.begin(), v.end());
+    std::uint32_t across = 0xFFFFFFFFu;
+    if (adj[r] != 0xFFFFFFFFu) {
+      const Tet& u = m.tets[adj[r] / 4];
+      if (adj[adj[r]] != r || std::find(t.begin(), t.end(), u[adj[r] % 4]) != t.end()) return {};
+      for (auto x : v)
+        if (std::find(u.begin(), u.end(), x) == u.end()) return {};
+      across = u[adj[r] % 4];
+    }
+    out.push_back({v[0], v[1], v[2], t[f], across});
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("parallel build: keep_adjacency gives each facet's mirror, the serial build's, at every thread count",
+          "[threads]") {
+  std::vector<Point3> copies = lattice(7, 5);
+  const std::size_t n = copies.size();
+  for (std::size_t i = 0; i < n; ++i) copies.push_back(copies[(i * 7919) % n]);
+  BuildOptions big;
+  big.boundary = Boundary::bigtet;
+  big.bigtet_factor = 100;
+  const std::vector<std::pair<std::vector<Point3>, BuildOptions>> inputs = {
+      {test::uniform(3000, 4, 0, 1), {}}, {copies, {}}, {lattice(8, 2), big}};
+  for (std::size_t c = 0; c < inputs.size(); ++c) {
+    INFO("input " << c);
+    BuildOptions o = inputs[c].second;
+    o.keep_adjacency = true;
+    const BuildResult serial = build_delaunay(inputs[c].first, kAdaptiveSos, o);
+    REQUIRE_FALSE(serial.failure);
+    const auto expected = facet_mirrors(serial.mesh);
+    REQUIRE_FALSE(expected.empty());
+    CHECK(std::count_if(expected.begin(), expected.end(), [](const auto& e) { return e[4] == 0xFFFFFFFFu; }) > 0);
+    std::vector<std::uint32_t> first;
+    for (unsigned threads : {2u, 3u, 4u}) {
+      INFO("threads " << threads);
+      o.threads = threads;
+      o.parallel_grain = 1;
+      const BuildResult r = build_delaunay(inputs[c].first, kAdaptiveSos, o);
+      REQUIRE_FALSE(r.failure);
+      const bool same = facet_mirrors(r.mesh) == expected;
+      CHECK(same);
+      if (first.empty()) first = r.mesh.adjacency;
+      const bool same_array = r.mesh.adjacency == first;  // the canonical order's: schedule-free
+      CHECK(same_array);
+    }
+    o.keep_adjacency = false;
+    CHECK(build_delaunay(inputs[c].first, kAdaptiveSos, o).mesh.adjacency.empty());
+  }
+}

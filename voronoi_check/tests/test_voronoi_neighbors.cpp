@@ -1,6 +1,7 @@
 // The relation's tables from the build's adjacency (Tetrahedralization::adjacency) against
 // the same tables from the facet table: the same degenerate tets, hull edges and
-// neighbour sets, on uniform sites and on degenerate families.
+// neighbour sets, on uniform sites and on degenerate families, from serial and threaded
+// builds.
 #include <catch2/catch.hpp>
 
 #include <memory>
@@ -14,9 +15,12 @@ using namespace dtlab;
 
 namespace {
 
-std::shared_ptr<const Tetrahedralization> dt_of(const std::vector<Point3>& sites, bool adjacency) {
+std::shared_ptr<const Tetrahedralization> dt_of(const std::vector<Point3>& sites, bool adjacency,
+                                                unsigned threads = 1) {
   BuildOptions bo;
   bo.keep_adjacency = adjacency;
+  bo.threads = threads;
+  bo.parallel_grain = 1;
   BuildResult r = build_delaunay(sites, PredicateSpec{"adaptive", 0, false, true}, bo);
   REQUIRE(!r.failure);
   return std::make_shared<const Tetrahedralization>(std::move(r.mesh));
@@ -30,11 +34,12 @@ TEST_CASE("relation tables: the build's adjacency gives the facet table's answer
     inputs.emplace_back(name, fuzz::find_family(name)->generate(600, 2));
   for (const auto& [name, sites] : inputs) {
     INFO(name);
-    const auto with = dt_of(sites, true), without = dt_of(sites, false);
-    REQUIRE(with->adjacency.size() == 4 * with->tets.size());
-    REQUIRE(without->adjacency.empty());
-    REQUIRE(with->tets == without->tets);
     for (const unsigned threads : {1u, 3u}) {
+      // Built and judged at `threads` (a threaded build's adjacency from its canonical order).
+      const auto with = dt_of(sites, true, threads), without = dt_of(sites, false, threads);
+      REQUIRE(with->adjacency.size() == 4 * with->tets.size());
+      REQUIRE(without->adjacency.empty());
+      REQUIRE(with->tets == without->tets);
       const VoronoiNeighbors a(sites, with, threads), b(sites, without, threads);
       CHECK(a.degenerate_tets() == b.degenerate_tets());
       NeighborScratch sa, sb;
