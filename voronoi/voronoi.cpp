@@ -584,7 +584,7 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
 
   auto t0 = Clock::now();
   BuildOptions build = o.build;
-  build.keep_adjacency = o.keep_dt;  // the checker's tables pair no facets (serial builds)
+  build.keep_adjacency = o.keep_dt;  // the checker's tables then pair no facets
   BuildResult r = build_delaunay(sites, o.predicates, build);
   vd.tets = r.mesh.tets.size();
   if (r.failure && r.failure->kind != FailureKind::lower_dimensional)

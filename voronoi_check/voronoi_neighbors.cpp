@@ -47,7 +47,7 @@ VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, unsigned threa
   BuildOptions bo;
   bo.threads = threads;
   bo.count_stages = false;
-  bo.keep_adjacency = true;  // the tables then pair no facets (serial builds)
+  bo.keep_adjacency = true;  // the tables then pair no facets
   BuildResult r = build_delaunay(sites, PredicateSpec{"adaptive", 0, false, true}, bo);
   if (r.failure) {
     if (r.failure->kind == FailureKind::lower_dimensional)
