@@ -19,6 +19,7 @@
 #include "fracture/render_png.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
+#include "oracle/peers/child_process.hpp"
 #include "sampling/bumpy_torus.hpp"
 #include "sampling/mesh_io.hpp"
 
@@ -228,6 +229,8 @@ int run_fracture(const FractureArgs& a) {
   }
   if (!a.png.empty()) outputs.push_back(a.png);
   refuse_overwriting_inputs(outputs, fracture_inputs(a));
+  if (a.tets && !program_found(a.tetgen))  // before the work, not after it
+    throw UsageError("--tets: no TetGen program " + a.tetgen + " (give --tetgen FILE)");
   Progress progress("fracture", a.quiet);
   const TriangleMesh mesh = a.mesh == "builtin" ? make_bumpy_torus() : read_mesh(a.mesh);
   FractureOptions o = fracture_options(a, *method);

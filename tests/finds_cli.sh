@@ -71,6 +71,10 @@ done
 expect 2 "fracture --margin nan" -- "$dtlab" fracture builtin --pieces 2 --margin nan
 expect 2 "fracture --explode nan" -- "$dtlab" fracture builtin --pieces 2 --explode nan
 expect 2 "fracture --margin 1e300" -- "$dtlab" fracture builtin --pieces 2 --margin 1e300
+# --tets with a TetGen that is not there: refused before the work (it was exit 1 after it).
+expect 2 "fracture --tets --tetgen /nonexistent" -- "$dtlab" fracture builtin --pieces 2 --tets --tetgen /nonexistent/tetgen --out "$tmp/ftg"
+says "fracture --tets --tetgen /nonexistent names it" "no TetGen program /nonexistent/tetgen"
+expect 2 "fracture --tets --tetgen not in PATH" -- "$dtlab" fracture builtin --pieces 2 --tets --tetgen no-such-tetgen-here --out "$tmp/ftg"
 
 # Write errors: /dev/full.
 if [ -w /dev/full ]; then

@@ -256,6 +256,24 @@ void classify_child_end(int status, const std::string& log_path, ChildResult& r)
   }
 }
 
+bool program_found(const std::string& program) {
+  const auto executable = [](const std::string& path) {
+    struct stat st {};
+    return stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && access(path.c_str(), X_OK) == 0;
+  };
+  if (program.empty()) return false;
+  if (program.find('/') != std::string::npos) return executable(program);
+  const char* path = std::getenv("PATH");
+  const std::string dirs = path ? path : "/usr/bin:/bin";
+  for (std::size_t at = 0;;) {
+    const std::size_t end = dirs.find(':', at);
+    const std::string dir = dirs.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    if (executable((dir.empty() ? std::string(".") : dir) + "/" + program)) return true;
+    if (end == std::string::npos) return false;
+    at = end + 1;
+  }
+}
+
 ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& limits) {
   if (!std::isfinite(limits.timeout_s) || limits.timeout_s <= 0)
     throw std::invalid_argument("run_child: the timeout must be a positive number of seconds");

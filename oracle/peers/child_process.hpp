@@ -61,6 +61,11 @@ struct ChildResult {
 // an empty argv or a NaN, infinite, zero or negative timeout.
 ChildResult run_child(const std::vector<std::string>& argv, const ChildLimits& limits);
 
+// Whether run_child could start `program`: with a '/', an executable regular file there;
+// else one in some directory of $PATH (an empty entry is the current directory). For
+// commands that would otherwise find a missing program only after their work.
+bool program_found(const std::string& program);
+
 // `body` run in a forked child of this process (no exec) under the same limits, own
 // process group and classification as run_child; the child ends the parent's death
 // (the exit watchdog's plain-fork rule) and its stdout and stderr go to limits.log_path.
