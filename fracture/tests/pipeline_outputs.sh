@@ -62,10 +62,11 @@ assert abs(vi["float_relative"]) <= 1e-12 and abs(vi["exact_relative"]) <= 1e-12
 print("tets: %d in %d pieces, exact tiling, written coordinates off by %.1e (exact), %.1e (float)" %
       (m["tets"]["tets"], len(m["pieces"]), vi["exact_relative"], vi["float_relative"]))
 PY
-  # A TetGen that is not there is a named failure (exit 1), not a crash.
+  # A TetGen that is not there is refused before the work (exit 2), nothing written.
   "$dtlab" fracture builtin --pieces 3 --quiet --out "$tmp/t2" --tets --tetgen /nonexistent/tetgen 2>"$tmp/err"
   rc=$?
-  [ $rc -eq 1 ] && grep -q "piece 0: tetgen" "$tmp/err" || fail "missing tetgen: exit $rc $(cat "$tmp/err")"
+  [ $rc -eq 2 ] && grep -q "no TetGen program /nonexistent/tetgen" "$tmp/err" && [ ! -e "$tmp/t2/manifest.json" ] ||
+    fail "missing tetgen: exit $rc $(cat "$tmp/err")"
 else
   echo "SKIP --tets: tetgen is not installed"
 fi
