@@ -583,8 +583,11 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   const unsigned threads = thread_count(o.threads);
 
   auto t0 = Clock::now();
+  // The DT is kept only from exact predicates with perturbation (the checker's relation).
+  const bool keep_dt =
+      o.keep_dt && o.predicates.perturb && (o.predicates.backend == "adaptive" || o.predicates.backend == "exact");
   BuildOptions build = o.build;
-  build.keep_adjacency = o.keep_dt;  // the checker's tables then pair no facets
+  build.keep_adjacency = keep_dt;  // the checker's tables then pair no facets
   BuildResult r = build_delaunay(sites, o.predicates, build);
   vd.tets = r.mesh.tets.size();
   if (r.failure && r.failure->kind != FailureKind::lower_dimensional)
@@ -595,8 +598,10 @@ VoronoiDiagram compute_voronoi(std::span<const Point3> sites, const VoronoiOptio
   if (r.failure) {
     all_pairs_cells(sites, dup, o, vd);
   } else {
-    const bool exact = o.predicates.perturb && (o.predicates.backend == "adaptive" || o.predicates.backend == "exact");
-    if (o.keep_dt && exact) vd.dt = std::make_shared<const Tetrahedralization>(r.mesh);  // ranking consumes the tets
+    // Points and tets copied (ranking consumes the tets); the adjacency, unused here, moved.
+    if (keep_dt)
+      vd.dt = std::make_shared<const Tetrahedralization>(
+          Tetrahedralization{r.mesh.points, r.mesh.tets, std::move(r.mesh.adjacency)});
     const RankedDelaunay dt = rank_by_first_cell(r.mesh.tets, sites, dup);
     const StarsAndCentres sc = stars_and_centres(dt, threads);
     dual_cells(sites, dup, dt, sc, o, threads, vd);
