@@ -1,9 +1,11 @@
 #include "oracle/peers/child_process.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,6 +24,7 @@
 #include <thread>
 
 #include "kernel/exit_guard.hpp"
+#include "oracle/peers/program_reaper.hpp"
 
 namespace dtlab {
 namespace {
@@ -98,46 +101,71 @@ std::uint64_t vm_hwm_bytes(int pid) {
   return kb * 1024;
 }
 
-int spawn_child(const std::vector<std::string>& args, const ChildLimits& limits, int stdin_fd, int reply_fd,
-                std::string& message) {
+SpawnedChild spawn_child(const std::vector<std::string>& args, const ChildLimits& limits, int stdin_fd,
+                         int reply_fd, std::string& message) {
   if (args.empty()) throw std::invalid_argument("run_child: no program");
   std::vector<std::string> copy = args;
   std::vector<char*> argv;
   for (auto& a : copy) argv.push_back(a.data());
   argv.push_back(nullptr);
-  int pipe_fd[2];
-  if (pipe2(pipe_fd, O_CLOEXEC) != 0) throw std::runtime_error("run_child: pipe failed");
+  int exec_pipe[2], pid_pipe[2];  // the exec's errno (EOF when it succeeded); the program's pid
+  if (pipe2(exec_pipe, O_CLOEXEC) != 0) throw std::runtime_error("run_child: pipe failed");
+  if (pipe2(pid_pipe, O_CLOEXEC) != 0) {
+    close(exec_pipe[0]);
+    close(exec_pipe[1]);
+    throw std::runtime_error("run_child: pipe failed");
+  }
   GuardedEnvironment env;  // starts the exit guard; DTLAB_GUARD: found again if it leaves its group (end_tagged)
   mark_exec_fork(true);
-  const pid_t pid = fork();
+  const pid_t reaper = fork();
+  if (reaper == 0) {  // the reaper (oracle/peers/program_reaper.hpp), then the program
+    become_reaper();
+    // vfork: the reaper waits until the program has exec'd (or failed to) and no second
+    // copy of dtlab's page tables is made. The program's side calls only exec_child.
+    const pid_t program = vfork();
+    if (program == 0) {
+      close(pid_pipe[1]);
+      exec_child(argv.data(), env, limits.log_path.empty() ? nullptr : limits.log_path.c_str(),
+                 limits.memory_bytes, stdin_fd, reply_fd, exec_pipe[1]);
+    }
+    if (program > 0) setpgid(program, program);  // both sides: a kill right after the pid is known reaches it
+    [[maybe_unused]] const ssize_t w = write(pid_pipe[1], &program, sizeof program);
+    if (program < 0) _exit(127);
+    reap_program(program);
+  }
   mark_exec_fork(false);
-  if (pid < 0) {
-    close(pipe_fd[0]);
-    close(pipe_fd[1]);
+  close(exec_pipe[1]);
+  close(pid_pipe[1]);
+  if (reaper < 0) {
+    close(exec_pipe[0]);
+    close(pid_pipe[0]);
     message = std::string("fork failed: ") + std::strerror(errno);
-    return -1;
+    return {};
   }
-  if (pid == 0) {
-    close(pipe_fd[0]);
-    exec_child(argv.data(), env, limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes,
-               stdin_fd, reply_fd, pipe_fd[1]);
+  pid_t program = -1;
+  ssize_t got = 0;
+  while ((got = read(pid_pipe[0], &program, sizeof program)) < 0 && errno == EINTR) {
   }
-  // Both sides set the group, so a kill right after fork reaches it.
-  setpgid(pid, pid);
-  env.started(pid);
-  close(pipe_fd[1]);
+  close(pid_pipe[0]);
+  if (got != static_cast<ssize_t>(sizeof program) || program <= 0) {
+    close(exec_pipe[0]);
+    waitpid(reaper, nullptr, 0);
+    message = "fork failed";
+    return {};
+  }
+  env.started(program);
   int exec_errno = 0;
-  const ssize_t got = read(pipe_fd[0], &exec_errno, sizeof exec_errno);  // EOF when exec succeeded
-  close(pipe_fd[0]);
-  if (got == static_cast<ssize_t>(sizeof exec_errno)) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    end_tagged(pid);  // drops its record of the pids at the start
-    release_group(pid);
-    message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);
-    return -1;
+  while ((got = read(exec_pipe[0], &exec_errno, sizeof exec_errno)) < 0 && errno == EINTR) {
   }
-  return pid;
+  close(exec_pipe[0]);
+  if (got == static_cast<ssize_t>(sizeof exec_errno)) {
+    waitpid(reaper, nullptr, 0);
+    end_tagged(program);  // drops its record of the pids at the start
+    release_group(program);
+    message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);
+    return {};
+  }
+  return {reaper, program};
 }
 
 namespace {
@@ -167,28 +195,40 @@ bool tells_allocation_failure(const std::string& log_path) {
 
 enum class WaitEnd { ended, timed_out, output_limit, wait_failed };
 
-// Waits for `pid` (the leader of its own group) under `limits`: samples its peak memory
-// and, through `output_bytes`, the size of what it wrote; kills the group at the time
+// Waits for `child` under `limits`: samples the program's peak memory and, through
+// `output_bytes`, the size of what it wrote; kills the program's group at the time
 // limit, at the output cap or on an interrupt request (then throws ChildInterrupted).
-WaitEnd wait_limited(pid_t pid, const ChildLimits& limits, Clock::time_point start, ChildResult& r, int& status,
-                     const std::function<std::uint64_t()>& output_bytes) {
+WaitEnd wait_limited(const SpawnedChild& child, const ChildLimits& limits, Clock::time_point start, ChildResult& r,
+                     int& status, const std::function<std::uint64_t()>& output_bytes) {
+  // Readable once the waited process has ended: each poll's pause ends at its end, so
+  // its time is not rounded up to the poll interval. Without it (old kernels), a sleep.
+  struct ExitDescriptor {
+    int fd;
+    ~ExitDescriptor() {
+      if (fd >= 0) close(fd);
+    }
+  } ended{static_cast<int>(syscall(SYS_pidfd_open, child.reaper, 0))};
+  const auto pause_ms = [&](int ms) {
+    pollfd p{ended.fd, POLLIN, 0};
+    if (ended.fd < 0 || poll(&p, 1, ms) < 0) std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+  };
   rusage usage{};
   WaitEnd end = WaitEnd::ended;
   for (;;) {
     // Sampled before each wait: the last sample is at most one poll interval old.
-    r.peak_rss_bytes = std::max(r.peak_rss_bytes, vm_hwm_bytes(pid));
-    const pid_t w = wait4(pid, &status, WNOHANG, &usage);
+    r.peak_rss_bytes = std::max(r.peak_rss_bytes, vm_hwm_bytes(child.program));
+    const pid_t w = wait4(child.reaper, &status, WNOHANG, &usage);
     r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if (w == pid) break;
+    if (w == child.reaper) break;
     if (w < 0 && errno != EINTR) {
-      kill(-pid, SIGKILL);
+      kill(-child.program, SIGKILL);
       return WaitEnd::wait_failed;
     }
     if (interrupt_requested()) {
-      kill(-pid, SIGKILL);
-      end_tagged(pid);
-      wait4(pid, &status, 0, &usage);
-      release_group(pid);
+      kill(-child.program, SIGKILL);
+      end_tagged(child.program);
+      wait4(child.reaper, &status, 0, &usage);
+      release_group(child.program);
       throw ChildInterrupted();
     }
     if (r.seconds > limits.timeout_s)
@@ -196,23 +236,24 @@ WaitEnd wait_limited(pid_t pid, const ChildLimits& limits, Clock::time_point sta
     else if (limits.log_cap_bytes && output_bytes() > limits.log_cap_bytes)
       end = WaitEnd::output_limit;
     if (end != WaitEnd::ended) {
-      kill(-pid, SIGKILL);
-      wait4(pid, &status, 0, &usage);
+      kill(-child.program, SIGKILL);
+      wait4(child.reaper, &status, 0, &usage);
       break;
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(r.seconds < 0.2 ? 1 : r.seconds < 2 ? 5 : 20));
+    pause_ms(r.seconds < 0.2 ? 1 : r.seconds < 2 ? 5 : 20);
   }
   r.maxrss_bytes = static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
   return end;
 }
 
 // The end of a child waited for by wait_limited: its group released, its status set.
-ChildResult& finish_child(pid_t pid, WaitEnd end, int status, const ChildLimits& limits, ChildResult& r) {
-  // The group may hold grandchildren that outlived their parent, and descendants that
-  // left the group carry its tag.
-  kill(-pid, SIGKILL);
-  end_tagged(pid);
-  release_group(pid);
+ChildResult& finish_child(const SpawnedChild& child, WaitEnd end, int status, const ChildLimits& limits,
+                          ChildResult& r) {
+  // The group may hold grandchildren that outlived their parent (a forked body has no
+  // reaper to end them), and descendants that left the group carry its tag.
+  kill(-child.program, SIGKILL);
+  end_tagged(child.program);
+  release_group(child.program);
   if (end == WaitEnd::wait_failed) {
     r.status = ChildStatus::not_started;
     r.message = "wait failed";
@@ -279,11 +320,11 @@ ChildResult run_child(const std::vector<std::string>& args, const ChildLimits& l
     throw std::invalid_argument("run_child: the timeout must be a positive number of seconds");
   ChildResult r;
   const auto start = Clock::now();
-  const pid_t pid = spawn_child(args, limits, -1, -1, r.message);
-  if (pid < 0) return r;  // not_started
+  const SpawnedChild child = spawn_child(args, limits, -1, -1, r.message);
+  if (child.reaper < 0) return r;  // not_started
   int status = 0;
-  const WaitEnd end = wait_limited(pid, limits, start, r, status, [&] { return file_size_of(limits.log_path); });
-  return finish_child(pid, end, status, limits, r);
+  const WaitEnd end = wait_limited(child, limits, start, r, status, [&] { return file_size_of(limits.log_path); });
+  return finish_child(child, end, status, limits, r);
 }
 
 ChildResult run_forked(const std::function<void(int reply_fd)>& body, const ChildLimits& limits, std::string& reply) {
@@ -345,14 +386,14 @@ ChildResult run_forked(const std::function<void(int reply_fd)>& body, const Chil
   int status = 0;
   WaitEnd end = WaitEnd::wait_failed;
   try {
-    end = wait_limited(pid, limits, start, r, status, drain);
+    end = wait_limited({pid, pid}, limits, start, r, status, drain);
   } catch (...) {
     close(fd[0]);
     throw;
   }
   drain();
   close(fd[0]);
-  return finish_child(pid, end, status, limits, r);
+  return finish_child({pid, pid}, end, status, limits, r);
 }
 
 std::string last_line_of(const std::string& path) {

@@ -5,7 +5,8 @@
 // watchdog (kernel/exit_guard.hpp), its stdout and stderr captured under a size cap, and
 // its end classified (ChildStatus, out_of_memory), so that neither a crash, nor a hang,
 // nor a runaway allocation or output of the child can take the caller down. On time-out
-// the whole process group is killed (a shell or python wrapper takes its children along).
+// the whole process group is killed (a shell or python wrapper takes its children along),
+// and a program's reaper ends the descendants that left the group.
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
@@ -79,13 +80,23 @@ void classify_child_end(int wait_status, const std::string& log_path, ChildResul
 // True when `text` (a log's end, a helper's reply) tells of a failed allocation.
 bool mentions_allocation_failure(std::string text);
 
+// A program started by spawn_child: `program` leads its own process group (the group
+// kills, the DTLAB_GUARD tag, the peak memory); `reaper` is its parent, the child of this
+// process to wait for, which ends everything the program leaves behind and then exits
+// as the program did (oracle/peers/program_reaper.hpp). For a forked body (run_forked)
+// both are the fork. -1: not started.
+struct SpawnedChild {
+  int reaper = -1;
+  int program = -1;
+};
+
 // The lower level of run_child (and of ServedChild, oracle/peers/served_child.hpp): starts
-// argv in its own process group under limits' memory limit, stdout and stderr to
-// limits.log_path, stdin from `stdin_fd` (-1: /dev/null) and, when reply_fd >= 0, that
-// descriptor as the program's fd 3. Returns its pid, or -1 with `message` set when it
-// did not start. The caller waits for it.
-int spawn_child(const std::vector<std::string>& argv, const ChildLimits& limits, int stdin_fd, int reply_fd,
-                std::string& message);
+// argv under its reaper, in its own process group, under limits' memory limit, stdout and
+// stderr to limits.log_path, stdin from `stdin_fd` (-1: /dev/null) and, when
+// reply_fd >= 0, that descriptor as the program's fd 3. Returns both pids, or -1s with
+// `message` set when it did not start. The caller waits for the reaper.
+SpawnedChild spawn_child(const std::vector<std::string>& argv, const ChildLimits& limits, int stdin_fd,
+                         int reply_fd, std::string& message);
 
 // Interrupts. Every child's process group is listed with the exit watchdog
 // (kernel/exit_guard.hpp) from before its exec until it is reaped, so no child outlives

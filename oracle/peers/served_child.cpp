@@ -58,10 +58,10 @@ bool ServedChild::start(ChildResult& r) {
     r.message = "pipe failed";
     return false;
   }
-  pid_ = spawn_child(argv_, limits_, request[1], reply[1], r.message);
+  child_ = spawn_child(argv_, limits_, request[1], reply[1], r.message);
   close(request[1]);
   close(reply[1]);
-  if (pid_ < 0) {
+  if (child_.reaper < 0) {
     close(request[0]);
     close(reply[0]);
     r.status = ChildStatus::not_started;
@@ -74,26 +74,25 @@ bool ServedChild::start(ChildResult& r) {
 }
 
 bool ServedChild::stop(int* status) {
-  if (pid_ < 0) return false;
+  if (child_.reaper < 0) return false;
   if (to_ >= 0) close(to_);  // EOF: a server that is still well ends by itself
   if (from_ >= 0) close(from_);
   to_ = from_ = -1;
   int s = 0;
   bool killed = false;
   const auto t0 = Clock::now();
-  while (waitpid(pid_, &s, WNOHANG) == 0) {
+  while (waitpid(child_.reaper, &s, WNOHANG) == 0) {
     if (since(t0) > 0.5) {
-      kill(-pid_, SIGKILL);
-      waitpid(pid_, &s, 0);
+      kill(-child_.program, SIGKILL);
+      waitpid(child_.reaper, &s, 0);
       killed = true;
       break;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  kill(-pid_, SIGKILL);  // grandchildren
-  end_tagged(pid_);      // and descendants that left the group
-  release_group(pid_);
-  pid_ = -1;
+  end_tagged(child_.program);  // descendants that left the group kept its tag (the reaper ended the rest)
+  release_group(child_.program);
+  child_ = {};
   if (status) *status = s;
   return killed;
 }
@@ -101,22 +100,22 @@ bool ServedChild::stop(int* status) {
 ChildResult ServedChild::ask(const std::string& request, double timeout_s, std::string& reply) {
   ChildResult r;
   reply.clear();
-  if (pid_ < 0 && !start(r)) return r;
+  if (child_.reaper < 0 && !start(r)) return r;
   const auto t0 = Clock::now();
-  reset_peak(pid_);
+  reset_peak(child_.program);
   bool alive = send_all(to_, request + "\n");
   std::size_t end = std::string::npos;
   while (alive && (end = buffer_.find('\n')) == std::string::npos) {
     const double left = timeout_s - since(t0);
     if (left <= 0) {
-      kill(-pid_, SIGKILL);
+      kill(-child_.program, SIGKILL);
       stop();
       r.status = ChildStatus::timed_out;
       r.seconds = since(t0);
       return r;
     }
     if (interrupt_requested()) {
-      kill(-pid_, SIGKILL);
+      kill(-child_.program, SIGKILL);
       stop();
       throw ChildInterrupted();
     }
@@ -142,7 +141,7 @@ ChildResult ServedChild::ask(const std::string& request, double timeout_s, std::
     if (r.status == ChildStatus::exited && r.exit_code == 0) r.exit_code = 3;  // ended without answering: no answer
     return r;
   }
-  r.peak_rss_bytes = vm_hwm_bytes(pid_);
+  r.peak_rss_bytes = vm_hwm_bytes(child_.program);
   const std::string line = buffer_.substr(0, end);
   buffer_.erase(0, end + 1);
   char* rest = nullptr;

@@ -31,7 +31,7 @@ class ServedChild {
   // is started afresh on the next request; not_started when it cannot start.
   ChildResult ask(const std::string& request, double timeout_s, std::string& reply);
 
-  int pid() const { return pid_; }
+  int pid() const { return child_.program; }  // the program's; -1 when not running
 
  private:
   bool start(ChildResult& r);
@@ -41,7 +41,7 @@ class ServedChild {
 
   std::vector<std::string> argv_;
   ChildLimits limits_;
-  int pid_ = -1;
+  SpawnedChild child_;
   int to_ = -1;    // our end of its stdin (a socket: writes never raise SIGPIPE)
   int from_ = -1;  // our end of its fd 3
   std::string buffer_;
