@@ -101,8 +101,8 @@ std::uint64_t vm_hwm_bytes(int pid) {
   return kb * 1024;
 }
 
-SpawnedChild spawn_child(const std::vector<std::string>& args, const ChildLimits& limits, int stdin_fd,
-                         int reply_fd, std::string& message) {
+SpawnedChild spawn_child(const std::vector<std::string>& args, const ChildLimits& limits, int stdin_fd, int reply_fd,
+                         std::string& message) {
   if (args.empty()) throw std::invalid_argument("run_child: no program");
   std::vector<std::string> copy = args;
   std::vector<char*> argv;
@@ -125,8 +125,8 @@ SpawnedChild spawn_child(const std::vector<std::string>& args, const ChildLimits
     const pid_t program = vfork();
     if (program == 0) {
       close(pid_pipe[1]);
-      exec_child(argv.data(), env, limits.log_path.empty() ? nullptr : limits.log_path.c_str(),
-                 limits.memory_bytes, stdin_fd, reply_fd, exec_pipe[1]);
+      exec_child(argv.data(), env, limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes,
+                 stdin_fd, reply_fd, exec_pipe[1]);
     }
     if (program > 0) setpgid(program, program);  // both sides: a kill right after the pid is known reaches it
     [[maybe_unused]] const ssize_t w = write(pid_pipe[1], &program, sizeof program);

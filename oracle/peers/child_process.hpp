@@ -95,8 +95,8 @@ struct SpawnedChild {
 // stderr to limits.log_path, stdin from `stdin_fd` (-1: /dev/null) and, when
 // reply_fd >= 0, that descriptor as the program's fd 3. Returns both pids, or -1s with
 // `message` set when it did not start. The caller waits for the reaper.
-SpawnedChild spawn_child(const std::vector<std::string>& argv, const ChildLimits& limits, int stdin_fd,
-                         int reply_fd, std::string& message);
+SpawnedChild spawn_child(const std::vector<std::string>& argv, const ChildLimits& limits, int stdin_fd, int reply_fd,
+                         std::string& message);
 
 // Interrupts. Every child's process group is listed with the exit watchdog
 // (kernel/exit_guard.hpp) from before its exec until it is reaped, so no child outlives
