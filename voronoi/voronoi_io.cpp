@@ -7,6 +7,7 @@
 
 #include "kernel/output_file.hpp"
 #include "voronoi/cell_check.hpp"
+#include "voronoi/voronoi_range.hpp"
 
 namespace dtlab {
 
@@ -45,6 +46,7 @@ void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd, VtuForma
   std::vector<double> volume;
   std::vector<std::uint8_t> defect;
   const double tol = 1e-9 * vd.scale;
+  const double vertex_error = cells_rounding_floor(vd, false).vertex_error;  // --check's rule
   // Cells by vertex count (stable): meshio reads polyhedra into one block per vertex
   // count, in order of first appearance, but splits the cell data in ascending count;
   // the two agree only in this order. VTK and ParaView take any order.
@@ -60,7 +62,7 @@ void write_cells_vtu(const std::string& path, const VoronoiDiagram& vd, VtuForma
     site.push_back(static_cast<std::int64_t>(i));
     volume.push_back(c.volume);
     walls.push_back(std::count_if(c.face_neighbor.begin(), c.face_neighbor.end(), [](std::int32_t n) { return n < 0; }));
-    defect.push_back(check_cell(c, tol).empty() ? 0 : 1);
+    defect.push_back(check_cell(c, tol, vertex_error).empty() ? 0 : 1);
   }
   g.cell_data.push_back({"site", std::move(site)});
   g.cell_data.push_back({"volume", std::move(volume)});

@@ -51,11 +51,13 @@ TEST_CASE("planes through existing vertices and edges make no zero-length edges"
   REQUIRE(c.clip({1, 1, 0}, 0, 1, 1e-12));
   CHECK(c.volume() == Approx(4).epsilon(1e-14));
   CHECK(check_cell(as_cell(c), 1e-9) == "");
+  CHECK_FALSE(has_edge_within(as_cell(c), 1e-9));
   CHECK(c.vertex_count() == 6);
   // x - y <= 0 through the same line x=y=0 (an edge of the new face).
   REQUIRE(c.clip({1, -1, 0}, 0, 2, 1e-12));
   CHECK(c.volume() == Approx(2).epsilon(1e-14));
   CHECK(check_cell(as_cell(c), 1e-9) == "");
+  CHECK_FALSE(has_edge_within(as_cell(c), 1e-9));
   CHECK(c.vertex_count() == 6);
   // z <= 1 exactly on the top face: no cut.
   CHECK_FALSE(c.clip({0, 0, 1}, 1, 3, 1e-12));

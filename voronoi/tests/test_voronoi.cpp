@@ -36,6 +36,7 @@ void check_diagram(const VoronoiDiagram& vd, double volume_rel = 1e-12) {
     if (c.duplicate_of >= 0) continue;
     INFO("cell " << i);
     CHECK(check_cell(c, tol) == "");
+    CHECK_FALSE(has_edge_within(c, tol));  // none of these inputs has a real edge that short
     CHECK(c.volume > 0);
     sum += c.volume;
     // Neighbour relation is symmetric.
