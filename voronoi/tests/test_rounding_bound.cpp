@@ -136,7 +136,7 @@ TEST_CASE("check_cell: a corner pair rounded to one point passes, a cell left op
   const Point3 corner{1, 1, 1};
   for (auto& v : m.vertices)
     if (norm(v - corner) < 1e-6) v = corner;
-  CHECK(has_edge_within(m.view(), 0));  // two corners are one point
+  CHECK(has_edge_within(m.view(), 0));          // two corners are one point
   CHECK(check_cell(m.view(), tol, e).empty());  // within the rounding
   // Without the floor too: the corner lies on its three faces' planes, the cut face is
   // below tol^2, and a short (here zero) edge alone is no defect.
