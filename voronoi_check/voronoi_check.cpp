@@ -132,12 +132,16 @@ class Judge {
     // The tolerances: the relative bound, or K ulps of the box's largest coordinate.
     auto& t = r_.tolerances;
     ulp_ = t.ulp = box_ulp(box);
-    const double diag = box.diagonal(), ulp_floor = o.ulps * ulp_;
-    vertex_tol_ = std::max(o.vertex_tolerance * diag, ulp_floor);
-    t.vertex = {vertex_tol_ / diag, ulp_floor > o.vertex_tolerance * diag};
+    // Relative to the cells' scale (cell_scale, voronoi/voronoi.hpp: the box diagonal, or
+    // the sites' default box's where that is shorter), as our own cells' tolerances: of
+    // the diagonal of a box far larger than the sites, 1e-9 let vertices be off by far
+    // more than the cells' size (35 in a box of +-1e10 around the unit cube).
+    const double ulp_floor = o.ulps * ulp_;
+    vertex_tol_ = std::max(o.vertex_tolerance * scale_, ulp_floor);
+    t.vertex = {vertex_tol_ / scale_, ulp_floor > o.vertex_tolerance * scale_};
     // Convexity: per face, the relative tolerance or what vertices within the floor
     // allow for that face's computed plane (voronoi/cell_check.hpp).
-    convex_tol_ = o.convex_tolerance * diag;
+    convex_tol_ = o.convex_tolerance * scale_;
     vertex_error_ = t.floor_distance = std::sqrt(3.0) * ulp_floor;  // the floor as a Euclidean distance
     t.convex = {o.convex_tolerance, false};
     t.small_face = {o.small_face, false};
@@ -382,6 +386,15 @@ class Judge {
     face_defect(p, false, a, f.id, FaceSize{size.area, diameter()});
   }
 
+  // A vertex far from its site (a hull cell's corner on the wall of a box much larger
+  // than the sites) is fixed by planes whose rounding moves it in proportion to that
+  // distance: its relative tolerance is of the distance (max-norm) where that exceeds
+  // the cells' scale.
+  double far_vertex_tolerance(const Point3& v, const Point3& site) const {
+    const Point3 d = v - site;
+    return o_.vertex_tolerance * std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+  }
+
   // Stage 3: one cell's shape, vertices and volume.
   void judge_geometry(std::size_t k, Partial& p, Scratch& s) const {
     const VoronoiCell c = cells_.view(k);
@@ -391,7 +404,6 @@ class Judge {
     p.faces += c.face_count();
     p.vertices += c.vertices.size();
     p.volume_sum += cell_volume(c);
-    const double diag = box_.diagonal();
     std::string why = check_cell_closed(c);
     if (!why.empty())
       ++p.not_closed;
@@ -404,12 +416,15 @@ class Judge {
     // the tolerance changes no number of the report: its solve is skipped.
     const double tol = vertex_tol_;
     vertex_errors(c, sites_, static_cast<std::uint32_t>(site), box_, s.errors, std::min(p.max_vertex_distance, tol));
-    for (const auto& e : s.errors) {
+    const Point3 o = sites_[static_cast<std::size_t>(site)];
+    for (std::size_t j = 0; j < s.errors.size(); ++j) {
+      const VertexError& e = s.errors[j];
       if (!e.decided || e.below) continue;
       p.max_vertex_distance = std::max(p.max_vertex_distance, e.distance);
       p.max_vertex_ulps = std::max(p.max_vertex_ulps, e.distance / ulp_);
-      p.max_vertex_error = std::max(p.max_vertex_error, e.distance / diag);
-      if (e.distance > tol) add(p, VoronoiDefect::vertex_off, site, -1, e.distance / diag);
+      p.max_vertex_error = std::max(p.max_vertex_error, e.distance / scale_);
+      if (e.distance > tol && e.distance > far_vertex_tolerance(c.vertices[j], o))
+        add(p, VoronoiDefect::vertex_off, site, -1, e.distance / scale_);
     }
   }
 

@@ -75,18 +75,18 @@ const char* voronoi_verdict_name(VoronoiVerdict v);
 struct VoronoiWitness {
   VoronoiDefect kind;
   std::int64_t site = -1, neighbor = -1;  // input ids (neighbor: -1 when none)
-  double size = 0;                        // face area / extent^2, vertex error / diagonal, ...
+  double size = 0;                        // face area / extent^2, vertex error / scale, ...
   std::string detail;
 };
 
 struct VoronoiCheckOptions {
   double small_face = 1e-9;        // of the sites' extent squared
-  double vertex_tolerance = 1e-9;  // of the box diagonal
-  double convex_tolerance = 1e-9;  // of the box diagonal
+  double vertex_tolerance = 1e-9;  // of the cells' scale (cell_scale, voronoi/voronoi.hpp)
+  double convex_tolerance = 1e-9;  // of the cells' scale
   double volume_tolerance = 1e-9;  // relative to the box volume
   // The ulp floor K (0: none), in ulps u of the box's largest coordinate: a vertex is
-  // off beyond max(vertex_tolerance * diagonal, K u) (max-norm); a vertex outside a face
-  // plane beyond max(convex_tolerance * diagonal, what vertices within e = sqrt(3) K u
+  // off beyond max(vertex_tolerance * scale, K u) (max-norm); a vertex outside a face
+  // plane beyond max(convex_tolerance * scale, what vertices within e = sqrt(3) K u
   // of a convex cell allow for that face's plane: rounded_plane_tolerance,
   // voronoi/cell_check.hpp); the volumes' sum off beyond max(volume_tolerance * box
   // volume, the sum over cells of volume_rounding_bound at e), the most the volumes can
@@ -114,8 +114,8 @@ struct AppliedTolerance {
 struct VoronoiTolerances {
   double ulp = 0;                   // one ulp u of the box's largest coordinate magnitude
   double floor_distance = 0;        // e = sqrt(3) K u: the ulp floor as a Euclidean distance
-  AppliedTolerance vertex;          // of the box diagonal (as max_vertex_error)
-  AppliedTolerance convex;          // of the box diagonal (ulps: some face's was the floor's, larger)
+  AppliedTolerance vertex;          // of the cells' scale (as max_vertex_error)
+  AppliedTolerance convex;          // of the cells' scale (ulps: some face's was the floor's, larger)
   AppliedTolerance small_face;      // of the extent squared (as largest_small_face; ulps: a face no wider than 2 e was small only by that)
   AppliedTolerance volume;          // relative to the box volume (as volume_error)
   double surface = 0;               // the fan triangles' area of all cells, when the volume floor was computed
@@ -129,7 +129,7 @@ struct VoronoiCheckReport {
   double largest_wrong_face = 0;                            // / extent^2, over missing_face and spurious_face
   double largest_small_face = 0;                            // / extent^2, over the small ones
   double max_vertex_ulps = 0;                               // ulps of the box's largest coordinate
-  double max_vertex_error = 0;                              // / box diagonal
+  double max_vertex_error = 0;                              // / the cells' scale
   double volume_sum = 0, box_volume = 0, volume_error = 0;  // error relative to the box volume
   VoronoiTolerances tolerances;
   std::uint64_t sites = 0, distinct_sites = 0, cells = 0, faces = 0, vertices = 0;

@@ -203,6 +203,35 @@ TEST_CASE("mutation suite: every mutant is detected") {
   }
 }
 
+TEST_CASE("a box far larger than the sites: vertex tolerances of the cells' scale, and of a far vertex's distance") {
+  // 200 sites in the unit cube, box +-1e10: 1e-9 of the box diagonal is 35, three hundred
+  // times the cells' size; the ulp floor (4 ulps of 1e10) is 7.6e-6.
+  const auto sites = random_sites(200, 7);
+  const vor::Box huge{{-1e10, -1e10, -1e10}, {1e10, 1e10, 1e10}};
+  const ToolCells t = tool_cells_of(cells_of(sites, huge));
+  REQUIRE(check_voronoi(sites, huge, t).verdict == VoronoiVerdict::exact_topology);
+  const std::size_t k = interior_cell(t);
+  // An interior vertex 1e-3 off: far below the old 35, far above the floor.
+  const auto near = mutated(t, k, [](auto&, auto& vs, auto&, auto&, auto&) { vs[0].x += 1e-3; });
+  const auto r = check_voronoi(sites, huge, near);
+  CHECK(r.count(VoronoiDefect::vertex_off) == 1);
+  CHECK(r.verdict == VoronoiVerdict::bad_geometry);
+  // A corner on a far wall 1e-3 off along the wall: within 1e-9 of its distance (~1e10).
+  std::size_t far_cell = t.size();
+  std::size_t far_vertex = 0;
+  for (std::size_t c = 0; c < t.size() && far_cell == t.size(); ++c) {
+    const VoronoiCell v = t.cell(c);
+    for (std::size_t j = 0; j < v.vertices.size(); ++j)
+      if (v.vertices[j].x == 1e10 && std::abs(v.vertices[j].y) < 9e9 && std::abs(v.vertices[j].z) < 9e9) {
+        far_cell = c, far_vertex = j;
+        break;
+      }
+  }
+  REQUIRE(far_cell < t.size());
+  const auto far = mutated(t, far_cell, [&](auto&, auto& vs, auto&, auto&, auto&) { vs[far_vertex].y += 1e-3; });
+  CHECK(check_voronoi(sites, huge, far).count(VoronoiDefect::vertex_off) == 0);
+}
+
 TEST_CASE("coplanar or non-finite sites are refused") {
   std::vector<Point3> flat{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
   CHECK_THROWS_AS(check_voronoi(flat, kBox, ToolCells{}), std::invalid_argument);
