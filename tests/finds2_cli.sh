@@ -87,6 +87,17 @@ printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 1 1 1\n' > "$tmp/f.node"
 mkfifo "$tmp/f.ele"
 (printf '# tets\n2 4 0\n0 1 4 2 3\n1 1 3 2 0\n' > "$tmp/f.ele" &)
 expect 0 "check with a FIFO .ele does not hang" -- timeout 10 "$dtlab" check "$tmp/f"
+# An output FIFO nobody reads: opening it would block for ever; dtlab waits for a reader
+# (DTLAB_FIFO_WAIT seconds) and then refuses it. With a reader, the FIFO gets the text.
+mkfifo "$tmp/fo.node"
+expect 2 "an output FIFO without a reader does not hang" -- env DTLAB_FIFO_WAIT=1 timeout 20 "$dtlab" tetra "$tmp/f.node" --out "$tmp/fo"
+says "the FIFO's refusal names it" "fo.node:0: no process opened the FIFO for reading within 1 s"
+ok "the FIFO is left a FIFO" [ -p "$tmp/fo.node" ]
+(sleep 0.5; cat "$tmp/fo.node" > "$tmp/fo.read") &
+reader=$!
+expect 0 "an output FIFO whose reader comes late" -- env DTLAB_FIFO_WAIT=10 timeout 20 "$dtlab" tetra "$tmp/f.node" --out "$tmp/fo"
+wait "$reader"
+ok "the late reader got the .node" grep -q "^5 3 0 0" "$tmp/fo.read"
 # A line too long for the memory is a read error, not the end of the file.
 # (Not under the sanitizers, set by CMake: ASan cannot start under ulimit -v.)
 if [ -z "${DTLAB_SANITIZE:-}" ]; then
