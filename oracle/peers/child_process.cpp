@@ -128,7 +128,8 @@ SpawnedChild spawn_child(const std::vector<std::string>& args, const ChildLimits
       exec_child(argv.data(), env, limits.log_path.empty() ? nullptr : limits.log_path.c_str(), limits.memory_bytes,
                  stdin_fd, reply_fd, exec_pipe[1]);
     }
-    if (program > 0) setpgid(program, program);  // both sides: a kill right after the pid is known reaches it
+    // The program set its own group before its exec, and vfork returns only after that:
+    // a group kill as soon as dtlab knows the pid reaches it.
     [[maybe_unused]] const ssize_t w = write(pid_pipe[1], &program, sizeof program);
     if (program < 0) _exit(127);
     reap_program(program);
