@@ -278,8 +278,10 @@ def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float
     witnesses, largest_wrong_face, max_vertex_ulps, volume_error, tolerances, ...
     Every tolerance has an ulp floor: at least what `ulps` ulps of the box's largest
     coordinate allow (0: the relative tolerances alone); `tolerances` says which applied.
-    small_face, vertex_tolerance and volume_tolerance are relative, each in (0, 1]; ulps
-    in [0, 1e6].
+    small_face, vertex_tolerance and volume_tolerance are relative, each in (0, 1]: of
+    the sites' extent squared, of the cells' scale (the box diagonal, or the sites'
+    default box's where the box is larger; a vertex far from its site: of that
+    distance) and of the box volume; ulps in [0, 1e6].
     """
     if box is None:
         b = _box_arg(cells.box) if isinstance(cells, VoronoiDiagram) else _core.default_box(points, 0.1)
