@@ -21,6 +21,7 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include "kernel/exit_guard.hpp"
@@ -165,6 +166,54 @@ SpawnedChild spawn_child(const std::vector<std::string>& args, const ChildLimits
     release_group(program);
     message = "cannot run '" + args[0] + "': " + std::strerror(exec_errno);
     return {};
+  }
+  return {reaper, program};
+}
+
+SpawnedChild fork_under_reaper(const ForkHooks& hooks) {
+  int pid_pipe[2];
+  if (pipe2(pid_pipe, O_CLOEXEC) != 0) throw std::system_error(errno, std::generic_category(), "pipe");
+  prepare_exit_guard();
+  const pid_t parent = getpid();
+  if (hooks.before) hooks.before();
+  mark_exec_fork(true);  // the reaper is ours: the exit guard's plain-fork handler leaves it alone
+  const pid_t reaper = fork();
+  if (reaper == 0) {
+    become_reaper(true, parent);
+    mark_exec_fork(false);  // the program is a plain fork (after_plain_fork, kernel/exit_guard.cpp)
+    const pid_t program = fork();
+    if (program == 0) {
+      close(pid_pipe[0]);
+      close(pid_pipe[1]);
+      setpgid(0, 0);
+      signal(SIGUSR1, SIG_DFL);  // the reaper's parent-death signal
+      sigset_t none;  // the reaper's blocked signals are not the program's
+      sigemptyset(&none);
+      sigprocmask(SIG_SETMASK, &none, nullptr);
+      if (hooks.after_child) hooks.after_child();
+      return {0, 0};
+    }
+    if (program > 0) setpgid(program, program);  // both sides: a kill as soon as dtlab knows the pid reaches it
+    [[maybe_unused]] const ssize_t w = write(pid_pipe[1], &program, sizeof program);
+    if (program < 0) _exit(127);
+    reap_program(program);
+  }
+  const int fork_errno = errno;
+  mark_exec_fork(false);
+  if (hooks.after_parent) hooks.after_parent();
+  close(pid_pipe[1]);
+  if (reaper < 0) {
+    close(pid_pipe[0]);
+    throw std::system_error(fork_errno, std::generic_category(), "fork");
+  }
+  pid_t program = -1;
+  ssize_t got = 0;
+  while ((got = read(pid_pipe[0], &program, sizeof program)) < 0 && errno == EINTR) {
+  }
+  close(pid_pipe[0]);
+  if (got != static_cast<ssize_t>(sizeof program) || program <= 0) {
+    waitpid(reaper, nullptr, 0);
+    throw std::system_error(EAGAIN, std::generic_category(), "fork");
   }
   return {reaper, program};
 }

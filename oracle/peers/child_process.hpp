@@ -98,6 +98,20 @@ struct SpawnedChild {
 SpawnedChild spawn_child(const std::vector<std::string>& argv, const ChildLimits& limits, int stdin_fd, int reply_fd,
                          std::string& message);
 
+// A fork of this process that goes on running the caller's code (Python's function
+// peers, dtlab/_function_peer.py) under a reaper like spawn_child's program: returns
+// {reaper, program} in the caller and {0, 0} in the program, which leads its own group
+// and is a plain fork for the exit guard (its own watchdog, its parent's death ends it).
+// `before`, `after_parent` and `after_child` are a host's fork hooks (Python's
+// PyOS_BeforeFork, PyOS_AfterFork_Parent, PyOS_AfterFork_Child; the child's runs in the
+// program). The caller waits for the reaper. Throws std::system_error when a fork fails.
+struct ForkHooks {
+  void (*before)() = nullptr;
+  void (*after_parent)() = nullptr;
+  void (*after_child)() = nullptr;
+};
+SpawnedChild fork_under_reaper(const ForkHooks& hooks = {});
+
 // Interrupts. Every child's process group is listed with the exit watchdog
 // (kernel/exit_guard.hpp) from before its exec until it is reaped, so no child outlives
 // dtlab, even a dtlab killed with SIGKILL. A host that handles Ctrl-C itself (the

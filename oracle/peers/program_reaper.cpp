@@ -111,9 +111,13 @@ int kill_children() {
   _exit(WIFEXITED(status) ? WEXITSTATUS(status) : 127);
 }
 
+volatile sig_atomic_t g_parent_died = 0;
+
+void on_parent_death(int) { g_parent_died = 1; }
+
 }  // namespace
 
-void become_reaper() {
+void become_reaper(bool end_with_parent, int parent) {
   sigset_t block;
   sigemptyset(&block);
   for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) sigaddset(&block, sig);
@@ -124,6 +128,14 @@ void become_reaper() {
   sigaction(SIGCHLD, &a, nullptr);
   setpgid(0, 0);
   prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
+  if (end_with_parent) {
+    struct sigaction d {};  // no SA_RESTART: the wait below returns EINTR
+    d.sa_handler = on_parent_death;
+    sigemptyset(&d.sa_mask);
+    sigaction(SIGUSR1, &d, nullptr);
+    prctl(PR_SET_PDEATHSIG, SIGUSR1, 0, 0, 0);
+    if (getppid() != parent) g_parent_died = 1;  // it died before the prctl
+  }
 }
 
 void reap_program(int program) {
@@ -140,6 +152,7 @@ void reap_program(int program) {
       break;
     }
     if (w < 0 && errno != EINTR) _exit(127);  // no child at all: cannot happen
+    if (g_parent_died) kill(-program, SIGKILL);
   }
 
   // What the program left: its group, then every orphan adopted here (those that left

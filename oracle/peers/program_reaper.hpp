@@ -18,8 +18,11 @@
 // code, or the same signal), so that dtlab's wait on the reaper reads the program's end.
 // The reaper is in no group that dtlab or the watchdog kills and it blocks the terminal's
 // signals: after dtlab's death the watchdog kills the program's group, and the reaper
-// then ends what is left. (No parent-death signal: Linux sends it when the forking
-// thread ends, which a worker thread of dtlab does while dtlab goes on.)
+// then ends what is left. A program's reaper has no parent-death signal: Linux sends it
+// when the forking thread ends, which a worker thread of dtlab does while dtlab goes on.
+// A forked body's reaper (fork_under_reaper: a Python function peer, whose group no
+// watchdog lists) has one, as plain forks of dtlab have (kernel/exit_guard.hpp): when
+// its parent dies it kills the body's group itself and goes on as above.
 //
 // The reaper runs between fork and exit without exec, in a copy of a possibly
 // multithreaded process: it calls only async-signal-safe functions and system calls.
@@ -28,8 +31,10 @@ namespace dtlab {
 
 // In the reaper, first: blocks SIGINT, SIGTERM, SIGHUP, SIGQUIT and SIGPIPE (the
 // program's exec starts it with an empty mask), moves it to a group of its own and
-// makes it a child subreaper.
-void become_reaper();
+// makes it a child subreaper. With `end_with_parent`, the death of `parent` (the forking
+// thread) makes reap_program kill the program's group (SIGUSR1 as the parent-death
+// signal; a program forked afterwards must reset SIGUSR1 to its default).
+void become_reaper(bool end_with_parent = false, int parent = 0);
 
 // In the reaper, once `program` is forked: keeps no descriptor of dtlab open (stdin,
 // stdout and stderr become /dev/null), waits as described above and exits.

@@ -9,7 +9,10 @@ tets on a pipe: b"T", f64 seconds, u64 m, m x 4 int64; or b"B" and why the retur
 value is no (m, 4) integer array. An exception is exit status 1 with its traceback in
 the log. The parent reads the pipe while it waits (a large answer never blocks the
 child), kills the group at the time limit, and on any exception (KeyboardInterrupt
-included) kills and reaps the child before it re-raises.
+included) kills and reaps the child before it re-raises. The child runs under a reaper,
+the process the parent waits for (`_core.fork_under_reaper`), which adopts and ends
+whatever the function leaves behind, even a process in a session of its own with an
+empty environment, and then exits as the child did.
 """
 from __future__ import annotations
 
@@ -134,19 +137,18 @@ def run_in_child(fn: Callable[[np.ndarray], Any], points: np.ndarray, timeout_s:
     r, w = os.pipe()
     start = time.monotonic()
     try:
-        pid = os.fork()
-    except OSError as e:
+        # The child runs under a reaper (oracle/peers/program_reaper.hpp), the process
+        # waited for here, which ends what the function leaves, even descendants that
+        # cleared their environment and left the group (env -i setsid).
+        reaper, pid = _core.fork_under_reaper()
+    except (OSError, RuntimeError) as e:  # a std::system_error from the fork
         os.close(r)
         os.close(w)
-        return ("not_started", -1, 0, 0.0, 0, f"fork failed: {e.strerror}")
+        return ("not_started", -1, 0, 0.0, 0, f"fork failed: {e}")
     if pid == 0:
         os.close(r)
         _child(fn, points, memory_bytes, log_path, w, guard_prefix)
     os.close(w)
-    try:
-        os.setpgid(pid, pid)  # both sides set it: a kill right after the fork reaches the group
-    except OSError:
-        pass
     os.set_blocking(r, False)
     chunks: list[bytes] = []
     peak, status, eof, reaped = 0, 0, False, False
@@ -160,21 +162,21 @@ def run_in_child(fn: Callable[[np.ndarray], Any], points: np.ndarray, timeout_s:
                     eof = _drain(r, chunks)
             else:
                 time.sleep(0.001 if elapsed < 0.2 else 0.005 if elapsed < 2 else 0.02)
-            got, status = os.waitpid(pid, os.WNOHANG)
-            if got == pid:
+            got, status = os.waitpid(reaper, os.WNOHANG)
+            if got == reaper:
                 reaped = True
                 _drain(r, chunks)  # all it wrote is in the pipe now (a grandchild may hold it open)
                 break
             if time.monotonic() - start > timeout_s:
                 _kill_group(pid)
-                os.waitpid(pid, 0)
+                os.waitpid(reaper, 0)
                 reaped = True
                 return ("timed_out", -1, 0, time.monotonic() - start, peak, b"")
     finally:
         if not reaped:  # an exception here (KeyboardInterrupt): the child goes first
             _kill_group(pid)
-            os.waitpid(pid, 0)
-        _kill_group(pid)  # what the function started, if it outlived the child
+            os.waitpid(reaper, 0)
+        _kill_group(pid)  # what the function started, if it outlived the child (the reaper ended it too)
         _core.end_tagged(pid)  # and what left the group
         os.close(r)
     seconds = time.monotonic() - start

@@ -251,6 +251,15 @@ void bind_oracle(py::module_& m) {
         end_tagged(pid);
       },
       py::arg("pid"), "Kills every process whose DTLAB_GUARD carries child pid's tag (left its group).");
+  // A function peer's fork under a reaper (oracle/peers/program_reaper.hpp): (reaper,
+  // child) in the caller, (0, 0) in the child, with Python's own fork hooks around it.
+  m.def(
+      "fork_under_reaper",
+      [] {
+        const SpawnedChild c = fork_under_reaper({&PyOS_BeforeFork, &PyOS_AfterFork_Parent, &PyOS_AfterFork_Child});
+        return std::pair<int, int>{c.reaper, c.program};
+      },
+      "Forks a child under a reaper that ends what it leaves: (reaper, child) in the caller, (0, 0) in the child.");
   set_interrupt_check(&host_interrupt_requested);
   m.def("oracle", &oracle, py::arg("points"), py::arg("against"), py::arg("predicates"), py::arg("perturb"),
         py::arg("boundary"), py::arg("order"), py::arg("seed"), py::arg("eps"), py::arg("eps_mode"), py::arg("tetgen"),

@@ -5,6 +5,7 @@ garbage) must come back as a verdict, with the interpreter alive and nothing lef
 """
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -308,20 +309,40 @@ def test_the_child_dies_with_a_killed_interpreter(tmp_path):
         time.sleep(0.01)
 
 
-def test_a_descendant_that_leaves_the_group_is_ended(tmp_path):
+@pytest.mark.parametrize("how", ["setsid", "env -i setsid", "env -i setsid, then the peer returns"])
+def test_a_descendant_that_leaves_the_group_is_ended(tmp_path, how):
     """A function peer's descendant that calls setsid leaves the peer's process group;
     the inherited DTLAB_GUARD tag (kernel/exit_guard.hpp) still finds it after the peer's
-    time limit."""
+    time limit. One that clears its environment too carries no tag: the child's reaper
+    (oracle/peers/program_reaper.hpp), which adopts it, ends it, whether the peer hangs
+    past its limit or returns at once."""
     marker = f"{tmp_path}/escaped"
+    started = tmp_path / "started"
+    setsid, sleep, bash = shutil.which("setsid"), shutil.which("sleep"), shutil.which("bash")
+    clear = "env -i " if how.startswith("env -i") else ""
+    returns = how.endswith("returns")
 
     def escape(points):
-        os.system(f"setsid sh -c 'exec -a {marker} sleep 300' &")
+        # bash for `exec -a` (dash has none: the sleeper would never start)
+        os.system(f"{clear}{setsid} {bash} -c 'exec -a {marker} {sleep} 300' &")
+        for _ in range(100):  # the sleeper runs, in a session of its own
+            if any(p.isdigit() and _cmdline(p).startswith(marker) for p in os.listdir("/proc")):
+                started.write_text("yes")
+                break
+            time.sleep(0.02)
+        if returns:
+            return np.zeros((0, 4), dtype=np.int64)
         time.sleep(60)
 
-    r = dtlab.oracle(np.random.default_rng(1).random((30, 3)), against=[], peers={"escape": escape}, timeout=1)
-    assert r.peers["escape"].verdict == "hung"
-    time.sleep(0.3)
-    left = [p for p in os.listdir("/proc") if p.isdigit() and _cmdline(p).startswith(marker)]
+    r = dtlab.oracle(np.random.default_rng(1).random((30, 3)), against=[], peers={"escape": escape}, timeout=3)
+    assert started.exists(), "the sleeper did not start"
+    assert r.peers["escape"].verdict != "hung" if returns else r.peers["escape"].verdict == "hung"
+    left = []
+    for _ in range(30):
+        left = [p for p in os.listdir("/proc") if p.isdigit() and _cmdline(p).startswith(marker)]
+        if not left:
+            break
+        time.sleep(0.1)
     assert left == []
 
 
