@@ -187,7 +187,7 @@ SpawnedChild fork_under_reaper(const ForkHooks& hooks) {
       close(pid_pipe[1]);
       setpgid(0, 0);
       signal(SIGUSR1, SIG_DFL);  // the reaper's parent-death signal
-      sigset_t none;  // the reaper's blocked signals are not the program's
+      sigset_t none;             // the reaper's blocked signals are not the program's
       sigemptyset(&none);
       sigprocmask(SIG_SETMASK, &none, nullptr);
       if (hooks.after_child) hooks.after_child();
