@@ -223,9 +223,12 @@ int run_fracture(const FractureArgs& a) {
   std::vector<std::string> outputs;
   if (!a.out.empty()) {
     check_out_folder(a.out);
-    outputs = fracture_output_set(a, 0).written;
+    OutputSet set = fracture_output_set(a, 0);  // lists DIR/pieces/ once: its piece files are `others`
+    outputs = std::move(set.written);
+    const std::string piece_dir = a.out + "/pieces/";
     if (a.split)
-      for (std::string& piece : piece_files_in(a.out + "/pieces")) outputs.push_back(std::move(piece));
+      for (std::string& p : set.others)
+        if (p.starts_with(piece_dir)) outputs.push_back(std::move(p));
   }
   if (!a.png.empty()) outputs.push_back(a.png);
   refuse_overwriting_inputs(outputs, fracture_inputs(a));
