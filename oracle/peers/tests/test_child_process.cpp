@@ -3,8 +3,12 @@
 #include <catch2/catch.hpp>
 
 #include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
@@ -64,6 +68,54 @@ TEST_CASE("run_child kills the whole process group on time-out", "[oracle][child
     if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   CHECK(gone);
+}
+
+// Waits up to 2 s for `pid` to be gone.
+bool ends_soon(int pid) {
+  for (int i = 0; i < 100; ++i) {
+    if (process_gone(pid)) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+TEST_CASE("a program's descendant in a session of its own with an empty environment is ended", "[oracle][child]") {
+  // Neither the group kill nor the DTLAB_GUARD tag finds it: the program's reaper does.
+  TempDir dir;
+  const std::string pidfile = dir.file("pid");
+  const std::string script = "env -i setsid sleep 30 & echo $! > " + pidfile + "; sleep 0.2";
+  for (const double timeout : {30.0, 0.1}) {  // the program exits, or is killed at its time limit
+    INFO("timeout " << timeout);
+    std::remove(pidfile.c_str());
+    const ChildResult r = run_child({"sh", "-c", script + (timeout < 1 ? "; sleep 30" : "")}, ChildLimits::of(timeout));
+    CHECK(r.status == (timeout < 1 ? ChildStatus::timed_out : ChildStatus::exited));
+    int escaped = 0;
+    std::ifstream(pidfile) >> escaped;
+    REQUIRE(escaped > 0);
+    CHECK(ends_soon(escaped));
+  }
+}
+
+TEST_CASE("fork_under_reaper: the fork's escaped descendant is ended, its exit read through the reaper",
+          "[oracle][child]") {
+  TempDir dir;
+  const std::string pidfile = dir.file("pid");
+  const SpawnedChild c = fork_under_reaper();
+  if (c.reaper == 0) {  // the fork: an escapee, then exit 5
+    const int code = std::system(("env -i setsid sleep 30 & echo $! > " + pidfile).c_str());
+    _exit(code == 0 ? 5 : 1);
+  }
+  REQUIRE(c.reaper > 0);
+  REQUIRE(c.program > 0);
+  CHECK(c.program != c.reaper);
+  int status = 0;
+  REQUIRE(waitpid(c.reaper, &status, 0) == c.reaper);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 5);
+  int escaped = 0;
+  std::ifstream(pidfile) >> escaped;
+  REQUIRE(escaped > 0);
+  CHECK(ends_soon(escaped));
 }
 
 TEST_CASE("run_child measures the program's own peak memory, not the parent's", "[oracle][child]") {
