@@ -1,5 +1,6 @@
 // dtlab: a verification-focused testbed for robust 3D Delaunay tetrahedralization.
 #include <cstdio>
+#include <csignal>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ std::string version_text() {
 
 int main(int argc, char** argv) {
   using namespace dtlab::cli;
+  // A SIGCHLD ignored by whoever started us (inherited across exec) would reap every
+  // child before its wait could read its end: every peer "wait failed".
+  std::signal(SIGCHLD, SIG_DFL);
   // Ctrl-C, SIGTERM, SIGHUP: peers killed, temp files removed, then the signal's status.
   dtlab::install_interrupt_cleanup();
   CLI::App app{"dtlab: robust 3D Delaunay tetrahedralization testbed", "dtlab"};

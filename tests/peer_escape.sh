@@ -62,5 +62,13 @@ for how in keep clear; do  # the environment kept (the tag finds it) or cleared 
   done
 done
 
+# A SIGCHLD that the caller ignores is inherited across exec: the children would be
+# reaped before dtlab's waits ("wait failed" for every peer). dtlab resets it.
+expect 0 "SIGCHLD ignored by the caller: the cgal peer still answers" -- "$py" -c '
+import os, signal, sys
+signal.signal(signal.SIGCHLD, signal.SIG_IGN)
+os.execv(sys.argv[1], sys.argv[1:])' "$dtlab" oracle "$tmp/p.xyz" --against cgal --quiet
+says "the cgal peer's verdict" "cgal +delaunay"
+
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]
