@@ -1,6 +1,6 @@
 // dtlab: a verification-focused testbed for robust 3D Delaunay tetrahedralization.
-#include <cstdio>
 #include <csignal>
+#include <cstdio>
 #include <string>
 #include <vector>
 
