@@ -327,6 +327,12 @@ void end_guarded_now() {
 }
 
 void install_interrupt_cleanup() {
+  // A mask inherited across exec may block them (a caller's pthread_sigmask): then
+  // `timeout`'s SIGTERM or Ctrl-C would wait for ever. Threads started later inherit this.
+  sigset_t ours;
+  sigemptyset(&ours);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&ours, sig);
+  pthread_sigmask(SIG_UNBLOCK, &ours, nullptr);
   prepare_exit_guard();
   if (pipe2(g_signal_pipe, O_CLOEXEC) != 0) return;
   std::thread([] {

@@ -64,7 +64,8 @@ int guard_pid_digits();
 void end_guarded_now();
 
 // SIGINT, SIGTERM and SIGHUP end the process as the shell expects (died of the signal:
-// status 130, 143, 129) after end_guarded_now(). For programs (the dtlab command), not
+// status 130, 143, 129) after end_guarded_now(); they are unblocked first (a blocked mask
+// is inherited across exec), and one ignored when the program starts stays ignored. For programs (the dtlab command), not
 // for a library loaded into someone else's process (the Python module).
 void install_interrupt_cleanup();
 

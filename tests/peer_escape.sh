@@ -70,5 +70,21 @@ signal.signal(signal.SIGCHLD, signal.SIG_IGN)
 os.execv(sys.argv[1], sys.argv[1:])' "$dtlab" oracle "$tmp/p.xyz" --against cgal --quiet
 says "the cgal peer's verdict" "cgal +delaunay"
 
+# A blocked SIGTERM (a caller's signal mask, inherited across exec) would let dtlab
+# ignore `timeout`'s SIGTERM: dtlab unblocks what it handles, so it ends (143).
+"$py" -c '
+import os, signal, sys
+signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM, signal.SIGINT})
+os.execv(sys.argv[1], sys.argv[1:])' "$dtlab" oracle "$tmp/p.xyz" --against esc --peer "$(peer hang)" --quiet >/dev/null 2>&1 &
+blocked=$!
+for _ in $(seq 100); do [ -n "$(sleepers)" ] && break; sleep 0.1; done
+kill -TERM "$blocked"
+for _ in $(seq 50); do kill -0 "$blocked" 2>/dev/null || break; sleep 0.1; done
+ok "SIGTERM blocked by the caller: dtlab still ends on it" bash -c "! kill -0 $blocked 2>/dev/null"
+kill -KILL "$blocked" 2>/dev/null
+wait "$blocked"
+ok "... with status 143" [ $? -eq 143 ]
+none_left "SIGTERM blocked by the caller"
+
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]
