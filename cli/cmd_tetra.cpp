@@ -16,6 +16,7 @@
 #include "cli/tetra_report.hpp"
 #include "fuzz/outcome.hpp"
 #include "kernel/input_error.hpp"
+#include "kernel/input_file.hpp"
 #include "kernel/node_reuse.hpp"
 #include "kernel/npy_writer.hpp"
 #include "kernel/output_file.hpp"
@@ -56,7 +57,8 @@ OutputSet tetra_output_set(const TetraArgs& a) {
 // A 0-based input .node already is the output's .node (kernel/node_reuse.hpp): kept when
 // it is PREFIX.node, else copied byte for byte.
 bool input_node_reusable(const TetraArgs& a, int first_index) {
-  return a.format != "npy" && a.input.ends_with(".node") && first_index == 0;
+  // A regular file only: a FIFO's content is gone once read (reopening it blocked for ever).
+  return a.format != "npy" && a.input.ends_with(".node") && first_index == 0 && input_file_size(a.input);
 }
 
 // Before the build: no output replaces the input, except a reusable input .node.

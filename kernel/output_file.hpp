@@ -7,25 +7,20 @@
 // text goes to PATH.part-PID-N beside it, renamed to PATH by close(). A failure, an
 // exception on the way or an interrupt (kernel/exit_guard.hpp) removes the part file,
 // so PATH is either the old file or the whole new one, never a cut one.
-// A FIFO is written in place once a reader has opened it: without one, opening for
-// writing would block for ever (as `cat > fifo` does), so the open waits for a reader at
-// most fifo_reader_wait_s() seconds (DTLAB_FIFO_WAIT, default 10) and then fails
-// ("no process opened the FIFO for reading within 10 s", exit 2).
-#include <fcntl.h>
+// A FIFO is written in place once a reader has opened it (kernel/fifo_wait.hpp: at most
+// DTLAB_FIFO_WAIT seconds, then "no process opened the FIFO for reading within 10 s").
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "kernel/exit_guard.hpp"
+#include "kernel/fifo_wait.hpp"
 #include "kernel/input_error.hpp"
 
 namespace dtlab {
@@ -62,34 +57,6 @@ inline std::vector<std::string> remove_output_set(const std::vector<std::string>
   return removed;
 }
 
-// How long an output FIFO may wait for its reader: DTLAB_FIFO_WAIT seconds (a number
-// in [0, 86400]; anything else: the default), default 10.
-inline double fifo_reader_wait_s() {
-  const char* v = std::getenv("DTLAB_FIFO_WAIT");
-  if (!v || !*v) return 10;
-  char* end = nullptr;
-  const double s = std::strtod(v, &end);
-  return *end == '\0' && s >= 0 && s <= 86400 ? s : 10;
-}
-
-// Opens the FIFO at `path` for writing once a process reads it (a non-blocking open
-// fails with ENXIO until then), then makes the descriptor blocking again; nullptr with
-// errno set when it fails, ENXIO when no reader came within the wait.
-inline std::FILE* open_fifo_for_writing(const std::string& path, const char* mode) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(fifo_reader_wait_s());
-  for (;;) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd >= 0) {
-      ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-      std::FILE* f = ::fdopen(fd, mode);
-      if (!f) ::close(fd);
-      return f;
-    }
-    if (errno != ENXIO || std::chrono::steady_clock::now() >= until) return nullptr;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-}
-
 class OutputFile {
  public:
   explicit OutputFile(std::string path, const char* mode = "w") : path_(std::move(path)) {
@@ -98,17 +65,13 @@ class OutputFile {
       part_ = path_ + ".part-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
       guard_path(part_);
     }
-    struct stat st {};
-    const bool fifo = part_.empty() && mode[0] != 'r' && stat(path_.c_str(), &st) == 0 && S_ISFIFO(st.st_mode);
+    const bool fifo = part_.empty() && mode[0] != 'r' && is_fifo(path_);
     f_ = fifo ? open_fifo_for_writing(path_, mode) : std::fopen(part_.empty() ? path_.c_str() : part_.c_str(), mode);
     if (!f_) {
       const int e = errno;
       drop_part();
-      if (fifo && e == ENXIO) {
-        char wait[32];
-        std::snprintf(wait, sizeof wait, "%g", fifo_reader_wait_s());
-        throw InputError(path_, 0, std::string("no process opened the FIFO for reading within ") + wait + " s");
-      }
+      if (fifo && e == ENXIO)
+        throw InputError(path_, 0, "no process opened the FIFO for reading within " + fifo_wait_text() + " s");
       throw InputError(path_, 0, std::string("cannot open file for writing: ") + std::strerror(e));
     }
   }

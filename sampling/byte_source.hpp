@@ -1,7 +1,10 @@
 #pragma once
 // A whole file in memory, read either as text tokens (with line numbers) or as
 // binary little/big-endian scalars. Shared by the PLY and STL readers.
+#include <unistd.h>
+
 #include <bit>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -11,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "kernel/fifo_wait.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/input_file.hpp"
 #include "kernel/parse_number.hpp"
@@ -21,6 +25,16 @@ class ByteSource {
  public:
   explicit ByteSource(std::string path) : path_(std::move(path)) {
     input_file_size(path_);  // names a missing file or a directory
+    FifoWriterWait fifo(path_);  // an input FIFO without a writer does not block the open
+    if (fifo.fd() >= 0) {
+      char chunk[1 << 16];
+      for (ssize_t n; (n = ::read(fifo.fd(), chunk, sizeof chunk)) != 0;) {
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw InputError(path_, 0, "read error");
+        data_.append(chunk, static_cast<std::size_t>(n));
+      }
+      return;
+    }
     std::ifstream in(path_, std::ios::binary);
     if (!in) throw InputError(path_, 0, "cannot open file");
     data_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

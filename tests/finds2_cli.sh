@@ -98,6 +98,26 @@ reader=$!
 expect 0 "an output FIFO whose reader comes late" -- env DTLAB_FIFO_WAIT=10 timeout 20 "$dtlab" tetra "$tmp/f.node" --out "$tmp/fo"
 wait "$reader"
 ok "the late reader got the .node" grep -q "^5 3 0 0" "$tmp/fo.read"
+# Input FIFOs: one nobody writes is refused after DTLAB_FIFO_WAIT seconds (its open
+# blocked for ever); a .node FIFO with --out is read once (tetra reopened it to copy the
+# input .node, and blocked); a writer that wrote and closed before dtlab opened its own
+# end still counts (its data is in the pipe); a mesh FIFO goes through the mesh readers.
+# feed SRC FIFO [DELAY]: a writer that gives up after 30 s and holds none of our output.
+feed() { timeout 30 sh -c 'sleep "${3:-0}"; cat "$1" > "$2"' _ "$1" "$2" "${3:-0}" >/dev/null 2>&1 & }
+mkfifo "$tmp/fi.xyz"
+expect 2 "an input FIFO without a writer does not hang" -- env DTLAB_FIFO_WAIT=1 timeout 20 "$dtlab" tetra "$tmp/fi.xyz"
+says "the input FIFO's refusal names it" "fi.xyz:0: no process opened the FIFO for writing within 1 s"
+mkfifo "$tmp/fi.node"
+feed "$tmp/f.node" "$tmp/fi.node"
+expect 0 "a .node FIFO with --out is read once" -- timeout 20 "$dtlab" tetra "$tmp/fi.node" --out "$tmp/fi_out"
+ok "... and its .node written" grep -q "^5 3 0 0" "$tmp/fi_out.node"
+feed "$tmp/f.node" "$tmp/fi.node" 0.5
+expect 0 "an input FIFO whose writer comes late" -- env DTLAB_FIFO_WAIT=10 timeout 20 "$dtlab" tetra "$tmp/fi.node" --json
+says "the late writer's five points" '"points": 5'
+printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > "$tmp/tet.off"
+mkfifo "$tmp/fi.off"
+feed "$tmp/tet.off" "$tmp/fi.off"
+expect 0 "a mesh FIFO" -- timeout 30 "$dtlab" mesh check "$tmp/fi.off"
 # A line too long for the memory is a read error, not the end of the file.
 # (Not under the sanitizers, set by CMake: ASan cannot start under ulimit -v.)
 if [ -z "${DTLAB_SANITIZE:-}" ]; then
