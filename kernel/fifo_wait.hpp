@@ -79,7 +79,7 @@ class FifoWriterWait {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - std::chrono::steady_clock::now());
       ready = ::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count())));
     } while (ready < 0 && errno == EINTR);
-    if (ready == 0) {
+    if (ready == 0 && !writer_connected()) {
       ::close(fd_);
       fd_ = -1;
       throw InputError(path, 0, "no process opened the FIFO for writing within " + fifo_wait_text() + " s");
@@ -100,6 +100,20 @@ class FifoWriterWait {
   FifoWriterWait& operator=(const FifoWriterWait&) = delete;
 
  private:
+  // After a quiet wait: whether a writer holds the FIFO open without having written yet
+  // (a slow producer), told apart from no writer at all without consuming a byte: tee(2)
+  // copies pipe data without removing it, and with no data it answers EAGAIN while a
+  // writer is connected and 0 (end of file) when none is. Where tee cannot say, the
+  // benefit of the doubt (the read then blocks, as any read of a FIFO).
+  bool writer_connected() const {
+    int scratch[2];
+    if (::pipe2(scratch, O_CLOEXEC | O_NONBLOCK) != 0) return true;
+    const ssize_t n = ::tee(fd_, scratch[1], 1, SPLICE_F_NONBLOCK);  // 1: data; -1: EAGAIN or no tee
+    ::close(scratch[0]);
+    ::close(scratch[1]);
+    return n != 0;
+  }
+
   int fd_ = -1;
 };
 

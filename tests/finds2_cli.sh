@@ -114,6 +114,11 @@ ok "... and its .node written" grep -q "^5 3 0 0" "$tmp/fi_out.node"
 feed "$tmp/f.node" "$tmp/fi.node" 0.5
 expect 0 "an input FIFO whose writer comes late" -- env DTLAB_FIFO_WAIT=10 timeout 20 "$dtlab" tetra "$tmp/fi.node" --json
 says "the late writer's five points" '"points": 5'
+# A writer that holds the FIFO open but writes only after the wait: a slow producer,
+# not a missing one (told apart by tee(2), kernel/fifo_wait.hpp).
+timeout 30 sh -c 'exec 3>"$1"; sleep 2; cat "$2" >&3' _ "$tmp/fi.node" "$tmp/f.node" >/dev/null 2>&1 &
+expect 0 "a connected writer silent past DTLAB_FIFO_WAIT is still read" -- env DTLAB_FIFO_WAIT=1 timeout 20 "$dtlab" tetra "$tmp/fi.node" --json
+says "the slow writer's five points" '"points": 5'
 printf 'OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' > "$tmp/tet.off"
 mkfifo "$tmp/fi.off"
 feed "$tmp/tet.off" "$tmp/fi.off"
