@@ -65,8 +65,9 @@ void end_guarded_now();
 
 // SIGINT, SIGTERM and SIGHUP end the process as the shell expects (died of the signal:
 // status 130, 143, 129) after end_guarded_now(); they are unblocked first (a blocked mask
-// is inherited across exec), and one ignored when the program starts stays ignored. For programs (the dtlab command),
-// not for a library loaded into someone else's process (the Python module).
+// is inherited across exec), and one ignored when the program starts stays ignored. For
+// programs (the dtlab command), not for a library loaded into someone else's process
+// (the Python module).
 void install_interrupt_cleanup();
 
 // True once install_interrupt_cleanup's handler received a signal: code that notices a

@@ -72,9 +72,8 @@ class FifoWriterWait {
     fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd_ < 0) return;  // the reader's own open names the error
     pollfd p{fd_, POLLIN, 0};
-    const int ms = static_cast<int>(fifo_wait_s() * 1000);
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(fifo_wait_s());
     int ready = 0;
-    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
     do {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - std::chrono::steady_clock::now());
       ready = ::poll(&p, 1, static_cast<int>(std::max<long long>(0, left.count())));

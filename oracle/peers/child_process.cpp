@@ -102,6 +102,36 @@ std::uint64_t vm_hwm_bytes(int pid) {
   return kb * 1024;
 }
 
+namespace {
+
+// read(2) of `n` bytes, retried on EINTR; what read returned.
+ssize_t read_retrying(int fd, void* into, std::size_t n) {
+  ssize_t got = 0;
+  while ((got = read(fd, into, n)) < 0 && errno == EINTR) {
+  }
+  return got;
+}
+
+// The reaper's side, once the program is forked: its pid to the parent, then the reaping.
+[[noreturn]] void report_and_reap(int pid_fd, pid_t program) {
+  [[maybe_unused]] const ssize_t w = write(pid_fd, &program, sizeof program);
+  if (program < 0) _exit(127);
+  reap_program(program);
+}
+
+// The parent's side: the program's pid as its reaper reported it, or -1 (the reaper is
+// then reaped here).
+pid_t program_pid_from(int pid_fd, pid_t reaper) {
+  pid_t program = -1;
+  const ssize_t got = read_retrying(pid_fd, &program, sizeof program);
+  close(pid_fd);
+  if (got == static_cast<ssize_t>(sizeof program) && program > 0) return program;
+  waitpid(reaper, nullptr, 0);
+  return -1;
+}
+
+}  // namespace
+
 SpawnedChild spawn_child(const std::vector<std::string>& args, const ChildLimits& limits, int stdin_fd, int reply_fd,
                          std::string& message) {
   if (args.empty()) throw std::invalid_argument("run_child: no program");
@@ -131,9 +161,7 @@ SpawnedChild spawn_child(const std::vector<std::string>& args, const ChildLimits
     }
     // The program set its own group before its exec, and vfork returns only after that:
     // a group kill as soon as dtlab knows the pid reaches it.
-    [[maybe_unused]] const ssize_t w = write(pid_pipe[1], &program, sizeof program);
-    if (program < 0) _exit(127);
-    reap_program(program);
+    report_and_reap(pid_pipe[1], program);
   }
   mark_exec_fork(false);
   close(exec_pipe[1]);
@@ -144,21 +172,15 @@ SpawnedChild spawn_child(const std::vector<std::string>& args, const ChildLimits
     message = std::string("fork failed: ") + std::strerror(errno);
     return {};
   }
-  pid_t program = -1;
-  ssize_t got = 0;
-  while ((got = read(pid_pipe[0], &program, sizeof program)) < 0 && errno == EINTR) {
-  }
-  close(pid_pipe[0]);
-  if (got != static_cast<ssize_t>(sizeof program) || program <= 0) {
+  const pid_t program = program_pid_from(pid_pipe[0], reaper);
+  if (program < 0) {
     close(exec_pipe[0]);
-    waitpid(reaper, nullptr, 0);
     message = "fork failed";
     return {};
   }
   env.started(program);
   int exec_errno = 0;
-  while ((got = read(exec_pipe[0], &exec_errno, sizeof exec_errno)) < 0 && errno == EINTR) {
-  }
+  const ssize_t got = read_retrying(exec_pipe[0], &exec_errno, sizeof exec_errno);  // EOF when exec succeeded
   close(exec_pipe[0]);
   if (got == static_cast<ssize_t>(sizeof exec_errno)) {
     waitpid(reaper, nullptr, 0);
@@ -194,9 +216,7 @@ SpawnedChild fork_under_reaper(const ForkHooks& hooks) {
       return {0, 0};
     }
     if (program > 0) setpgid(program, program);  // both sides: a kill as soon as dtlab knows the pid reaches it
-    [[maybe_unused]] const ssize_t w = write(pid_pipe[1], &program, sizeof program);
-    if (program < 0) _exit(127);
-    reap_program(program);
+    report_and_reap(pid_pipe[1], program);
   }
   const int fork_errno = errno;
   mark_exec_fork(false);
@@ -206,15 +226,8 @@ SpawnedChild fork_under_reaper(const ForkHooks& hooks) {
     close(pid_pipe[0]);
     throw std::system_error(fork_errno, std::generic_category(), "fork");
   }
-  pid_t program = -1;
-  ssize_t got = 0;
-  while ((got = read(pid_pipe[0], &program, sizeof program)) < 0 && errno == EINTR) {
-  }
-  close(pid_pipe[0]);
-  if (got != static_cast<ssize_t>(sizeof program) || program <= 0) {
-    waitpid(reaper, nullptr, 0);
-    throw std::system_error(EAGAIN, std::generic_category(), "fork");
-  }
+  const pid_t program = program_pid_from(pid_pipe[0], reaper);
+  if (program < 0) throw std::system_error(EAGAIN, std::generic_category(), "fork");
   return {reaper, program};
 }
 

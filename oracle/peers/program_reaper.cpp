@@ -62,12 +62,11 @@ bool read_parent_and_group(const char* pid_digits, long& ppid, long& pgrp) {
 }
 
 // Kills (SIGKILL) every child of this process, and the group of each that leads one.
-// Returns how many it found. Reads /proc with getdents64: no allocation.
-int kill_children() {
+// Reads /proc with getdents64: no allocation.
+void kill_children() {
   const long self = getpid();
   const int dir = open("/proc", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir < 0) return 0;
-  int found = 0;
+  if (dir < 0) return;
   alignas(8) char buf[8192];
   for (;;) {
     const long n = syscall(SYS_getdents64, dir, buf, sizeof buf);
@@ -85,11 +84,9 @@ int kill_children() {
       const long pid = parse_number(s, s + 16);
       kill(static_cast<pid_t>(pid), SIGKILL);
       if (pgrp == pid) kill(static_cast<pid_t>(-pid), SIGKILL);
-      ++found;
     }
   }
   close(dir);
-  return found;
 }
 
 // Ends as `status` (a wait status) says the program ended.
