@@ -72,6 +72,7 @@ int main(int argc, char** argv) {
       const auto t0 = Clock::now();
       vd = compute_voronoi(pts, vo);
       ours.s.push_back(since(t0));
+      std::printf("  our cells: DT %.3f cells %.3f s\n", vd.seconds_dt, vd.seconds_cells);
     };
     const std::function<void()> voro_cells = [&] {
       vc = peer_voro(pts, box);
