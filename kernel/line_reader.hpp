@@ -11,9 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include <ext/stdio_filebuf.h>  // libstdc++: a stream over a FIFO's descriptor
-
-#include "kernel/fifo_wait.hpp"
+#include "kernel/input_buffer.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/input_file.hpp"
 #include "kernel/parse_number.hpp"
@@ -22,15 +20,8 @@ namespace dtlab {
 
 class LineReader {
  public:
-  explicit LineReader(std::string path) : path_(std::move(path)), bytes_(input_file_size(path_)) {
-    FifoWriterWait fifo(path_);  // an input FIFO without a writer does not block the open
-    if (fifo.fd() >= 0) {
-      buf_ = std::make_unique<__gnu_cxx::stdio_filebuf<char>>(fifo.release(), std::ios::in, std::size_t{1} << 16);
-    } else {
-      auto file = std::make_unique<std::filebuf>();
-      if (!file->open(path_, std::ios::in)) throw InputError(path_, 0, "cannot open file");
-      buf_ = std::move(file);
-    }
+  explicit LineReader(std::string path)
+      : path_(std::move(path)), bytes_(input_file_size(path_)), buf_(open_input_buffer(path_)) {
     in_.rdbuf(buf_.get());
   }
 
@@ -108,7 +99,7 @@ class LineReader {
   }
   std::string path_;
   std::optional<std::uintmax_t> bytes_;
-  std::unique_ptr<std::filebuf> buf_;  // a file's, or a FIFO's descriptor's (stdio_filebuf)
+  std::unique_ptr<std::filebuf> buf_;  // a file's, or a FIFO's (kernel/input_buffer.hpp)
   std::istream in_{nullptr};
   std::string line_;
   long line_no_ = 0;

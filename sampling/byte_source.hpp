@@ -1,20 +1,17 @@
 #pragma once
 // A whole file in memory, read either as text tokens (with line numbers) or as
 // binary little/big-endian scalars. Shared by the PLY and STL readers.
-#include <unistd.h>
-
 #include <bit>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
+#include <istream>
 #include <iterator>
 #include <string>
 #include <string_view>
 
-#include "kernel/fifo_wait.hpp"
+#include "kernel/input_buffer.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/input_file.hpp"
 #include "kernel/parse_number.hpp"
@@ -25,18 +22,8 @@ class ByteSource {
  public:
   explicit ByteSource(std::string path) : path_(std::move(path)) {
     input_file_size(path_);  // names a missing file or a directory
-    FifoWriterWait fifo(path_);  // an input FIFO without a writer does not block the open
-    if (fifo.fd() >= 0) {
-      char chunk[1 << 16];
-      for (ssize_t n; (n = ::read(fifo.fd(), chunk, sizeof chunk)) != 0;) {
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) throw InputError(path_, 0, "read error");
-        data_.append(chunk, static_cast<std::size_t>(n));
-      }
-      return;
-    }
-    std::ifstream in(path_, std::ios::binary);
-    if (!in) throw InputError(path_, 0, "cannot open file");
+    const auto buf = open_input_buffer(path_);  // a FIFO waits for its writer at most DTLAB_FIFO_WAIT s
+    std::istream in(buf.get());                 // a read error sets badbit (libstdc++'s filebuf throws)
     data_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (in.bad()) throw InputError(path_, 0, "read error");
   }
