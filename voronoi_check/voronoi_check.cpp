@@ -125,7 +125,7 @@ class Judge {
  public:
   Judge(std::span<const Point3> sites, const Box& box, const ToolCells& cells, const VoronoiCheckOptions& o,
         VoronoiCheckReport& r)
-      : sites_(sites), box_(box), cells_(cells), o_(o), r_(r), shared_(relation(sites, o)), nb_(*shared_) {
+      : sites_(sites), box_(box), cells_(cells), o_(o), r_(r) {
     extent2_ = sites_extent(sites, box);
     scale_ = cell_scale(box, sites);
     extent2_ *= extent2_;
@@ -148,36 +148,73 @@ class Judge {
     small_face_ = o.small_face;
   }
 
+  // The geometry stage reads neither the DT nor its tables: with two or more threads
+  // and a DT to build, it runs on half of them beside the build (whose threads scale
+  // less well than the cells'), and the tables then take them all. Its findings are
+  // merged after the relation's, so the report does not depend on the thread count.
   void run() {
+    const unsigned threads = thread_count(o_.threads);
+    scratch_.resize(threads);
+    std::vector<Partial> geometry;
+    if (o_.relation || o_.dt || threads < 2) {
+      shared_ = relation(sites_, o_);
+      geometry = judge_geometry_stage(threads);
+    } else {
+      const unsigned beside = threads / 2;
+      std::shared_ptr<const Tetrahedralization> dt;
+      double seconds_dt = 0;
+      parallel_chunks(2, 2, 1, [&](std::size_t task, std::size_t, unsigned) {
+        if (task == 0) {
+          const auto t = Clock::now();
+          dt = exact_delaunay(sites_, threads - beside);
+          seconds_dt = since(t);
+        } else
+          geometry = judge_geometry_stage(beside);
+      });
+      auto built = std::make_shared<VoronoiNeighbors>(sites_, std::move(dt), threads);
+      built->seconds_dt = seconds_dt;
+      shared_ = std::move(built);
+    }
+    nb_ = shared_.get();
     Partial cells;
     assign_cells(cells);
     merge(cells);
-    const unsigned threads = thread_count(o_.threads);
-    scratch_.resize(threads);
     auto t = Clock::now();
-    stage(sites_.size(), threads, [&](std::size_t a, Partial& p, Scratch& s) {
-      if (nb_.rep(static_cast<std::uint32_t>(a)) == a) judge_site(static_cast<std::uint32_t>(a), p, s);
-    });
+    merge_all(stage(sites_.size(), threads, [&](std::size_t a, Partial& p, Scratch& s) {
+      if (nb_->rep(static_cast<std::uint32_t>(a)) == a) judge_site(static_cast<std::uint32_t>(a), p, s);
+    }));
     r_.seconds_relation = since(t);
+    merge_all(std::move(geometry));
     t = Clock::now();
-    stage(cells_.size(), threads, [&](std::size_t c, Partial& p, Scratch& s) { judge_geometry(c, p, s); });
     judge_volume(threads);
-    r_.seconds_geometry = since(t);
-    if (!o_.relation) r_.seconds_dt = nb_.seconds_dt, r_.seconds_tables = nb_.seconds_tables;
+    r_.seconds_geometry += since(t);
+    if (!o_.relation) r_.seconds_dt = nb_->seconds_dt, r_.seconds_tables = nb_->seconds_tables;
     // One representative per set of equal sites (the relation's, no second sort).
-    for (std::size_t i = 0; i < sites_.size(); ++i) r_.distinct_sites += nb_.rep(static_cast<std::uint32_t>(i)) == i;
+    for (std::size_t i = 0; i < sites_.size(); ++i) r_.distinct_sites += nb_->rep(static_cast<std::uint32_t>(i)) == i;
   }
 
  private:
+  // Stage 3 over every cell on `threads` threads (scratch 0..threads-1), unmerged.
+  std::vector<Partial> judge_geometry_stage(unsigned threads) {
+    const auto t = Clock::now();
+    auto parts = stage(cells_.size(), threads, [&](std::size_t c, Partial& p, Scratch& s) { judge_geometry(c, p, s); });
+    r_.seconds_geometry = since(t);
+    return parts;
+  }
+
   // f(i, partial, scratch) for i in [0, n), in fixed chunks on `threads` threads; the
-  // chunks' findings merged in order.
+  // chunks' findings, in order, for merge_all.
   template <class F>
-  void stage(std::size_t n, unsigned threads, F&& f) {
+  std::vector<Partial> stage(std::size_t n, unsigned threads, F&& f) {
     std::vector<Partial> parts((n + kChunk - 1) / kChunk);
     parallel_chunks(n, threads, kChunk, [&](std::size_t b, std::size_t e, unsigned w) {
       Partial& p = parts[b / kChunk];
       for (std::size_t i = b; i < e; ++i) f(i, p, scratch_[w]);
     });
+    return parts;
+  }
+
+  void merge_all(std::vector<Partial>&& parts) {
     for (auto& p : parts) merge(p);
   }
 
@@ -218,7 +255,7 @@ class Judge {
         add(p, VoronoiDefect::extra_cell, s, -1, 0, "a cell of no site");
         continue;
       }
-      auto& slot = cell_of_[nb_.rep(static_cast<std::uint32_t>(s))];
+      auto& slot = cell_of_[nb_->rep(static_cast<std::uint32_t>(s))];
       if (slot >= 0)
         add(p, VoronoiDefect::extra_cell, s, cells_.site(slot), 0, "a second cell for this site or a copy of it");
       else
@@ -235,7 +272,7 @@ class Judge {
         add(p, VoronoiDefect::bad_neighbor, a, id, 0, "neighbour id is no site");
         continue;
       }
-      out.push_back({nb_.rep(static_cast<std::uint32_t>(id)), id, static_cast<std::uint32_t>(f), -1.0});
+      out.push_back({nb_->rep(static_cast<std::uint32_t>(id)), id, static_cast<std::uint32_t>(f), -1.0});
     }
     std::sort(out.begin(), out.end(), [](const ToolFace& x, const ToolFace& y) { return x.neighbor < y.neighbor; });
     std::size_t k = 0;
@@ -270,8 +307,8 @@ class Judge {
   // rounding bounds, so only a truly ambiguous cell is redone with exact signs (a band
   // below them, as 1e-15 was, sent every clipped cell to GMP).
   std::optional<FaceSize> true_area(std::uint32_t a, std::uint32_t b, Scratch& s) const {
-    nb_.ring_centres(a, b, s.centres);
-    const bool bounded = !nb_.hull_edge(a, b) && !s.centres.empty();
+    nb_->ring_centres(a, b, s.centres);
+    const bool bounded = !nb_->hull_edge(a, b) && !s.centres.empty();
     if (bounded && beyond_a_wall(s.centres)) return std::nullopt;
     if (s.clipped_site != a) {
       s.all.assign(s.pos.begin(), s.pos.end());
@@ -339,7 +376,7 @@ class Judge {
 
   // Stage 2: the neighbour set of one site against the exact one.
   void judge_site(std::uint32_t a, Partial& p, Scratch& s) const {
-    nb_.neighbors(a, s.pos, s.deg, s.ring);
+    nb_->neighbors(a, s.pos, s.deg, s.ring);
     p.voronoi_edges += s.pos.size();
     p.degenerate_edges += s.deg.size();
     const std::int64_t c = cell_of_[a];
@@ -371,7 +408,7 @@ class Judge {
       for (std::size_t g = 0; g < c.face_count(); ++g) {
         const std::int32_t id = c.face_neighbor[g];
         if (id < 0 || static_cast<std::size_t>(id) >= sites_.size() ||
-            nb_.rep(static_cast<std::uint32_t>(id)) != f.neighbor)
+            nb_->rep(static_cast<std::uint32_t>(id)) != f.neighbor)
           continue;
         const auto b = c.face_offsets[g], e = c.face_offsets[g + 1];
         size.diameter = std::max(size.diameter, polygon_diameter(c.vertices, c.face_vertices.subspan(b, e - b)));
@@ -441,12 +478,13 @@ class Judge {
         r_.count(VoronoiDefect::vertex_off) > 0)
       return;
     const double d = vertex_error_;
-    stage(cells_.size(), threads, [&](std::size_t k, Partial& p, Scratch&) {
+    auto parts = stage(cells_.size(), threads, [&](std::size_t k, Partial& p, Scratch&) {
       const VoronoiCell c = cells_.view(k);
       if (c.face_count() == 0) return;
       const VolumeRoundingBound b = volume_rounding_bound(c, d);
       p.volume_bound += b.volume, p.surface += b.surface;
     });
+    merge_all(std::move(parts));
     t.surface = surface_;
     const double ulp_floor = volume_bound_ / r_.box_volume;
     if (ulp_floor > o_.volume_tolerance) t.volume = {ulp_floor, true};
@@ -458,7 +496,7 @@ class Judge {
   const VoronoiCheckOptions& o_;
   VoronoiCheckReport& r_;
   std::shared_ptr<const VoronoiNeighbors> shared_;
-  const VoronoiNeighbors& nb_;
+  const VoronoiNeighbors* nb_ = nullptr;  // shared_, once built
   double extent2_ = 1, scale_ = 0, ulp_ = 0, vertex_tol_ = 0, convex_tol_ = 0, vertex_error_ = 0, small_face_ = 0;
   double volume_bound_ = 0, surface_ = 0;
   std::uint64_t not_closed_ = 0;

@@ -38,12 +38,10 @@ std::vector<std::uint32_t> representatives(std::span<const Point3> p) {
 
 }  // namespace
 
-VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, unsigned threads) {
+std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3> sites, unsigned threads) {
   for (const auto& p : sites)
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw std::invalid_argument("a site is not finite");
-  rep_ = representatives(sites);
-  const auto t0 = Clock::now();
   BuildOptions bo;
   bo.threads = threads;
   bo.count_stages = false;
@@ -54,8 +52,14 @@ VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, unsigned threa
       throw std::invalid_argument("fewer than 4 distinct sites, or all coplanar: no Delaunay tetrahedralization");
     throw std::runtime_error(std::string("Delaunay build failed: ") + failure_name(r.failure->kind));
   }
-  dt_ = std::make_shared<const Tetrahedralization>(std::move(r.mesh));
+  return std::make_shared<const Tetrahedralization>(std::move(r.mesh));
+}
+
+VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, unsigned threads) {
+  const auto t0 = Clock::now();
+  dt_ = exact_delaunay(sites, threads);
   seconds_dt = since(t0);
+  rep_ = representatives(sites);
   const auto t1 = Clock::now();
   build_tables(threads);
   seconds_tables = since(t1);

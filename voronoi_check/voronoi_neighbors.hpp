@@ -37,6 +37,11 @@ struct NeighborScratch {
   std::vector<char> mark;  // per site, all 0 between calls
 };
 
+// The sites' DT by exact predicates with symbolic perturbation, with the build's
+// adjacency (the tables' facet pairs): what VoronoiNeighbors reads. Throws as its
+// first constructor.
+std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3> sites, unsigned threads = 1);
+
 class VoronoiNeighbors {
  public:
   // Throws std::invalid_argument on a non-finite site, or on fewer than 4 distinct or

@@ -3,6 +3,8 @@
 // from our cells' DT instead of built, or shared by several checks.
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 #include "sites.hpp"
 
 #include "voronoi_check/voronoi_check.hpp"
@@ -149,4 +151,24 @@ TEST_CASE("one relation shared by the checks of several tools gives each the sam
   require_same(broken_alone, broken_shared);
   // A relation of other sites is refused.
   CHECK_THROWS_AS(check_voronoi(random_sites(100, 1), kBox, whole, o), std::invalid_argument);
+}
+
+TEST_CASE("sites with no DT are refused on any thread count, the geometry beside the build or not", "[threads]") {
+  // Coplanar sites and a non-finite one: the DT build (beside the cells' geometry from 2
+  // threads on) throws, and the check rethrows it once both have finished.
+  std::vector<Point3> flat;
+  for (int i = 0; i < 40; ++i) flat.push_back({0.1 * (i % 7), 0.13 * (i / 7), 0.5});
+  auto finite = random_sites(200, 3);
+  VoronoiOptions vo;
+  vo.box = kBox;
+  const ToolCells cells = tool_cells_of(compute_voronoi(finite, vo));
+  auto broken = finite;
+  broken[17].y = std::numeric_limits<double>::quiet_NaN();
+  for (unsigned threads : {1u, 2u, 4u}) {
+    INFO("threads " << threads);
+    VoronoiCheckOptions o;
+    o.threads = threads;
+    CHECK_THROWS_AS(check_voronoi(flat, kBox, cells, o), std::invalid_argument);
+    CHECK_THROWS_AS(check_voronoi(broken, kBox, cells, o), std::invalid_argument);
+  }
 }
