@@ -19,46 +19,69 @@
 
 namespace dtlab {
 
-// Closed and consistently oriented: at least 4 faces of 3+ corners, every directed
-// edge once and its reverse once, no edge from a vertex to itself, every vertex used,
-// V - E + F = 2. Exact (no tolerance). The directed edges are kept per tail vertex
-// (a few each), in arrays reused by the thread: no allocation per cell.
-inline std::string check_cell_closed(const VoronoiCell& c) {
-  const std::size_t nf = c.face_count(), nv = c.vertices.size();
-  if (nf < 4) return "fewer than 4 faces";
-  thread_local std::vector<std::uint32_t> off, head, fill;
-  off.assign(nv + 1, 0);
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (c.face_offsets[f + 1] - c.face_offsets[f] < 3) return "face with fewer than 3 vertices";
-    for (auto k = c.face_offsets[f]; k < c.face_offsets[f + 1]; ++k) ++off[c.face_vertices[k] + 1];
+// A cell's directed edges by tail vertex, in compressed rows: the edges out of v are
+// k in [off[v], off[v+1]), each with its head vertex and its face, in face order (so a
+// vertex's faces are listed as it meets them). Built once per cell for both the
+// closedness check and the vertex test (voronoi_check/cell_geometry.hpp); the arrays
+// are reused, no allocation once warm.
+struct CellIncidence {
+  std::vector<std::uint32_t> off, head, face, fill;
+  std::span<const std::uint32_t> heads(std::uint32_t v) const {
+    return std::span<const std::uint32_t>(head).subspan(off[v], off[v + 1] - off[v]);
   }
-  for (std::size_t v = 0; v < nv; ++v) off[v + 1] += off[v];
-  head.resize(c.face_vertices.size());
-  fill.assign(off.begin(), off.end() - 1);
+};
+
+// Requires every face vertex id below c.vertices.size() (ToolCells and our cells keep it).
+inline void cell_incidence(const VoronoiCell& c, CellIncidence& in) {
+  const std::size_t nf = c.face_count(), nv = c.vertices.size();
+  in.off.assign(nv + 1, 0);
+  for (auto v : c.face_vertices) ++in.off[v + 1];
+  for (std::size_t v = 0; v < nv; ++v) in.off[v + 1] += in.off[v];
+  in.head.resize(c.face_vertices.size());
+  in.face.resize(c.face_vertices.size());
+  in.fill.assign(in.off.begin(), in.off.end() - 1);
   for (std::size_t f = 0; f < nf; ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
-    for (auto k = b; k < e; ++k) head[fill[c.face_vertices[k]]++] = c.face_vertices[k + 1 < e ? k + 1 : b];
+    for (auto k = b; k < e; ++k) {
+      const auto slot = in.fill[c.face_vertices[k]]++;
+      in.head[slot] = c.face_vertices[k + 1 < e ? k + 1 : b];
+      in.face[slot] = static_cast<std::uint32_t>(f);
+    }
   }
-  const auto out_of = [&](std::uint32_t v) {
-    return std::span<const std::uint32_t>(head).subspan(off[v], off[v + 1] - off[v]);
-  };
+}
+
+// Closed and consistently oriented: at least 4 faces of 3+ corners, every directed
+// edge once and its reverse once, no edge from a vertex to itself, every vertex used,
+// V - E + F = 2. Exact (no tolerance). `in`: the cell's incidence (cell_incidence).
+inline std::string check_cell_closed(const VoronoiCell& c, const CellIncidence& in) {
+  const std::size_t nf = c.face_count(), nv = c.vertices.size();
+  if (nf < 4) return "fewer than 4 faces";
+  for (std::size_t f = 0; f < nf; ++f)
+    if (c.face_offsets[f + 1] - c.face_offsets[f] < 3) return "face with fewer than 3 vertices";
   for (std::uint32_t u = 0; u < nv; ++u) {
-    const auto out = out_of(u);
+    const auto out = in.heads(u);
     for (std::size_t i = 0; i < out.size(); ++i)
       if (std::find(out.begin() + static_cast<std::ptrdiff_t>(i) + 1, out.end(), out[i]) != out.end())
         return "directed edge used twice";
   }
   for (std::uint32_t u = 0; u < nv; ++u)
-    for (auto v : out_of(u)) {
+    for (auto v : in.heads(u)) {
       if (u == v) return "edge from a vertex to itself";
-      const auto back = out_of(v);
+      const auto back = in.heads(v);
       if (std::find(back.begin(), back.end(), u) == back.end()) return "edge without its reverse";
     }
   for (std::size_t v = 0; v < nv; ++v)
-    if (off[v + 1] == off[v]) return "unused vertex";
+    if (in.off[v + 1] == in.off[v]) return "unused vertex";
   const long euler = long(nv) - long(c.face_vertices.size() / 2) + long(nf);
   if (euler != 2) return "Euler characteristic " + std::to_string(euler);
   return {};
+}
+
+// The same, building the incidence in an array kept by the thread.
+inline std::string check_cell_closed(const VoronoiCell& c) {
+  thread_local CellIncidence in;
+  cell_incidence(c, in);
+  return check_cell_closed(c, in);
 }
 
 // Whether n . (p_i - o) > tol for some i < count (p_i = (X[i], Y[i], Z[i])), with the

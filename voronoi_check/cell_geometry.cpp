@@ -57,25 +57,12 @@ bool plane_of(std::int32_t tag, std::span<const Point3> sites, const Point3& s, 
 
 // The per-cell arrays of vertex_errors, kept per thread (no allocation per cell).
 struct VertexScratch {
-  std::vector<std::uint32_t> off, inc, fill;
   std::vector<Plane> face_plane;  // long double, built on first use (face_ld)
   std::vector<L> face_norm;
   std::vector<char> face_ok, face_ld;
   std::vector<FilterPlane> filter;
   std::vector<std::size_t> planes;  // the faces at one vertex with a plane
 };
-
-// Faces at each vertex in compressed rows: faces of v are inc[off[v] .. off[v+1]).
-void faces_by_vertex(const VoronoiCell& c, VertexScratch& s) {
-  const std::size_t nv = c.vertices.size();
-  s.off.assign(nv + 1, 0);
-  s.inc.resize(c.face_vertices.size());
-  for (auto v : c.face_vertices) ++s.off[v + 1];
-  for (std::size_t v = 0; v < nv; ++v) s.off[v + 1] += s.off[v];
-  s.fill.assign(s.off.begin(), s.off.end() - 1);
-  for (std::size_t f = 0; f < c.face_count(); ++f)
-    for (auto k = c.face_offsets[f]; k < c.face_offsets[f + 1]; ++k) s.inc[s.fill[c.face_vertices[k]]++] = f;
-}
 
 // The distance of vertex p (relative to the site) to the point where the three
 // best-conditioned planes of s.planes meet; nullopt when they do not fix a point.
@@ -116,11 +103,10 @@ void prefetch_face_sites(const VoronoiCell& c, std::span<const Point3> sites) {
     if (tag >= 0 && static_cast<std::size_t>(tag) < sites.size()) __builtin_prefetch(&sites[tag]);
 }
 
-void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uint32_t site, const Box& box,
-                   std::span<VertexError> out, double below) {
+void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<const Point3> sites, std::uint32_t site,
+                   const Box& box, std::span<VertexError> out, double below) {
   thread_local VertexScratch s;
   const Point3 st = sites[site];
-  faces_by_vertex(c, s);
   const std::size_t nf = c.face_count();
   s.face_plane.resize(nf);
   s.face_norm.resize(nf);
@@ -130,8 +116,8 @@ void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uin
   for (std::size_t f = 0; f < nf; ++f) s.face_ok[f] = filter_plane(c.face_neighbor[f], sites, st, box, s.filter[f]);
   for (std::size_t v = 0; v < c.vertices.size(); ++v) {
     s.planes.clear();
-    for (auto k = s.off[v]; k < s.off[v + 1] && s.planes.size() < 8; ++k)
-      if (s.face_ok[s.inc[k]]) s.planes.push_back(s.inc[k]);
+    for (auto k = in.off[v]; k < in.off[v + 1] && s.planes.size() < 8; ++k)
+      if (s.face_ok[in.face[k]]) s.planes.push_back(in.face[k]);
     const auto& pl = s.planes;
     if (below >= 0 && pl.size() == 3) {
       const double u = vertex_distance_bound(c.vertices[v], st, s.filter[pl[0]], s.filter[pl[1]], s.filter[pl[2]]);
@@ -149,6 +135,13 @@ void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uin
     const auto e = vertex_error(c.vertices[v], st, s);
     out[v] = e ? VertexError{static_cast<double>(*e), true} : VertexError{};
   }
+}
+
+void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uint32_t site, const Box& box,
+                   std::span<VertexError> out, double below) {
+  thread_local CellIncidence in;
+  cell_incidence(c, in);
+  vertex_errors(c, in, sites, site, box, out, below);
 }
 
 }  // namespace dtlab

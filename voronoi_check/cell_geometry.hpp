@@ -6,6 +6,7 @@
 #include <span>
 
 #include "voronoi/box.hpp"
+#include "voronoi/cell_check.hpp"
 #include "voronoi/voronoi.hpp"
 
 namespace dtlab {
@@ -32,5 +33,9 @@ struct VertexError {
 // the long double solve's, whatever `below`.
 void vertex_errors(const VoronoiCell& c, std::span<const Point3> sites, std::uint32_t site, const vor::Box& box,
                    std::span<VertexError> out, double below = -1);
+// The same with the cell's incidence already built (cell_incidence): each vertex's
+// faces in the order the cell lists them.
+void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<const Point3> sites, std::uint32_t site,
+                   const vor::Box& box, std::span<VertexError> out, double below = -1);
 
 }  // namespace dtlab

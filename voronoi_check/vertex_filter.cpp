@@ -31,9 +31,11 @@
 // (12 u (1 + 40 u) < 13 u).
 //
 // Solution x_j = N_j / D. Required: E_D <= 2^-10 |D~| (else no verdict). With r_j =
-// N~_j / D~: |x_j - r_j| <= (E_N + |r_j| E_D) / (|D~| - E_D), and x~_j = fl(r_j) is one
-// rounding more, so
-//   |x~_j - x_j| <= X_j = 1.01 (E_N + |x~_j| E_D) / |D~| + 1.01 u |x~_j|.
+// N~_j / D~: |x_j - r_j| <= (E_N + |r_j| E_D) / (|D~| - E_D). One division for the
+// three: x~_j = fl(N~_j fl(1 / D~)) is two roundings from r_j (|x~_j - r_j| <= 2.01 u
+// |x~_j|), and the bound's own products by fl(1 / |D~|) lose a few u, inside the 1.01
+// that already covers 1 / (1 - 2^-10), so
+//   |x~_j - x_j| <= X_j = 1.01 (E_N + |x~_j| E_D) / |D~| + 2.02 u |x~_j|.
 // Distance: t_j = p_j - s_j (1 rounding), e_j = t_j - x_j (1 rounding), d = max |e_j|:
 //   |e~_j - e_j| <= B_j = X_j + 1.01 u (|t~_j| + |e~_j|),   |d~ - d| <= B = max_j B_j.
 //
@@ -120,13 +122,14 @@ bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& 
   abs_cross(d.n, a.n, pda);
   abs_cross(a.n, b.n, pab);
   const double ca = std::abs(a.c), cb = std::abs(b.c), cd = std::abs(d.c);
+  const double inv = 1 / det, inv_abs = std::abs(inv);
   for (int j = 0; j < 3; ++j) {
     const double p_n = ca * pbd[j] + cb * pda[j] + cd * pab[j];
     if (!(p_n <= 0x1p900)) return false;
-    out.x[j] = (a.c * bd[j] + b.c * da[j] + d.c * ab[j]) / det;
+    out.x[j] = (a.c * bd[j] + b.c * da[j] + d.c * ab[j]) * inv;
     const double ax = std::abs(out.x[j]);
     // An underflowed term of p_n (below 2^-900) errs by far less than u 2^-900.
-    out.error[j] = 1.01 * (13 * u * std::max(p_n, 0x1p-900) + ax * out.det_error) / out.det + 1.01 * u * ax;
+    out.error[j] = 1.01 * (13 * u * std::max(p_n, 0x1p-900) + ax * out.det_error) * inv_abs + 2.02 * u * ax;
     if (!std::isfinite(out.error[j])) return false;
   }
   return true;

@@ -106,6 +106,7 @@ struct Scratch {
   std::vector<std::uint32_t> pos, deg, all;
   std::vector<ToolFace> tf;
   std::vector<VertexError> errors;
+  CellIncidence incidence;  // of the cell being judged
   std::vector<Point3> centres;
   NeighborScratch ring;
   ConvexCell clipped;
@@ -441,7 +442,8 @@ class Judge {
     p.faces += c.face_count();
     p.vertices += c.vertices.size();
     p.volume_sum += cell_volume(c);
-    std::string why = check_cell_closed(c);
+    cell_incidence(c, s.incidence);
+    std::string why = check_cell_closed(c, s.incidence);
     if (!why.empty())
       ++p.not_closed;
     else
@@ -452,7 +454,8 @@ class Judge {
     // A vertex certified no farther than the chunk's largest distance so far and within
     // the tolerance changes no number of the report: its solve is skipped.
     const double tol = vertex_tol_;
-    vertex_errors(c, sites_, static_cast<std::uint32_t>(site), box_, s.errors, std::min(p.max_vertex_distance, tol));
+    vertex_errors(c, s.incidence, sites_, static_cast<std::uint32_t>(site), box_, s.errors,
+                  std::min(p.max_vertex_distance, tol));
     const Point3 o = sites_[static_cast<std::size_t>(site)];
     for (std::size_t j = 0; j < s.errors.size(); ++j) {
       const VertexError& e = s.errors[j];
