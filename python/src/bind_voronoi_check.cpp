@@ -38,7 +38,7 @@ ToolCells tool_cells(py::handle cells) {
 }
 
 py::object check_voronoi(py::handle points, py::handle cells, const std::vector<double>& b, double small_face,
-                         double vertex_tolerance, double volume_tolerance, double ulps) {
+                         double vertex_tolerance, double volume_tolerance, double ulps, unsigned threads) {
   const DoubleArray pts = point_array(points, "points");
   if (b.size() != 6) throw py::value_error("box: xmin ymin zmin xmax ymax zmax");
   const ToolCells t = tool_cells(cells);
@@ -47,6 +47,7 @@ py::object check_voronoi(py::handle points, py::handle cells, const std::vector<
   o.vertex_tolerance = vertex_tolerance;
   o.volume_tolerance = volume_tolerance;
   o.ulps = ulps;
+  o.threads = threads;
   VoronoiCheckReport r;
   try {
     py::gil_scoped_release nogil;
@@ -68,7 +69,8 @@ std::vector<double> box_of(py::handle points, double margin) {
 
 void bind_voronoi_check(py::module_& m) {
   m.def("check_voronoi", &check_voronoi, py::arg("points"), py::arg("cells"), py::arg("box"), py::arg("small_face"),
-        py::arg("vertex_tolerance"), py::arg("volume_tolerance"), py::arg("ulps"), "Judge Voronoi cells (see dtlab.check_voronoi).");
+        py::arg("vertex_tolerance"), py::arg("volume_tolerance"), py::arg("ulps"), py::arg("threads"),
+        "Judge Voronoi cells (see dtlab.check_voronoi).");
   m.def("default_box", &box_of, py::arg("points"), py::arg("margin"), "The bounding box grown by margin per side.");
 }
 

@@ -97,3 +97,21 @@ def test_thread_counts_are_bounded_as_in_the_cli():
         with pytest.raises(ValueError, match="threads"):
             dtlab.tetrahedralize(pts, threads=threads)
     assert len(dtlab.voronoi(pts, threads=1024).cells) == 30
+
+
+def _without_seconds(report):
+    return {k: v for k, v in report.items() if not k.startswith("seconds")}
+
+
+def test_threads_give_the_same_report():
+    pts = np.random.default_rng(4).random((3000, 3))
+    vd = dtlab.voronoi(pts)
+    # A damaged copy too, so that the defects and witnesses are compared as well.
+    cells = [(c.site, c.vertices, c.faces, c.face_neighbors) for i, c in enumerate(vd.cells) if i % 97 != 3]
+    for tool in (vd, cells):
+        one = dtlab.check_voronoi(pts, tool, box=vd.box, threads=1)
+        for threads in (2, 3, 0):
+            assert _without_seconds(dtlab.check_voronoi(pts, tool, box=vd.box, threads=threads)) == _without_seconds(one)
+    assert one["verdict"] == "wrong-topology" and one["counts"]["missing-cell"] == 31
+    with pytest.raises(ValueError, match="^threads: "):
+        dtlab.check_voronoi(pts, vd, threads=-1)
