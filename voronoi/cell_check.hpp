@@ -25,9 +25,13 @@ namespace dtlab {
 // closedness check and the vertex test (voronoi_check/cell_geometry.hpp); the arrays
 // are reused, no allocation once warm.
 struct CellIncidence {
-  std::vector<std::uint32_t> off, head, face, fill;
+  std::vector<std::uint32_t> off, head, face;
+  std::vector<std::uint32_t> fill;  // cell_incidence's cursor per vertex
   std::span<const std::uint32_t> heads(std::uint32_t v) const {
     return std::span<const std::uint32_t>(head).subspan(off[v], off[v + 1] - off[v]);
+  }
+  std::span<const std::uint32_t> faces(std::uint32_t v) const {
+    return std::span<const std::uint32_t>(face).subspan(off[v], off[v + 1] - off[v]);
   }
 };
 

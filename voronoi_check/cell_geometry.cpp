@@ -116,8 +116,10 @@ void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<cons
   for (std::size_t f = 0; f < nf; ++f) s.face_ok[f] = filter_plane(c.face_neighbor[f], sites, st, box, s.filter[f]);
   for (std::size_t v = 0; v < c.vertices.size(); ++v) {
     s.planes.clear();
-    for (auto k = in.off[v]; k < in.off[v + 1] && s.planes.size() < 8; ++k)
-      if (s.face_ok[in.face[k]]) s.planes.push_back(in.face[k]);
+    for (auto f : in.faces(static_cast<std::uint32_t>(v))) {
+      if (s.planes.size() == 8) break;
+      if (s.face_ok[f]) s.planes.push_back(f);
+    }
     const auto& pl = s.planes;
     if (below >= 0 && pl.size() == 3) {
       const double u = vertex_distance_bound(c.vertices[v], st, s.filter[pl[0]], s.filter[pl[1]], s.filter[pl[2]]);

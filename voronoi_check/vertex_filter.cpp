@@ -39,8 +39,9 @@
 // Distance: t_j = p_j - s_j (1 rounding), e_j = t_j - x_j (1 rounding), d = max |e_j|:
 //   |e~_j - e_j| <= B_j = X_j + 1.01 u (|t~_j| + |e~_j|),   |d~ - d| <= B = max_j B_j.
 //
-// The long double path computes the same expressions with the same rounding counts
-// (its n = L(q) - L(s) has at most 1), so its distance d_L obeys the same bound with
+// The long double path computes the same expressions with at most the same rounding
+// counts (its n = L(q) - L(s) has at most 1; it divides three times, one rounding each),
+// so its distance d_L obeys the same bound with
 // u_L: |d_L - d| <= 2^-11 (1 + 2^-9) B < B / 1024 (its magnitudes lie within 2^-9 of
 // these, by the conditioning requirement). Hence d_L <= d~ + B (1 + 2^-10) and the
 // returned U = fl(fl(d~ (1 + 4u)) + fl(1.01 B)) is above it: the three roundings lose
@@ -55,10 +56,12 @@
 // Range: the counts hold without underflow or overflow. Each plane needs
 // 2^-1000 <= n~ . n~ <= 2^1000 (bisectors; walls have n . n = 1) and a finite c~; each
 // triple m~_a m~_b m~_d in [2^-900, 2^900] and every P~_N,j <= 2^900: no intermediate
-// overflows. An underflowed term errs by at most 2^-1074 absolute, about 2^-1068 in
-// all: far inside u P~_D (the decided test makes |D~| > 2^-929, so P~_D > 2^-929) and
-// inside the u 2^-900 that E_N adds by taking max(P~_N,j, 2^-900). Non-finite vertices
-// or results give no bound: the long double path then decides.
+// overflows; |D~| <= P~_D (1 + 12u) <= 2^900 (1 + 13u), so fl(1 / D~) >= 2^-901 does not
+// underflow. |D~| >= 2^-1000 is required (the decided test asks far more, |D~| >
+// 2^-929; tet_spheres.cpp asks only this): then P~_D > 2^-1001, and an underflowed term,
+// at most 2^-1074 absolute, about 2^-1068 in all, is far inside u P~_D and inside the
+// u 2^-900 that E_N adds by taking max(P~_N,j, 2^-900). Non-finite vertices or results
+// give no bound: the long double path then decides.
 
 namespace dtlab {
 
@@ -116,7 +119,7 @@ bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& 
   const double det = a.n[0] * bd[0] + a.n[1] * bd[1] + a.n[2] * bd[2];
   const double p_d = std::abs(a.n[0]) * pbd[0] + std::abs(a.n[1]) * pbd[1] + std::abs(a.n[2]) * pbd[2];
   out.det = std::abs(det), out.det_error = 9 * u * p_d;
-  if (!(out.det_error <= 0x1p-10 * out.det)) return false;
+  if (!(out.det >= 0x1p-1000 && out.det_error <= 0x1p-10 * out.det)) return false;
   cross(d.n, a.n, da);
   cross(a.n, b.n, ab);
   abs_cross(d.n, a.n, pda);

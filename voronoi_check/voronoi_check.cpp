@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <optional>
 #include <stdexcept>
 
@@ -150,9 +151,10 @@ class Judge {
   }
 
   // The geometry stage reads neither the DT nor its tables: with two or more threads
-  // and a DT to build, it runs on half of them beside the build (whose threads scale
-  // less well than the cells'), and the tables then take them all. Its findings are
-  // merged after the relation's, so the report does not depend on the thread count.
+  // and a DT to build, it runs on half of them beside the build, rather than after it
+  // (the build gains little from a second thread at 10^5 sites, the cells nearly 2x);
+  // the tables then take them all. Its findings are merged after the relation's, so
+  // the report does not depend on the thread count.
   void run() {
     const unsigned threads = thread_count(o_.threads);
     scratch_.resize(threads);
@@ -163,18 +165,23 @@ class Judge {
     } else {
       const unsigned beside = threads / 2;
       std::shared_ptr<const Tetrahedralization> dt;
+      std::exception_ptr refused;  // the build's refusal comes first, whatever the other task threw
       double seconds_dt = 0;
       parallel_chunks(2, 2, 1, [&](std::size_t task, std::size_t, unsigned) {
-        if (task == 0) {
-          const auto t = Clock::now();
-          dt = exact_delaunay(sites_, threads - beside);
-          seconds_dt = since(t);
-        } else
+        if (task == 1) {
           geometry = judge_geometry_stage(beside);
+          return;
+        }
+        const auto t = Clock::now();
+        try {
+          dt = exact_delaunay(sites_, threads - beside);
+        } catch (...) {
+          refused = std::current_exception();
+        }
+        seconds_dt = since(t);
       });
-      auto built = std::make_shared<VoronoiNeighbors>(sites_, std::move(dt), threads);
-      built->seconds_dt = seconds_dt;
-      shared_ = std::move(built);
+      if (refused) std::rethrow_exception(refused);
+      shared_ = std::make_shared<VoronoiNeighbors>(sites_, std::move(dt), threads, seconds_dt);
     }
     nb_ = shared_.get();
     Partial cells;
@@ -538,6 +545,8 @@ VoronoiCheckReport check_voronoi(std::span<const Point3> sites, const Box& box, 
     if (!std::isfinite(v)) throw std::invalid_argument("the box is not finite");
   if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z))
     throw std::invalid_argument("the box is empty");
+  if (sites.empty())  // as the DT build refuses it, before any stage reads a site
+    throw std::invalid_argument("fewer than 4 distinct sites, or all coplanar: no Delaunay tetrahedralization");
   VoronoiCheckReport r;
   r.sites = sites.size();
   r.box_volume = box.volume();

@@ -93,7 +93,10 @@ struct VoronoiCheckOptions {
   // move when every vertex is within e.
   double ulps = kRoundingUlps;
   std::size_t witnesses_per_kind = 16;
-  unsigned threads = 1;  // sites judged in parallel (0: all hardware threads); the report is the same for any count
+  // Threads (0: all hardware threads) of every stage: the DT, its tables, the relation
+  // and the geometry, which with 2+ threads and a DT to build runs on half of them beside
+  // the build. The report is the same for any count.
+  unsigned threads = 1;
   // The sites' Delaunay tetrahedralization by exact predicates with symbolic
   // perturbation (compute_voronoi's with keep_dt), read instead of built: the same
   // tets (the perturbed DT is unique), so the same report. Null: built here.
@@ -137,7 +140,8 @@ struct VoronoiCheckReport {
   std::uint64_t degenerate_edges = 0;  // directed DT edges with a zero-area face
   // Wall time of the stages: the DT, its tables (flat and cospherical tets, hull
   // edges), the neighbour sets against the exact ones, the cells' shape and vertices;
-  // and of the whole check.
+  // and of the whole check. With the geometry beside the DT build (threads) the two
+  // overlap: the stages may sum to more than `seconds`.
   double seconds_dt = 0, seconds_tables = 0, seconds_relation = 0, seconds_geometry = 0, seconds = 0;
   std::uint64_t count(VoronoiDefect d) const { return counts[static_cast<int>(d)]; }
 };

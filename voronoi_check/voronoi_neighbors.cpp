@@ -66,8 +66,8 @@ VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, unsigned threa
 }
 
 VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, std::shared_ptr<const Tetrahedralization> dt,
-                                   unsigned threads)
-    : rep_(representatives(sites)), dt_(std::move(dt)) {
+                                   unsigned threads, double dt_seconds)
+    : seconds_dt(dt_seconds), rep_(representatives(sites)), dt_(std::move(dt)) {
   if (dt_->points.size() != sites.size()) throw std::invalid_argument("the DT is not of these sites");
   const auto t1 = Clock::now();
   build_tables(threads);

@@ -50,7 +50,9 @@ class VoronoiNeighbors {
   explicit VoronoiNeighbors(std::span<const Point3> sites, unsigned threads = 1);
   // The same from the sites' DT already built with exact predicates and symbolic
   // perturbation (its points are the sites); only the tables are built.
-  VoronoiNeighbors(std::span<const Point3> sites, std::shared_ptr<const Tetrahedralization> dt, unsigned threads = 1);
+  // dt_seconds: the build's time when it was built for this relation (0: read).
+  VoronoiNeighbors(std::span<const Point3> sites, std::shared_ptr<const Tetrahedralization> dt, unsigned threads = 1,
+                   double dt_seconds = 0);
 
   // rep(i): the first site with the coordinates of site i (itself when unique).
   std::uint32_t rep(std::uint32_t i) const { return rep_[i]; }

@@ -285,6 +285,7 @@ def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float
     cores, at most 1024; from 2 on, the cells' geometry is judged beside the exact DT's
     build); the report is the same for any count, its seconds aside.
     """
+    nthreads = _threads(threads)
     if box is None:
         b = _box_arg(cells.box) if isinstance(cells, VoronoiDiagram) else _core.default_box(points, 0.1)
     else:
@@ -292,8 +293,8 @@ def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float
     assert b is not None
     tolerances = [_real(t, name, 0, 1, above=True) for t, name in ((small_face, "small_face"),
                   (vertex_tolerance, "vertex_tolerance"), (volume_tolerance, "volume_tolerance"))]
-    return _core.check_voronoi(points, _tool_cells(points, cells, b), b, *tolerances, _real(ulps, "ulps", 0, 1e6),
-                               _threads(threads))
+    nulps = _real(ulps, "ulps", 0, 1e6)
+    return _core.check_voronoi(points, _tool_cells(points, cells, b), b, *tolerances, nulps, nthreads)
 
 
 def read_mesh(path: str | os.PathLike[str]) -> Mesh:

@@ -154,7 +154,7 @@ TEST_CASE("one relation shared by the checks of several tools gives each the sam
 }
 
 TEST_CASE("sites with no DT are refused on any thread count, the geometry beside the build or not", "[threads]") {
-  // Coplanar sites and a non-finite one: the DT build (beside the cells' geometry from 2
+  // Coplanar sites, a non-finite one, none: the DT build (beside the cells' geometry from 2
   // threads on) throws, and the check rethrows it once both have finished.
   std::vector<Point3> flat;
   for (int i = 0; i < 40; ++i) flat.push_back({0.1 * (i % 7), 0.13 * (i / 7), 0.5});
@@ -170,5 +170,6 @@ TEST_CASE("sites with no DT are refused on any thread count, the geometry beside
     o.threads = threads;
     CHECK_THROWS_AS(check_voronoi(flat, kBox, cells, o), std::invalid_argument);
     CHECK_THROWS_AS(check_voronoi(broken, kBox, cells, o), std::invalid_argument);
+    CHECK_THROWS_AS(check_voronoi({}, kBox, cells, o), std::invalid_argument);  // no site at all
   }
 }
