@@ -1,6 +1,7 @@
 #include "voronoi_check/voronoi_check.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -93,7 +94,7 @@ struct Partial {
   std::array<std::uint64_t, kVoronoiDefects> counts{};
   std::vector<VoronoiWitness> witnesses;
   double largest_wrong_face = 0, largest_small_face = 0, max_vertex_ulps = 0, max_vertex_error = 0;
-  double max_vertex_distance = 0;  // the chunk's largest vertex distance so far (absolute)
+  double max_vertex_distance = 0;  // the chunk's largest vertex distance solved (absolute)
   double volume_sum = 0;
   double volume_bound = 0, surface = 0;  // the volume floor's sums over cells (computed only when needed)
   std::uint64_t faces = 0, vertices = 0, voronoi_edges = 0, degenerate_edges = 0;
@@ -458,11 +459,12 @@ class Judge {
     if (!why.empty()) add(p, VoronoiDefect::not_convex, site, -1, 0, why);
     if (site < 0 || static_cast<std::size_t>(site) >= sites_.size()) return;
     s.errors.resize(c.vertices.size());
-    // A vertex certified no farther than the chunk's largest distance so far and within
-    // the tolerance changes no number of the report: its solve is skipped.
+    // A vertex certified no farther than a distance already solved (in any chunk: all
+    // are merged) and within the tolerance changes no number of the report: its solve is
+    // skipped. Which vertices are solved depends on the schedule, the report does not.
     const double tol = vertex_tol_;
-    vertex_errors(c, s.incidence, sites_, static_cast<std::uint32_t>(site), box_, s.errors,
-                  std::min(p.max_vertex_distance, tol));
+    const double solved = std::max(p.max_vertex_distance, largest_distance_.load(std::memory_order_relaxed));
+    vertex_errors(c, s.incidence, sites_, static_cast<std::uint32_t>(site), box_, s.errors, std::min(solved, tol));
     const Point3 o = sites_[static_cast<std::size_t>(site)];
     for (std::size_t j = 0; j < s.errors.size(); ++j) {
       const VertexError& e = s.errors[j];
@@ -473,6 +475,10 @@ class Judge {
       if (e.distance > tol && e.distance > far_vertex_tolerance(c.vertices[j], o))
         add(p, VoronoiDefect::vertex_off, site, -1, e.distance / scale_);
     }
+    for (double seen = largest_distance_.load(std::memory_order_relaxed);
+         p.max_vertex_distance > seen &&
+         !largest_distance_.compare_exchange_weak(seen, p.max_vertex_distance, std::memory_order_relaxed);)
+      ;
   }
 
   // The volumes' sum against the box volume: within the relative tolerance, or else
@@ -510,6 +516,7 @@ class Judge {
   double extent2_ = 1, scale_ = 0, ulp_ = 0, vertex_tol_ = 0, convex_tol_ = 0, vertex_error_ = 0, small_face_ = 0;
   double volume_bound_ = 0, surface_ = 0;
   std::uint64_t not_closed_ = 0;
+  mutable std::atomic<double> largest_distance_{0};  // the largest vertex distance solved so far, any chunk
   std::vector<std::int64_t> cell_of_;
   std::vector<Scratch> scratch_;
 };
