@@ -168,9 +168,12 @@ class Judge {
       std::shared_ptr<const Tetrahedralization> dt;
       std::exception_ptr refused;  // the build's refusal comes first, whatever the other task threw
       double seconds_dt = 0;
+      std::vector<std::uint32_t> reps;
       parallel_chunks(2, 2, 1, [&](std::size_t task, std::size_t, unsigned) {
-        if (task == 1) {
+        if (task == 1) {  // the shorter task: the relation's sort of the sites too, when the build can take them
           geometry = judge_geometry_stage(beside);
+          if (std::all_of(sites_.begin(), sites_.end(), [](const Point3& p) { return std::isfinite(p.x + p.y + p.z); }))
+            reps = site_representatives(sites_);
           return;
         }
         const auto t = Clock::now();
@@ -182,7 +185,7 @@ class Judge {
         seconds_dt = since(t);
       });
       if (refused) std::rethrow_exception(refused);
-      shared_ = std::make_shared<VoronoiNeighbors>(sites_, std::move(dt), threads, seconds_dt);
+      shared_ = std::make_shared<VoronoiNeighbors>(sites_, std::move(dt), threads, seconds_dt, std::move(reps));
     }
     nb_ = shared_.get();
     Partial cells;

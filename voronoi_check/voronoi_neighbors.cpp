@@ -27,7 +27,9 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-std::vector<std::uint32_t> representatives(std::span<const Point3> p) {
+}  // namespace
+
+std::vector<std::uint32_t> site_representatives(std::span<const Point3> p) {
   std::vector<std::uint32_t> idx(p.size()), rep(p.size());
   std::iota(idx.begin(), idx.end(), 0u);
   std::stable_sort(idx.begin(), idx.end(), [&](auto a, auto b) { return lex_less(p[a], p[b]); });
@@ -35,8 +37,6 @@ std::vector<std::uint32_t> representatives(std::span<const Point3> p) {
     rep[idx[k]] = k > 0 && p[idx[k]] == p[idx[k - 1]] ? rep[idx[k - 1]] : idx[k];
   return rep;
 }
-
-}  // namespace
 
 std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3> sites, unsigned threads) {
   for (const auto& p : sites)
@@ -59,15 +59,16 @@ VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, unsigned threa
   const auto t0 = Clock::now();
   dt_ = exact_delaunay(sites, threads);
   seconds_dt = since(t0);
-  rep_ = representatives(sites);
+  rep_ = site_representatives(sites);
   const auto t1 = Clock::now();
   build_tables(threads);
   seconds_tables = since(t1);
 }
 
 VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, std::shared_ptr<const Tetrahedralization> dt,
-                                   unsigned threads, double dt_seconds)
-    : seconds_dt(dt_seconds), rep_(representatives(sites)), dt_(std::move(dt)) {
+                                   unsigned threads, double dt_seconds, std::vector<std::uint32_t> reps)
+    : seconds_dt(dt_seconds), rep_(reps.empty() ? site_representatives(sites) : std::move(reps)), dt_(std::move(dt)) {
+  if (rep_.size() != sites.size()) throw std::invalid_argument("the representatives are not of these sites");
   if (dt_->points.size() != sites.size()) throw std::invalid_argument("the DT is not of these sites");
   const auto t1 = Clock::now();
   build_tables(threads);

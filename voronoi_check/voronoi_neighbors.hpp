@@ -42,6 +42,9 @@ struct NeighborScratch {
 // first constructor.
 std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3> sites, unsigned threads = 1);
 
+// Per site, the first site with its coordinates (itself when unique): VoronoiNeighbors::rep.
+std::vector<std::uint32_t> site_representatives(std::span<const Point3> sites);
+
 class VoronoiNeighbors {
  public:
   // Throws std::invalid_argument on a non-finite site, or on fewer than 4 distinct or
@@ -50,9 +53,10 @@ class VoronoiNeighbors {
   explicit VoronoiNeighbors(std::span<const Point3> sites, unsigned threads = 1);
   // The same from the sites' DT already built with exact predicates and symbolic
   // perturbation (its points are the sites); only the tables are built.
-  // dt_seconds: the build's time when it was built for this relation (0: read).
+  // dt_seconds: the build's time when it was built for this relation (0: read); reps:
+  // site_representatives(sites) when already computed (empty: computed here).
   VoronoiNeighbors(std::span<const Point3> sites, std::shared_ptr<const Tetrahedralization> dt, unsigned threads = 1,
-                   double dt_seconds = 0);
+                   double dt_seconds = 0, std::vector<std::uint32_t> reps = {});
 
   // rep(i): the first site with the coordinates of site i (itself when unique).
   std::uint32_t rep(std::uint32_t i) const { return rep_[i]; }
