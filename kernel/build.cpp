@@ -32,7 +32,7 @@ BuildResult build_delaunay(std::vector<Point3>&& points, const PredicateSpec& sp
   // No predicate has a sign for a NaN or an infinity: such input is refused.
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point3& p = points[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    if (!is_finite(p))
       throw std::invalid_argument("build_delaunay: point " + std::to_string(i) + " has a non-finite coordinate");
   }
   if (options.boundary == Boundary::bigtet && !(std::isfinite(options.bigtet_factor) && options.bigtet_factor > 0))

@@ -21,8 +21,7 @@ void ToolCells::add_cell(std::int64_t site, std::span<const Point3> vertices,
     if (v >= vertices.size())
       throw std::invalid_argument("cell of site " + std::to_string(site) + ": a corner out of range");
   for (const auto& p : vertices)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw std::invalid_argument("cell of site " + std::to_string(site) + ": a vertex is not finite");
+    if (!is_finite(p)) throw std::invalid_argument("cell of site " + std::to_string(site) + ": a vertex is not finite");
   site_.push_back(site);
   v_.insert(v_.end(), vertices.begin(), vertices.end());
   fo_.insert(fo_.end(), face_offsets.begin(), face_offsets.end());

@@ -151,11 +151,6 @@ class Judge {
     small_face_ = o.small_face;
   }
 
-  // The geometry stage reads neither the DT nor its tables: with two or more threads
-  // and a DT to build, it runs on half of them beside the build, rather than after it
-  // (the build gains little from a second thread at 10^5 sites, the cells nearly 2x);
-  // the tables then take them all. Its findings are merged after the relation's, so
-  // the report does not depend on the thread count.
   void run() {
     const unsigned threads = thread_count(o_.threads);
     scratch_.resize(threads);
@@ -163,30 +158,8 @@ class Judge {
     if (o_.relation || o_.dt || threads < 2) {
       shared_ = relation(sites_, o_);
       geometry = judge_geometry_stage(threads);
-    } else {
-      const unsigned beside = threads / 2;
-      std::shared_ptr<const Tetrahedralization> dt;
-      std::exception_ptr refused;  // the build's refusal comes first, whatever the other task threw
-      double seconds_dt = 0;
-      std::vector<std::uint32_t> reps;
-      parallel_chunks(2, 2, 1, [&](std::size_t task, std::size_t, unsigned) {
-        if (task == 1) {  // the shorter task: the relation's sort of the sites too, when the build can take them
-          geometry = judge_geometry_stage(beside);
-          if (std::all_of(sites_.begin(), sites_.end(), [](const Point3& p) { return std::isfinite(p.x + p.y + p.z); }))
-            reps = site_representatives(sites_);
-          return;
-        }
-        const auto t = Clock::now();
-        try {
-          dt = exact_delaunay(sites_, threads - beside);
-        } catch (...) {
-          refused = std::current_exception();
-        }
-        seconds_dt = since(t);
-      });
-      if (refused) std::rethrow_exception(refused);
-      shared_ = std::make_shared<VoronoiNeighbors>(sites_, std::move(dt), threads, seconds_dt, std::move(reps));
-    }
+    } else
+      geometry = build_relation_beside_geometry(threads);
     nb_ = shared_.get();
     Partial cells;
     assign_cells(cells);
@@ -206,6 +179,39 @@ class Judge {
   }
 
  private:
+  // The geometry stage reads neither the DT nor its tables: with two or more threads
+  // and a DT to build, it runs on half of them beside the build rather than after it
+  // (the build gains little from a second thread at 10^5 sites, the cells nearly 2x),
+  // and sorts the sites' representatives for the relation when done; the tables then
+  // take every thread. Returns the geometry's findings, merged by run() after the
+  // relation's, so the report does not depend on the thread count. The build's refusal
+  // of the sites is rethrown first, whatever the other task threw.
+  std::vector<Partial> build_relation_beside_geometry(unsigned threads) {
+    const unsigned beside = threads / 2;
+    std::vector<Partial> geometry;
+    std::shared_ptr<const Tetrahedralization> dt;
+    std::exception_ptr refused;
+    double seconds_dt = 0;
+    std::vector<std::uint32_t> reps;
+    parallel_chunks(2, 2, 1, [&](std::size_t task, std::size_t, unsigned) {
+      if (task == 1) {
+        geometry = judge_geometry_stage(beside);
+        if (std::all_of(sites_.begin(), sites_.end(), is_finite)) reps = site_representatives(sites_);
+        return;
+      }
+      const auto t = Clock::now();
+      try {
+        dt = exact_delaunay(sites_, threads - beside);
+      } catch (...) {
+        refused = std::current_exception();
+      }
+      seconds_dt = since(t);
+    });
+    if (refused) std::rethrow_exception(refused);
+    shared_ = std::make_shared<VoronoiNeighbors>(sites_, std::move(dt), threads, seconds_dt, std::move(reps));
+    return geometry;
+  }
+
   // Stage 3 over every cell on `threads` threads (scratch 0..threads-1), unmerged.
   std::vector<Partial> judge_geometry_stage(unsigned threads) {
     const auto t = Clock::now();

@@ -40,8 +40,7 @@ std::vector<std::uint32_t> site_representatives(std::span<const Point3> p) {
 
 std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3> sites, unsigned threads) {
   for (const auto& p : sites)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw std::invalid_argument("a site is not finite");
+    if (!is_finite(p)) throw std::invalid_argument("a site is not finite");
   BuildOptions bo;
   bo.threads = threads;
   bo.count_stages = false;

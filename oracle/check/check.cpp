@@ -113,8 +113,7 @@ namespace {
 
 void require_finite(const Tetrahedralization& t) {
   for (const Point3& p : t.points)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw std::invalid_argument("check: input has a non-finite coordinate");
+    if (!is_finite(p)) throw std::invalid_argument("check: input has a non-finite coordinate");
 }
 
 // Renumbers t's vertices by first appearance in its tets (points in no tet follow, in

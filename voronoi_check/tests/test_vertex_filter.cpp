@@ -29,9 +29,8 @@ ToolCells moved(const VoronoiDiagram& vd, int ulps, std::uint64_t seed) {
   ToolCells out;
   for (std::size_t s = 0; s < vd.cells.size(); ++s) {
     const VoronoiCell& c = vd.cells[s];
-    if (c.face_count() == 0 || std::any_of(c.vertices.begin(), c.vertices.end(), [](const Point3& p) {
-          return !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z);
-        }))
+    if (c.face_count() == 0 ||
+        std::any_of(c.vertices.begin(), c.vertices.end(), [](const Point3& p) { return !is_finite(p); }))
       continue;
     std::vector<Point3> vs(c.vertices.begin(), c.vertices.end());
     for (auto& p : vs) p = {nudge(p.x), nudge(p.y), nudge(p.z)};
