@@ -165,9 +165,7 @@ class Judge {
     assign_cells(cells);
     merge(cells);
     auto t = Clock::now();
-    merge_all(stage(sites_.size(), threads, [&](std::size_t a, Partial& p, Scratch& s) {
-      if (nb_->rep(static_cast<std::uint32_t>(a)) == a) judge_site(static_cast<std::uint32_t>(a), p, s);
-    }));
+    relation_stage(threads);
     r_.seconds_relation = since(t);
     merge_all(std::move(geometry));
     t = Clock::now();
@@ -210,6 +208,21 @@ class Judge {
     if (refused) std::rethrow_exception(refused);
     shared_ = std::make_shared<VoronoiNeighbors>(sites_, std::move(dt), threads, seconds_dt, std::move(reps));
     return geometry;
+  }
+
+  // Stage 2 over every site with a cell, in the cells' order (a tool's cells are read as
+  // stored, and a tool's order, voro++'s blocks, is not the sites'), then over the sites
+  // without one.
+  void relation_stage(unsigned threads) {
+    const std::size_t nc = cells_.size();
+    merge_all(stage(nc + sites_.size(), threads, [&](std::size_t i, Partial& p, Scratch& s) {
+      if (i < nc) {
+        if (primary_[i]) judge_site(nb_->rep(static_cast<std::uint32_t>(cells_.site(i))), i, p, s);
+        return;
+      }
+      const auto a = static_cast<std::uint32_t>(i - nc);
+      if (nb_->rep(a) == a && cell_of_[a] < 0) judge_cellless(a, p, s);
+    }));
   }
 
   // Stage 3 over every cell on `threads` threads (scratch 0..threads-1), unmerged.
@@ -265,6 +278,7 @@ class Judge {
   // Stage 1: one non-empty cell per set of copies of a site.
   void assign_cells(Partial& p) {
     cell_of_.assign(sites_.size(), -1);
+    primary_.assign(cells_.size(), 0);
     for (std::size_t c = 0; c < cells_.size(); ++c) {
       const std::int64_t s = cells_.site(c);
       if (cells_.face_count(c) == 0) continue;
@@ -277,7 +291,7 @@ class Judge {
       if (slot >= 0)
         add(p, VoronoiDefect::extra_cell, s, cells_.site(slot), 0, "a second cell for this site or a copy of it");
       else
-        slot = static_cast<std::int64_t>(c);
+        slot = static_cast<std::int64_t>(c), primary_[c] = 1;
     }
   }
 
@@ -381,6 +395,9 @@ class Judge {
 
   // A site without a cell: missing when inside the box, or when its exact cell meets it.
   void judge_cellless(std::uint32_t a, Partial& p, Scratch& s) const {
+    nb_->neighbors(a, s.pos, s.deg, s.ring);
+    p.voronoi_edges += s.pos.size();
+    p.degenerate_edges += s.deg.size();
     if (box_.contains(sites_[a])) {
       add(p, VoronoiDefect::missing_cell, a, -1, 0);
       return;
@@ -392,17 +409,12 @@ class Judge {
       }
   }
 
-  // Stage 2: the neighbour set of one site against the exact one.
-  void judge_site(std::uint32_t a, Partial& p, Scratch& s) const {
+  // Stage 2: the neighbour set of representative site a against its cell c's.
+  void judge_site(std::uint32_t a, std::size_t c, Partial& p, Scratch& s) const {
     nb_->neighbors(a, s.pos, s.deg, s.ring);
     p.voronoi_edges += s.pos.size();
     p.degenerate_edges += s.deg.size();
-    const std::int64_t c = cell_of_[a];
-    if (c < 0) {
-      judge_cellless(a, p, s);
-      return;
-    }
-    const VoronoiCell cell = cells_.view(static_cast<std::size_t>(c));
+    const VoronoiCell cell = cells_.view(c);
     tool_faces(cell, a, s.tf, p);
     std::size_t i = 0;
     for (auto b : s.pos) {
@@ -526,7 +538,8 @@ class Judge {
   double volume_bound_ = 0, surface_ = 0;
   std::uint64_t not_closed_ = 0;
   mutable std::atomic<double> largest_distance_{0};  // the largest vertex distance solved so far, any chunk
-  std::vector<std::int64_t> cell_of_;
+  std::vector<std::int64_t> cell_of_;                // per representative site, its cell (-1: none)
+  std::vector<char> primary_;                        // per cell, it is cell_of_ of its site's representative
   std::vector<Scratch> scratch_;
 };
 

@@ -225,12 +225,27 @@ void VoronoiNeighbors::neighbors(std::uint32_t a, std::vector<std::uint32_t>& po
   std::vector<std::uint32_t>& all = degenerate;  // collected here first, then split
   auto& mark = scratch.mark;
   mark.resize(rep_.size(), 0);
+  // The star's tets are scattered in memory: their vertices are copied first, with no
+  // branch between the loads, then made distinct branch-free (a branch per vertex
+  // mispredicts and cancels the loads in flight: the walk then waits on each tet).
+  const auto st = star(a);
+  auto& corners = scratch.corners;
+  corners.resize(4 * st.size());
   bool degenerate_star = false;  // no degenerate tet around a: every interior edge of a is positive
-  for (auto t : star(a)) {
-    degenerate_star |= degenerate_[t] != 0;
-    for (auto v : dt_->tets[t])
-      if (v != a && !mark[v]) mark[v] = 1, all.push_back(v);
+  for (std::size_t k = 0; k < st.size(); ++k) {
+    const Tet& q = dt_->tets[st[k]];
+    for (int j = 0; j < 4; ++j) corners[4 * k + j] = q[j];
+    degenerate_star |= degenerate_[st[k]] != 0;
   }
+  all.resize(corners.size());
+  std::size_t distinct = 0;
+  for (auto v : corners) {
+    all[distinct] = v;
+    distinct += (v != a) & (mark[v] == 0);
+    mark[v] = 1;
+  }
+  all.resize(distinct);
+  mark[a] = 0;
   for (auto v : all) mark[v] = 0;
   std::sort(all.begin(), all.end());
   std::size_t kept = 0;

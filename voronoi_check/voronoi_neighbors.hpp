@@ -34,6 +34,7 @@ namespace dtlab {
 struct NeighborScratch {
   std::vector<std::pair<std::uint32_t, ExactPoint>> centres;  // (tet, exact centre)
   std::vector<const ExactPoint*> ring;
+  std::vector<std::uint32_t> corners;  // the vertices of the site's star, 4 per tet
   std::vector<char> mark;  // per site, all 0 between calls
 };
 
