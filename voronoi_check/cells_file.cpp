@@ -137,8 +137,7 @@ void json_cell(const json& j, const std::string& where, CellParts& c) {
                                    " faces (one per face)");
   for (std::size_t k = 0; k < nb.size(); ++k)
     c.neighbors.push_back(static_cast<std::int32_t>(json_integer(nb[k], where + ".neighbors[" + std::to_string(k) + "]",
-                                                                 std::numeric_limits<std::int32_t>::min(),
-                                                                 std::numeric_limits<std::int32_t>::max())));
+                                                                 -6, std::numeric_limits<std::int32_t>::max())));
 }
 
 // The line of byte `byte` (0-based) of the file: its newlines before it, counted in
@@ -157,22 +156,78 @@ long line_of_byte(const std::string& path, std::size_t byte) {
   return line;
 }
 
+// Byte `byte` (0-based) of the file, or -1 past its end.
+int byte_at(const std::string& path, std::size_t byte) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(byte));
+  const int ch = in.get();
+  return in ? ch : -1;
+}
+
+// Refuses an object that names a field twice (nlohmann keeps the last one: a second
+// "cells" or "site" would replace the first without a word), naming the object by its
+// path from the root ("cells[3]"). Fed nlohmann's parse events; keeps the open
+// containers only.
+class DuplicateKeys {
+ public:
+  explicit DuplicateKeys(std::string path) : path_(std::move(path)) {}
+  bool operator()(int, json::parse_event_t event, const json& parsed) {
+    using E = json::parse_event_t;
+    if (event == E::object_start || event == E::array_start) {
+      open_.push_back({event == E::object_start, {}, 0});
+    } else if (event == E::key) {
+      auto& keys = open_.back().keys;
+      const auto& key = parsed.get_ref<const std::string&>();
+      if (std::find(keys.begin(), keys.end(), key) != keys.end())
+        fail(path_ + where(), "duplicate field '" + key + "'");
+      keys.push_back(key);
+    } else if (event == E::object_end || event == E::array_end) {
+      open_.pop_back();
+      element_done();
+    } else if (event == E::value) {
+      element_done();
+    }
+    return true;
+  }
+
+ private:
+  struct Open {
+    bool object;
+    std::vector<std::string> keys;  // an object's fields so far
+    std::size_t elements;           // an array's elements so far
+  };
+  void element_done() {
+    if (!open_.empty() && !open_.back().object) ++open_.back().elements;
+  }
+  // The innermost object's path: each enclosing container's current member.
+  std::string where() const {
+    std::string w;
+    for (std::size_t k = 0; k + 1 < open_.size(); ++k)
+      w += open_[k].object ? (w.empty() ? ": " : ".") + open_[k].keys.back()
+                           : "[" + std::to_string(open_[k].elements) + "]";
+    return w;
+  }
+  std::string path_;
+  std::vector<Open> open_;
+};
+
 // nlohmann's parser takes a NUL byte for the end of the input: a value followed by one
 // would be accepted and the rest of the file never read, and a NUL in place of a value
 // is "unexpected end of input". The stream is at its end after a parse only when the
-// parser met the real end, so a NUL is refused by name.
+// parser met the real end, so a NUL is refused by name; any other error is the
+// parser's own.
 json parse_json(const std::string& path, std::istream& in) {
   const auto nul = [&](std::size_t byte) {
     fail(path + ":" + std::to_string(line_of_byte(path, byte)),
          "not JSON: a NUL byte (byte " + std::to_string(byte + 1) + ")");
   };
   try {
-    json root = json::parse(in);
+    json root = json::parse(in, DuplicateKeys(path));
     if (!in.eof()) nul(static_cast<std::size_t>(in.tellg()) - 1);
     return root;
   } catch (const json::parse_error& e) {
     const std::size_t byte = e.byte ? e.byte - 1 : 0;
-    if (!in.eof()) nul(byte);
+    if (!in.eof() && byte_at(path, byte) == 0) nul(byte);
     const std::string what = e.what();
     fail(path + ":" + std::to_string(line_of_byte(path, byte)), "not JSON: " + what.substr(what.find(':') + 2));
   } catch (const json::exception& e) {  // a number out of range of a double (1e400)
@@ -260,8 +315,8 @@ void vol_cell(VolLine& in, const std::string& where, CellParts& c) {
   }
   const auto nf = in.integer("the face count", 0, std::numeric_limits<std::uint32_t>::max());
   for (std::int64_t k = 0; k < nf; ++k)
-    c.neighbors.push_back(static_cast<std::int32_t>(in.integer(
-        "a neighbour id", std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max())));
+    c.neighbors.push_back(static_cast<std::int32_t>(
+        in.integer("a neighbour id (a site, or -1..-6 for a wall)", -6, std::numeric_limits<std::int32_t>::max())));
   for (std::int64_t k = 0; k < nf; ++k) {
     const std::vector<std::int64_t> loop = in.tuple<std::int64_t>("a face (a,b,c,...)");
     if (loop.size() < 3) fail(where, "a face with fewer than 3 vertices");

@@ -17,6 +17,10 @@ void ToolCells::add_cell(std::int64_t site, std::span<const Point3> vertices,
   for (std::size_t f = 0; f < nf; ++f)
     if (face_offsets[f + 1] < face_offsets[f] + 3)
       throw std::invalid_argument("cell of site " + std::to_string(site) + ": a face with fewer than 3 corners");
+  for (auto id : face_neighbor)
+    if (id < -6)
+      throw std::invalid_argument("cell of site " + std::to_string(site) + ": neighbour id " + std::to_string(id) +
+                                  " is neither a site (>= 0) nor a wall (-1..-6)");
   for (auto v : face_vertices)
     if (v >= vertices.size())
       throw std::invalid_argument("cell of site " + std::to_string(site) + ": a corner out of range");

@@ -134,6 +134,11 @@ if kind == "range": open(out + ".json", "w").write(json.dumps({"cells": [dict(cu
 if kind == "site": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, site=999)]}))
 if kind == "count": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, neighbors=[-1])]}))
 if kind == "field": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, nbrs=[])]}))
+# A duplicated key (nlohmann keeps the last: the cells, or the site, replaced without a word).
+if kind == "dupcells": open(out + ".json", "w").write('{"cells": [%s], "cells": []}' % json.dumps(cube))
+if kind == "dupsite": open(out + ".json", "w").write('{"cells": [%s, %s]}' % (json.dumps(cube), json.dumps(cube).replace('"site": 0', '"site": 0, "site": 1')))
+if kind == "wall7": open(out + ".json", "w").write(json.dumps({"cells": [dict(cube, neighbors=[-5, -6, -3, -4, -1, -7])]}))
+if kind == "volwall7": open(out + ".vol", "w").write("0 4 (0,0,0) (1,0,0) (0,1,0) (0,0,1) 4 -1 -3 -5 -7 (0,2,1) (0,1,3) (0,3,2) (1,2,3)\n")
 if kind == "volnan": open(out + ".vol", "w").write("0 3 (nan,0,0) (1,0,0) (0,1,0) 1 -1 (0,1,2)\n")
 if kind == "bigexp": open(out + ".json", "w").write(json.dumps({"cells": [cube]}).replace("[1, 0, 0]", "[1e400, 0, 0]", 1))
 if kind == "vol": open(out + ".vol", "w").write("0 3 (0,0,0) (1,0,0) 1 -1 (0,1,2)\n")
@@ -147,7 +152,11 @@ verdict() {  # verdict DESCRIPTION PEER-COMMAND EXIT PATTERN [dtlab voronoi opti
   has "$pattern" "$what"
 }
 chatty="$py $tmp/emit.py chatty {out}"
-verdict "garbage" "$py $tmp/emit.py garbage {out} {in}" 3 "^p: refused: unreadable answer: out.json:1: not JSON"
+verdict "garbage" "$py $tmp/emit.py garbage {out} {in}" 3 "^p: refused: unreadable answer: out.json:1: not JSON: syntax error"
+verdict "a second \"cells\"" "$py $tmp/emit.py dupcells {out} {in}" 3 "^p: refused: unreadable answer: out.json: duplicate field 'cells'"
+verdict "a second \"site\" in cell 1" "$py $tmp/emit.py dupsite {out} {in}" 3 "^p: refused: unreadable answer: out.json: cells\[1\]: duplicate field 'site'"
+verdict "a wall tag -7" "$py $tmp/emit.py wall7 {out} {in}" 3 "^p: refused: unreadable answer: out.json: cells\[0\].neighbors\[5\]: -7 out of range \[-6, "
+verdict "a .vol wall tag -7" "$py $tmp/emit.py volwall7 {out} {in}" 3 "^p: refused: unreadable answer: out.vol:1: a neighbour id \\(a site, or -1..-6 for a wall\\): expected an integer in \[-6, "
 verdict "NaN (not JSON)" "$py $tmp/emit.py nan {out} {in}" 3 "^p: refused: unreadable answer: out.json:1: not JSON"
 verdict "a face vertex out of range" "$py $tmp/emit.py range {out} {in}" 3 \
   "^p: refused: unreadable answer: out.json: cells\[0\].faces\[0\]\[2\]: 99 out of range \[0, 7\]"
@@ -158,7 +167,8 @@ verdict "a .vol vertex NaN" "$py $tmp/emit.py volnan {out} {in}" 3 "unreadable a
 verdict "a .vol line short of a vertex" "$py $tmp/emit.py vol {out} {in}" 3 "unreadable answer: out.vol:1: a vertex \(x,y,z\): expected \(a,b,...\), got '1'"
 verdict "a NUL after the JSON value" "$py $tmp/emit.py nultail {out} {in}" 3 \
   "^p: refused: unreadable answer: out.json:2: not JSON: a NUL byte \\(byte [0-9]+\\)"
-verdict "a JSON error on line 3" "$py $tmp/emit.py line3 {out} {in}" 3 "^p: refused: unreadable answer: out.json:3: not JSON"
+verdict "a JSON error on line 3" "$py $tmp/emit.py line3 {out} {in}" 3 "^p: refused: unreadable answer: out.json:3: not JSON: syntax error"
+grep -q "NUL" "$tmp/out" && { echo "FAIL: a JSON syntax error called a NUL byte"; fails=$((fails + 1)); } || pass=$((pass + 1))
 # A 1000 MB sparse answer of NUL bytes (docs/probe3.md: read whole, twice, before it was
 # refused): refused at its first byte, dtlab's peak RSS far below the file's size.
 cat >"$tmp/rss.py" <<'PY'
