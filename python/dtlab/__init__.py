@@ -15,8 +15,9 @@ same result as the same command line (seeds included).
 """
 from __future__ import annotations
 
+import numbers
 import os
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence, Sized
 from typing import Any, Union
 
 import numpy as np
@@ -215,10 +216,18 @@ def voronoi(points: Any, box: Any = None, *, margin: float = 0.1, predicates: st
                           int(raw["box_clipped"]), float(raw["seconds_delaunay"]), float(raw["seconds_cells"]))
 
 
+_CELLS_FORMS = "a dtlab VoronoiDiagram, a scipy.spatial.Voronoi or a list of (site, vertices, faces, face neighbours)"
+_SITE_MAX = 2**63 - 1  # the CLI's cells-file reader: a site is an int64 >= 0
+_NEIGHBOR_MAX = 2**31 - 1  # ... and a face neighbour an int32 (here also >= -6: the walls are -1..-6)
+_INDEX_MAX = 2**32 - 1  # face offsets and corners are uint32
+
+
 def _tool_cells(points: Any, cells: Any, box: list[float]) -> list[tuple[Any, ...]]:
     """(site, vertices, face_offsets, face_vertices, face_neighbors) per cell of a
     dtlab VoronoiDiagram, a scipy.spatial.Voronoi (its regions clipped to the box by the
-    adapter of the scipy-voronoi peer) or a list of (site, vertices, faces, neighbors)."""
+    adapter of the scipy-voronoi peer) or a list of (site, vertices, faces, neighbors).
+    Every id is checked as given (a Python int or any numpy integer) against its range
+    before it is cast to the checker's narrower type, so that none wraps."""
     if hasattr(cells, "ridge_points") and hasattr(cells, "ridge_vertices"):
         from ._voronoi_regions import cells_from_ridges, scipy_topology
         pts = np.asarray(points, dtype=np.float64)
@@ -229,36 +238,129 @@ def _tool_cells(points: Any, cells: Any, box: list[float]) -> list[tuple[Any, ..
         cells = [(i, verts, faces, tags) for i, (verts, faces, tags) in sorted(clipped.items())]
     elif isinstance(cells, VoronoiDiagram):
         cells = [(c.site, c.vertices, c.faces, c.face_neighbors) for c in cells.cells if len(c.faces)]
+    elif isinstance(cells, (str, bytes, Mapping)) or not isinstance(cells, Iterable):
+        raise TypeError(f"cells: expected {_CELLS_FORMS}, got {_shown(cells)}")
     out = []
-    for k, (site, verts, faces, neighbors) in enumerate(cells):
+    for k, cell in enumerate(cells):
         where = f"cells[{k}]"
-        faces = [_ids(f, f"{where}: face {j}") for j, f in enumerate(faces)]
+        if isinstance(cell, (str, bytes, Mapping)) or not isinstance(cell, Iterable):
+            raise TypeError(f"{where}: expected a (site, vertices, faces, face neighbours) tuple, got {_shown(cell)}")
+        parts = tuple(cell)
+        if len(parts) != 4:
+            raise ValueError(f"{where}: expected (site, vertices, faces, face neighbours), got {len(parts)} items")
+        site, verts, faces, neighbors = parts
+        site_id = _site(site, f"{where}: site")
+        verts = _cell_vertices(verts, f"{where}: vertices")
+        if isinstance(faces, (str, bytes, Mapping)) or not isinstance(faces, Iterable):
+            raise TypeError(f"{where}: faces: expected a sequence of faces (vertex index lists), got {_shown(faces)}")
+        nv = len(verts)
+
+        def corner_out_of_range(j: int, v: int) -> str:
+            return f"{where}: face {j} corner {v} is out of range (the cell has {nv} vertices)"
+
+        faces = [_ids(f, f"{where}: face {j}", 0, nv - 1, lambda v, j=j: corner_out_of_range(j, v))
+                 for j, f in enumerate(faces)]
+        for j, f in enumerate(faces):
+            if len(f) < 3:
+                raise ValueError(f"{where}: face {j} has {len(f)} corners (a face needs at least 3)")
         sizes = [len(f) for f in faces]
-        offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.uint32)
+        if sum(sizes) > _INDEX_MAX:
+            raise ValueError(f"{where}: {sum(sizes)} face corners (at most {_INDEX_MAX})")
+        offsets = np.concatenate([[0], np.cumsum(sizes, dtype=np.int64)]).astype(np.uint32)
         corners = np.concatenate(faces).astype(np.uint32) if faces else np.zeros(0, np.uint32)
-        verts = np.asarray(verts, dtype=np.float64).reshape(-1, 3)
-        if corners.size and int(corners.max()) >= len(verts):
-            raise ValueError(f"{where}: a face vertex {int(corners.max())} out of range [0, {len(verts) - 1}]")
-        site_id = _ids([site], f"{where}: site")[0]
-        neighbor_ids = _ids(neighbors, f"{where}: neighbours", lo=-6)
-        if neighbor_ids.size and int(neighbor_ids.max()) > 2**31 - 1:
-            raise ValueError(f"{where}: neighbours: {int(neighbor_ids.max())} out of range")
-        out.append((int(site_id), verts, offsets, corners, neighbor_ids.astype(np.int32)))
+        neighbor_ids = _ids(neighbors, f"{where}: neighbours", -6, _NEIGHBOR_MAX)
+        if len(neighbor_ids) != len(faces):
+            raise ValueError(f"{where}: neighbours: {len(neighbor_ids)} face neighbours for {len(faces)} faces "
+                             "(one per face)")
+        out.append((site_id, verts, offsets, corners, neighbor_ids.astype(np.int32)))
     return out
 
 
-def _ids(values: Any, what: str, lo: int = 0) -> Any:
-    """values as an int64 array of ids >= lo: integers only (a float or a bool index is
-    refused, never truncated), as the CLI's cells-file reader does."""
-    a = np.asarray(values)
-    if a.size == 0:
-        return np.zeros(0, np.int64)
-    if a.dtype == np.bool_ or not np.issubdtype(a.dtype, np.integer):
-        raise ValueError(f"{what}: expected integer ids, got {a.dtype} values such as {a.reshape(-1)[0]!r}")
-    a = a.reshape(-1).astype(np.int64)
-    if int(a.min()) < lo:
-        raise ValueError(f"{what}: {int(a.min())} is below {lo}")
+def _shown(value: Any) -> str:
+    """A value for a message: its repr, cut short (a cell's arrays can be long)."""
+    text = repr(value)
+    return text if len(text) <= 80 else f"{text[:60]}... ({type(value).__name__})"
+
+
+def _is_integer(x: Any) -> bool:
+    return isinstance(x, (int, np.integer)) and not isinstance(x, (bool, np.bool_))
+
+
+def _site(site: Any, what: str) -> int:
+    """A cell's site: one integer in [0, 2^63-1] (a bool or a float is refused)."""
+    if isinstance(site, np.ndarray) and site.ndim == 0:
+        site = site[()]
+    if not _is_integer(site):
+        raise ValueError(f"{what}: expected an integer id, got {_shown(site)}")
+    if not 0 <= int(site) <= _SITE_MAX:
+        raise ValueError(f"{what}: {int(site)} is out of range [0, {_SITE_MAX}]")
+    return int(site)
+
+
+def _cell_vertices(verts: Any, what: str) -> Any:
+    """A cell's vertices as a (k, 3) float64 array of finite numbers: a transposed
+    (3, k) or a flat (3k,) array is refused, never reshaped; so are bools and strings."""
+    if isinstance(verts, np.ndarray):
+        a = verts
+        if a.dtype.kind not in "iuf":
+            raise ValueError(f"{what}: expected numbers, got a {a.dtype} array")
+    else:
+        if isinstance(verts, (str, bytes, Mapping)) or not isinstance(verts, Iterable):
+            raise TypeError(f"{what}: expected a (k, 3) array of numbers, got {_shown(verts)}")
+        try:
+            a = np.asarray(list(verts), dtype=object)
+        except ValueError:  # rows of different shapes numpy cannot even hold as objects
+            a = None
+        if a is None or (a.ndim == 1 and a.size and any(np.ndim(x) for x in a)):
+            lengths = sorted({len(x) if isinstance(x, Sized) else 0 for x in verts})
+            raise ValueError(f"{what} must be (k, 3), got rows of {', '.join(map(str, lengths))} coordinates")
+    if a.shape == (0,):
+        a = a.reshape(0, 3)
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise ValueError(f"{what} must be (k, 3), got {a.shape}")
+    if a.dtype == object:
+        for x in a.reshape(-1):
+            if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real):
+                raise ValueError(f"{what}: expected numbers, got {_shown(x)}")
+    try:
+        a = a.astype(np.float64)
+    except OverflowError:  # an int beyond the doubles
+        a = np.full(a.shape, np.inf)
+    if len(a) > _INDEX_MAX:
+        raise ValueError(f"{what}: {len(a)} vertices (at most {_INDEX_MAX})")
+    if not np.isfinite(a).all():
+        i = int(np.argwhere(~np.isfinite(a))[0][0])
+        raise ValueError(f"{what}: vertex {i} is not finite: {a[i].tolist()}")
     return a
+
+
+def _ids(values: Any, what: str, lo: int, hi: int, out_of_range: Callable[[int], str] | None = None) -> Any:
+    """values as an int64 array of ids in [lo, hi]: a 1-d sequence of integers (a
+    float or a bool id is refused, never truncated, as the CLI's cells-file reader
+    does), each compared as given (a Python int or any numpy integer, uint64 too)
+    before the cast, so none wraps."""
+    if isinstance(values, np.ndarray) and values.dtype != object:  # an object array: as a list
+        if values.ndim != 1:
+            raise ValueError(f"{what}: expected a 1-d sequence of integer ids, got shape {values.shape}")
+        if values.size and (values.dtype == np.bool_ or not np.issubdtype(values.dtype, np.integer)):
+            raise ValueError(f"{what}: expected integer ids, got {values.dtype} values such as {values[0]!r}")
+        items: Any = values
+        least, most = (int(values.min()), int(values.max())) if values.size else (lo, lo)
+    else:
+        if isinstance(values, (str, bytes, Mapping)) or not isinstance(values, Iterable):
+            raise TypeError(f"{what}: expected a sequence of integer ids, got {_shown(values)}")
+        items = list(values)
+        for x in items:
+            if isinstance(x, np.ndarray) and x.ndim == 0:
+                x = x[()]
+            if not _is_integer(x):
+                raise ValueError(f"{what}: expected integer ids, got {_shown(x)}")
+        items = [int(x) for x in items]
+        least, most = (min(items), max(items)) if items else (lo, lo)
+    for v in (least, most):
+        if not lo <= v <= hi:
+            raise ValueError(out_of_range(v) if out_of_range else f"{what}: {v} is out of range [{lo}, {hi}]")
+    return np.asarray(items, dtype=np.int64).reshape(-1)
 
 
 def check_voronoi(points: Any, cells: Any, box: Any = None, *, small_face: float = 1e-9,
