@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "oracle/peers/json_fields.hpp"
+
 namespace dtlab {
 
 namespace {
@@ -164,53 +166,6 @@ int byte_at(const std::string& path, std::size_t byte) {
   return in ? ch : -1;
 }
 
-// Refuses an object that names a field twice (nlohmann keeps the last one: a second
-// "cells" or "site" would replace the first without a word), naming the object by its
-// path from the root ("cells[3]"). Fed nlohmann's parse events; keeps the open
-// containers only.
-class DuplicateKeys {
- public:
-  explicit DuplicateKeys(std::string path) : path_(std::move(path)) {}
-  bool operator()(int, json::parse_event_t event, const json& parsed) {
-    using E = json::parse_event_t;
-    if (event == E::object_start || event == E::array_start) {
-      open_.push_back({event == E::object_start, {}, 0});
-    } else if (event == E::key) {
-      auto& keys = open_.back().keys;
-      const auto& key = parsed.get_ref<const std::string&>();
-      if (std::find(keys.begin(), keys.end(), key) != keys.end())
-        fail(path_ + where(), "duplicate field '" + key + "'");
-      keys.push_back(key);
-    } else if (event == E::object_end || event == E::array_end) {
-      open_.pop_back();
-      element_done();
-    } else if (event == E::value) {
-      element_done();
-    }
-    return true;
-  }
-
- private:
-  struct Open {
-    bool object;
-    std::vector<std::string> keys;  // an object's fields so far
-    std::size_t elements;           // an array's elements so far
-  };
-  void element_done() {
-    if (!open_.empty() && !open_.back().object) ++open_.back().elements;
-  }
-  // The innermost object's path: each enclosing container's current member.
-  std::string where() const {
-    std::string w;
-    for (std::size_t k = 0; k + 1 < open_.size(); ++k)
-      w += open_[k].object ? (w.empty() ? ": " : ".") + open_[k].keys.back()
-                           : "[" + std::to_string(open_[k].elements) + "]";
-    return w;
-  }
-  std::string path_;
-  std::vector<Open> open_;
-};
-
 // nlohmann's parser takes a NUL byte for the end of the input: a value followed by one
 // would be accepted and the rest of the file never read, and a NUL in place of a value
 // is "unexpected end of input". The stream is at its end after a parse only when the
@@ -222,7 +177,7 @@ json parse_json(const std::string& path, std::istream& in) {
          "not JSON: a NUL byte (byte " + std::to_string(byte + 1) + ")");
   };
   try {
-    json root = json::parse(in, DuplicateKeys(path));
+    json root = parse_unique_fields(in);
     if (!in.eof()) nul(static_cast<std::size_t>(in.tellg()) - 1);
     return root;
   } catch (const json::parse_error& e) {
@@ -230,6 +185,8 @@ json parse_json(const std::string& path, std::istream& in) {
     if (!in.eof() && byte_at(path, byte) == 0) nul(byte);
     const std::string what = e.what();
     fail(path + ":" + std::to_string(line_of_byte(path, byte)), "not JSON: " + what.substr(what.find(':') + 2));
+  } catch (const DuplicateField& e) {
+    fail(path, e.what());
   } catch (const json::exception& e) {  // a number out of range of a double (1e400)
     const std::string what = e.what();
     fail(path, "not JSON: " + what.substr(what.find(']') + 2));

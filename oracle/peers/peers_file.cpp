@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "kernel/input_error.hpp"
+#include "oracle/peers/json_fields.hpp"
 
 namespace dtlab {
 namespace {
@@ -65,10 +66,12 @@ PeersFile read_json(const std::string& path, const std::string& s, const Voronoi
   };
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(s);
+    j = parse_unique_fields(s);
   } catch (const nlohmann::json::parse_error& e) {
     const std::string what = e.what();
     throw InputError(path, line_of(e.byte ? e.byte - 1 : 0), "not JSON: " + what.substr(what.find(':') + 2));
+  } catch (const DuplicateField& e) {
+    throw InputError(path, 0, e.what());
   }
   const nlohmann::json list = j.is_object() && j.contains("peers") ? j["peers"] : j;
   if (!list.is_array()) throw InputError(path, 1, "expected {\"peers\": [...]} or an array of peers");
