@@ -1,7 +1,10 @@
 #include "experiments/case_grid.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
+#include <set>
+#include <string_view>
 #include <stdexcept>
 
 #include "fuzz/campaign.hpp"
@@ -49,10 +52,57 @@ double shrink_try_limit(double original_seconds, double timeout_s) {
   return std::clamp(10 * original_seconds, std::min(2.0, timeout_s), timeout_s);
 }
 
-std::string corpus_stem(const std::string& peer, const std::string& source, std::size_t n, std::size_t index) {
-  std::string stem = peer + "-" + source + "-n" + std::to_string(n) + "-" + std::to_string(index);
-  std::replace(stem.begin(), stem.end(), ':', '_');
-  return stem;
+std::string corpus_prefix(const std::string& peer, const std::string& source, bool plus_as_p) {
+  std::string prefix = peer + "-" + source;
+  std::replace(prefix.begin(), prefix.end(), ':', '_');
+  if (plus_as_p) std::replace(prefix.begin(), prefix.end(), '+', 'p');
+  return prefix;
+}
+
+std::string corpus_stem(const std::string& peer, const std::string& source, std::size_t n, std::size_t index,
+                        bool plus_as_p) {
+  return corpus_prefix(peer, source, plus_as_p) + "-n" + std::to_string(n) + "-" + std::to_string(index);
+}
+
+namespace {
+
+bool all_digits(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+}
+
+}  // namespace
+
+std::optional<CorpusName> parse_corpus_name(const std::string& file_name) {
+  const fs::path p(file_name);
+  if (p.extension() != ".node" && p.extension() != ".json") return std::nullopt;
+  const std::string stem = p.stem().string();
+  const std::size_t dash = stem.rfind('-');
+  if (dash == std::string::npos || !all_digits(std::string_view(stem).substr(dash + 1))) return std::nullopt;
+  const std::size_t n_at = stem.rfind("-n", dash);
+  if (n_at == std::string::npos || n_at == 0 || !all_digits(std::string_view(stem).substr(n_at + 2, dash - n_at - 2)))
+    return std::nullopt;
+  CorpusName name{stem.substr(0, n_at), 0};
+  const auto [end, ec] = std::from_chars(stem.data() + dash + 1, stem.data() + stem.size(), name.index);
+  if (ec != std::errc()) return std::nullopt;  // beyond size_t: no case of ours
+  return name;
+}
+
+std::vector<std::string> remove_corpus_names(const std::string& out_dir,
+                                             const std::function<bool(const CorpusName&)>& ours) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(fs::path(out_dir) / "corpus", ec))
+    if (const auto name = parse_corpus_name(e.path().filename().string()); name && ours(*name))
+      files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return remove_output_set(files);
+}
+
+void remove_grid_corpus(const std::vector<std::string>& peers, const CaseGrid& grid, bool plus_as_p) {
+  std::set<std::pair<std::string, std::size_t>> cases;
+  for (const GridCase& c : grid_cases(peers, grid))
+    cases.insert({corpus_prefix(*c.peer, c.source->name, plus_as_p), c.index});
+  remove_corpus_names(grid.out_dir, [&](const CorpusName& n) { return cases.count({n.prefix, n.index}) > 0; });
 }
 
 std::string save_corpus_points(const std::string& out_dir, const std::string& stem, const std::vector<Point3>& points) {

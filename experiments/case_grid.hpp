@@ -88,8 +88,31 @@ std::vector<Case> run_grid(const std::vector<std::string>& peers, const CaseGrid
 // A shrink try's time limit: 10x the original run's, 2 s at least, `timeout_s` at most.
 double shrink_try_limit(double original_seconds, double timeout_s);
 
-// "<peer>-<source>-n<N>-<case>" with ':' made '_': the name of a case's corpus files.
-std::string corpus_stem(const std::string& peer, const std::string& source, std::size_t n, std::size_t index);
+// "<peer>-<source>" with ':' made '_' (`plus_as_p`: '+' made 'p' too, the Voronoi
+// campaign's names): what a case's corpus names start with.
+std::string corpus_prefix(const std::string& peer, const std::string& source, bool plus_as_p = false);
+
+// "<prefix>-n<N>-<case>": the name of a case's corpus files.
+std::string corpus_stem(const std::string& peer, const std::string& source, std::size_t n, std::size_t index,
+                        bool plus_as_p = false);
+
+// A corpus file name "<prefix>-n<N>-<case>.node" (or .json) taken apart; nullopt for a
+// name of another form.
+struct CorpusName {
+  std::string prefix;
+  std::size_t index = 0;
+};
+std::optional<CorpusName> parse_corpus_name(const std::string& file_name);
+
+// Removes the files of <out_dir>/corpus with a corpus name that `ours` accepts (the
+// names a run writes), before the run writes any: an earlier run's failure that this
+// one does not repeat is not left beside its results. Returns the paths removed.
+std::vector<std::string> remove_corpus_names(const std::string& out_dir,
+                                             const std::function<bool(const CorpusName&)>& ours);
+
+// remove_corpus_names for the cases of the grid (any size: their n is drawn afresh):
+// the entries a run of `peers` on it would write.
+void remove_grid_corpus(const std::vector<std::string>& peers, const CaseGrid& grid, bool plus_as_p);
 
 // Writes <out_dir>/corpus/<stem>.node (creating the folder); returns "corpus/<stem>.node".
 std::string save_corpus_points(const std::string& out_dir, const std::string& stem, const std::vector<Point3>& points);

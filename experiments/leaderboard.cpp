@@ -37,6 +37,11 @@ using json = nlohmann::json;
 namespace {
 
 constexpr const char* kDefaultCgalData = "/usr/share/doc/libcgal-demo/data.tar.gz";
+
+// The files a run writes besides its corpora, the last one written first.
+constexpr const char* kRunFiles[] = {"data/facts.json", "report.md",      "report.html",   "environment.json",
+                                     "leaderboard.csv", "data/speed.csv", "data/voronoi.csv",
+                                     "data/voronoi_speed.csv"};
 // CGAL demo meshes sampled on the surface (the points of a scanned shell) and inside.
 const std::vector<std::string> kMeshes = {"elephant", "bunny00", "fandisk", "knot1"};
 
@@ -147,8 +152,23 @@ class Leaderboard {
     if (options.progress) std::fprintf(stderr, "  [%6.1f s] %s\n", seconds_since(t0), what.c_str());
   }
 
+  // An earlier run's files go before this run writes any (data/facts.json, the mark of a
+  // whole run, first): at any interrupt the folder holds only this run's files, never a
+  // report beside another run's data. The corpora go whole: a peer left out this time
+  // keeps no failure there.
+  void remove_earlier_run() const {
+    std::vector<std::string> files;
+    for (const char* name : kRunFiles) files.push_back((dir / name).string());
+    std::size_t removed = remove_output_set(files, {options.cgal_data}).size();
+    const auto any = [](const CorpusName&) { return true; };
+    removed += remove_corpus_names(dir.string(), any).size();
+    removed += remove_corpus_names((dir / "voronoi").string(), any).size();
+    if (removed) step("removed " + std::to_string(removed) + " files of an earlier run");
+  }
+
   // Settings from the options: peers, seeds, sizes, limits.
   void plan() {
+    remove_earlier_run();
     fs::create_directories(dir / "data");
     if (options.peers != std::vector<std::string>{"none"}) peers = expand_peer_names(options.peers);
     cases = options.cases ? options.cases : options.quick ? 2 : 3;

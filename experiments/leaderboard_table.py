@@ -7,7 +7,8 @@
 One row per peer: cases, non-delaunay verdicts (share, Wilson 95% interval, which),
 and for each (source, n) of the speed table the peer's seconds with the ratio to CGAL
 in the same run; bytes per tet (peak RSS / tets) at the largest uniform size. Reads
-only DIR's leaderboard.csv, data/speed.csv and environment.json. --shrinks: instead,
+only DIR's leaderboard.csv, data/speed.csv and environment.json, of a finished run
+(data/facts.json there: run_folder.py; else it exits 1 naming what is missing). --shrinks: instead,
 the failing (peer, source) pairs' shrinks counted by how they ended, and each pair
 that is not 1-minimal (leaderboard.csv's shrink columns)."""
 import csv
@@ -16,6 +17,7 @@ import os
 import sys
 from collections import Counter, defaultdict
 
+from run_folder import require_whole_run
 from wilson import wilson
 
 
@@ -97,8 +99,10 @@ def shrinks(folder):
 
 if __name__ == "__main__":
     if len(sys.argv) == 3 and sys.argv[1] == "--shrinks":
+        require_whole_run(sys.argv[2], "leaderboard.csv")
         shrinks(sys.argv[2])
     elif len(sys.argv) == 2:
+        require_whole_run(sys.argv[1], "environment.json", "leaderboard.csv", os.path.join("data", "speed.csv"))
         main(sys.argv[1])
     else:
         sys.exit(__doc__)

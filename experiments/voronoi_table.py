@@ -10,7 +10,8 @@ rounded-topology; not-installed and not-judged cases left out), the share with i
 95% interval, the verdicts, the sources with a failing case, and for each (source, n) of
 the speed table the peer's cells seconds and its check seconds, each with the ratio to
 dtlab:adaptive's cells in the same run. Reads only DIR's data/voronoi.csv,
-data/voronoi_speed.csv and environment.json. --readme replaces what lies between the lines
+data/voronoi_speed.csv and environment.json, of a finished run (data/facts.json there:
+run_folder.py; else it exits 1 naming what is missing). --readme replaces what lies between the lines
 `<!-- voronoi-table:begin -->` and `<!-- voronoi-table:end -->` of that file with a line
 naming the run and the table."""
 import csv
@@ -19,6 +20,7 @@ import os
 import sys
 from collections import Counter, defaultdict
 
+from run_folder import require_whole_run
 from wilson import wilson
 
 BEGIN, END = "<!-- voronoi-table:begin -->", "<!-- voronoi-table:end -->"
@@ -111,6 +113,7 @@ def rewrite(readme, text):
 def main(argv):
     if len(argv) not in (2, 4) or (len(argv) == 4 and argv[2] != "--readme"):
         sys.exit(__doc__)
+    require_whole_run(argv[1], "environment.json", os.path.join("data", "voronoi.csv"))
     text = provenance(argv[1]) + "\n" + table(argv[1])
     if len(argv) == 4:
         rewrite(argv[3], text)

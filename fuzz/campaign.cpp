@@ -21,6 +21,7 @@
 #include "fuzz/shrink.hpp"
 #include "fuzz/summary.hpp"
 #include "fuzz/work_queue.hpp"
+#include "kernel/output_file.hpp"
 
 namespace dtlab::fuzz {
 
@@ -37,6 +38,10 @@ std::string boundary_label(const BuildOptions& options) {
   char buf[48];
   std::snprintf(buf, sizeof buf, "bigtet:%g", options.bigtet_factor);
   return buf;
+}
+
+std::string order_label(const BuildOptions& options) {
+  return options.order == InsertionOrder::brio ? "brio" : "input";
 }
 
 std::string case_id(const std::string& family, std::uint64_t seed, std::size_t index) {
@@ -87,7 +92,8 @@ std::string original_command(const CampaignOptions& o, const CaseRecord& r) {
   return "dtlab fuzz --family " + r.family + " --seed " + std::to_string(o.seed) + " --case " +
          std::to_string(r.index) + " --min-points " + std::to_string(o.min_points) + " --points " +
          std::to_string(o.max_points) + " --predicates " + r.predicates + " --perturb " + (r.perturb ? "sos" : "none") +
-         " --boundary " + r.boundary + " --out " + o.out_dir + "/repro-" + r.id;
+         " --boundary " + r.boundary + " --order " + order_label(o.build) +
+         (r.threads == 1 ? "" : " --threads " + std::to_string(r.threads)) + " --out " + o.out_dir + "/repro-" + r.id;
 }
 
 // The cases of this shard that `done` does not hold for every backend, in family then index
@@ -126,9 +132,30 @@ CaseRecord case_base(const CampaignOptions& o, const WorkItem& item, const std::
   base.campaign_seed = o.seed;
   base.case_seed = case_seed(o.seed, base.family, item.index);
   base.boundary = boundary;
+  base.threads = build_thread_count(o.build);
   base.version = build_version();
   base.commit = build_commit();
   return base;
+}
+
+// Before any case runs, the corpus entries that would not be this run's: those of the
+// (case, backend) pairs it runs (an earlier run's failure it may not repeat) and of resumed
+// results that are no failure. Resumed failures and other cases (other shards') keep theirs.
+void remove_stale_corpus(const CampaignOptions& o, const std::vector<WorkItem>& work, const std::set<std::string>& done,
+                         const std::vector<CaseRecord>& resumed, const std::string& boundary) {
+  std::vector<std::string> files;
+  const auto add = [&](const CaseRecord& r) {
+    for (std::string& f : corpus_entry_files(o.out_dir, r)) files.push_back(std::move(f));
+  };
+  for (const WorkItem& item : work)
+    for (const auto& spec : o.backends) {
+      CaseRecord r = case_base(o, item, boundary);
+      r.backend = backend_label(spec);
+      if (!done.count(resume_key(r.id, r.backend, boundary))) add(r);
+    }
+  for (const CaseRecord& r : resumed)
+    if (r.run.ok()) add(r);
+  remove_output_set(files);
 }
 
 // One backend on one case; a failure is shrunk to a smaller input with the same outcome and
@@ -169,6 +196,7 @@ CampaignResult run_campaign(const CampaignOptions& o) {
 
   const std::string boundary = boundary_label(o.build);
   const std::vector<WorkItem> work = pending_work(o, done, boundary, result.resumed);
+  remove_stale_corpus(o, work, done, result.records, boundary);
   write_campaign_environment(o);
 
   std::mutex lock;

@@ -47,6 +47,7 @@ struct CaseRecord {
   std::string predicates;
   bool perturb = false;
   std::string boundary;  // "infinite" or "bigtet:FACTOR"
+  unsigned threads = 0;  // the build's threads (build_thread_count); 0: a line that does not say
   CaseRun run;
   std::size_t shrunk_points = 0;  // 0: not shrunk
   std::string corpus_file;        // relative to the campaign folder
@@ -60,6 +61,7 @@ struct CampaignResult {
 };
 
 std::string boundary_label(const BuildOptions& options);
+std::string order_label(const BuildOptions& options);  // "brio" or "input", as --order takes it
 std::string case_id(const std::string& family, std::uint64_t seed, std::size_t index);
 std::size_t case_points(std::uint64_t case_seed, std::size_t min_points, std::size_t max_points);
 

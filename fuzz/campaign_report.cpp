@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "kernel/output_file.hpp"
+#include "fuzz/campaign_settings.hpp"
 #include "fuzz/run_environment.hpp"
 
 namespace dtlab::fuzz {
@@ -39,6 +40,8 @@ nlohmann::json campaign_settings(const CampaignOptions& o) {
                       {"max_points", o.max_points},
                       {"backends", backends},
                       {"boundary", boundary_label(o.build)},
+                      {"order", order_label(o.build)},
+                      {"threads", build_thread_count(o.build)},
                       {"oracles", oracles},
                       {"jobs", o.jobs},
                       {"shard", o.shard},

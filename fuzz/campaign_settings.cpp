@@ -5,10 +5,13 @@
 #include <stdexcept>
 
 #include "kernel/output_file.hpp"
+#include "kernel/parallel_for.hpp"
 
 namespace dtlab::fuzz {
 
 namespace fs = std::filesystem;
+
+unsigned build_thread_count(const BuildOptions& build) { return thread_count(build.threads); }
 
 nlohmann::json outcome_settings(const CampaignOptions& o) {
   nlohmann::json labels = nlohmann::json::array(), against = nlohmann::json::array();
@@ -28,7 +31,8 @@ nlohmann::json outcome_settings(const CampaignOptions& o) {
           {"--eps", eps},
           {"--eps-mode", eps_mode},
           {"--boundary", boundary_label(o.build)},
-          {"--order", o.build.order == InsertionOrder::brio ? "brio" : "input"},
+          {"--order", order_label(o.build)},
+          {"--threads", build_thread_count(o.build)},
           {"--against", against}};
 }
 

@@ -10,8 +10,13 @@
 
 namespace dtlab::fuzz {
 
+// The threads of the campaign's builds, 0 (all hardware threads) resolved: 1 is the
+// serial build. Naive and epsilon builds fail differently on different counts.
+unsigned build_thread_count(const BuildOptions& build);
+
 // Keyed by the option that sets each: --seed, --min-points, --points, --predicates
-// (the backend labels), --eps, --eps-mode, --boundary, --order, --against.
+// (the backend labels), --eps, --eps-mode, --boundary, --order, --threads (resolved:
+// build_thread_count), --against.
 nlohmann::json outcome_settings(const CampaignOptions& options);
 
 // Writes out_dir/settings.json when it is missing; otherwise throws

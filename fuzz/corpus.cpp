@@ -97,6 +97,11 @@ bool parse_boundary(const std::string& text, BuildOptions& options) {
   return true;
 }
 
+std::vector<std::string> corpus_entry_files(const std::string& out_dir, const CaseRecord& record) {
+  const fs::path stem = fs::path(out_dir) / "corpus" / file_stem(record);
+  return {stem.string() + ".node", stem.string() + ".json"};
+}
+
 std::string write_corpus_entry(const std::string& out_dir, const CaseRecord& record,
                                const std::vector<Point3>& points, const CorpusEntryInfo& info) {
   const fs::path dir = fs::path(out_dir) / "corpus";
@@ -115,6 +120,7 @@ std::string write_corpus_entry(const std::string& out_dir, const CaseRecord& rec
       {"predicates", record.predicates},
       {"perturb", record.perturb ? "sos" : "none"},
       {"boundary", record.boundary},
+      {"threads", record.threads},
       {"outcome", record.run.outcome},
       {"detail", record.run.detail},
       {"shrink_tests", info.shrink_tests},

@@ -16,6 +16,10 @@ struct CorpusEntryInfo {
   bool minimal = false;
 };
 
+// <out_dir>/corpus/<name>.node and .json of a record (its case, backend and boundary):
+// the files write_corpus_entry writes for it.
+std::vector<std::string> corpus_entry_files(const std::string& out_dir, const CaseRecord& record);
+
 // Writes <out_dir>/corpus/<name>.node and .json; returns "corpus/<name>.node".
 std::string write_corpus_entry(const std::string& out_dir, const CaseRecord& record,
                                const std::vector<Point3>& points, const CorpusEntryInfo& info);

@@ -14,6 +14,7 @@ nlohmann::json record_to_json(const CaseRecord& r) {
       {"predicates", r.predicates},
       {"perturb", r.perturb ? "sos" : "none"},
       {"boundary", r.boundary},
+      {"threads", r.threads},
       {"outcome", r.run.outcome},
       {"ok", r.run.ok()},
       {"defects", r.run.defects},
@@ -44,6 +45,7 @@ CaseRecord record_from_json(const nlohmann::json& j) {
   r.predicates = j.at("predicates").get<std::string>();
   r.perturb = j.at("perturb").get<std::string>() == "sos";
   r.boundary = j.at("boundary").get<std::string>();
+  r.threads = j.value("threads", 0u);  // absent in lines written before the thread count was kept
   r.run.outcome = j.at("outcome").get<std::string>();
   r.run.defects = j.value("defects", std::map<std::string, std::uint64_t>{});
   r.run.detail = j.value("detail", std::string{});

@@ -3,14 +3,18 @@
 // shrink tries' limit.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "experiments/case_grid.hpp"
+#include "oracle/peers/temp_dir.hpp"
 
 using namespace dtlab;
 using namespace dtlab::experiments;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -66,9 +70,39 @@ TEST_CASE("case grid: rerun command, corpus stem, shrink try limit", "[case_grid
   CHECK(grid_case_command("qhull", g, "lattice", 2) ==
         "dtlab fuzz --target qhull --family lattice --case 2 --seed 7 --min-points 5 --points 40 --out DIR");
   CHECK(corpus_stem("dtlab:naive", "uniform", 12, 3) == "dtlab_naive-uniform-n12-3");
+  CHECK(corpus_stem("dtlab:naive+none", "uniform", 12, 3, true) == "dtlab_naivepnone-uniform-n12-3");
   CHECK(shrink_try_limit(0.01, 60) == 2);  // 2 s at least
   CHECK(shrink_try_limit(1.5, 60) == 15);  // 10x the original run
   CHECK(shrink_try_limit(100, 60) == 60);  // the time limit at most
   CHECK(shrink_try_limit(0.01, 1) == 1);   // a limit under 2 s is kept
   CHECK_THROWS_AS(fuzz_family_sources({"no-such-family"}), std::invalid_argument);
+}
+
+TEST_CASE("case grid: corpus names taken apart", "[case_grid]") {
+  const auto name = parse_corpus_name("cgal-dual-elephant-surface-n3000-12.json");
+  REQUIRE(name);
+  CHECK(name->prefix == "cgal-dual-elephant-surface");
+  CHECK(name->index == 12);
+  CHECK(parse_corpus_name(corpus_stem("dtlab:exact", "uniform", 48, 0) + ".node")->prefix ==
+        corpus_prefix("dtlab:exact", "uniform"));
+  for (const char* other : {"mine-uniform-n8-0.txt", "mine-uniform-n8-x.node", "mine-uniform-8-0.node",
+                            "mine-uniform-n-0.node", "-n8-0.node", "uniform-s1-0-naive+sos.node",
+                            "mine-uniform-n8-99999999999999999999999.node"})
+    CHECK_FALSE(parse_corpus_name(other));
+}
+
+TEST_CASE("case grid: a run removes its own cases' corpus entries, any size, nothing else", "[case_grid]") {
+  TempDir dir;
+  CaseGrid g = small_grid();  // uniform and lattice, cases 0..2
+  g.out_dir = dir.path().string();
+  const fs::path corpus = dir.path() / "corpus";
+  fs::create_directories(corpus);
+  const std::vector<std::string> ours = {"p-uniform-n5-0.node", "p-uniform-n5-0.json", "p-lattice-n999-2.node"};
+  const std::vector<std::string> others = {"p-uniform-n5-3.node", "q-uniform-n5-0.node", "p-cube-n5-0.node",
+                                           "p-uniform-n5-0.txt", "notes.json"};
+  for (const auto& f : ours) std::ofstream(corpus / f) << "x";
+  for (const auto& f : others) std::ofstream(corpus / f) << "x";
+  remove_grid_corpus({"p"}, g, false);
+  for (const auto& f : ours) CHECK_FALSE(fs::exists(corpus / f));
+  for (const auto& f : others) CHECK(fs::exists(corpus / f));
 }
