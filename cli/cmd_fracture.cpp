@@ -167,7 +167,7 @@ OutputSet fracture_output_set(const FractureArgs& a, std::size_t pieces) {
 void write_fracture_outputs(const FractureArgs& a, const FractureResult& r, nlohmann::json& m,
                             const std::vector<PieceTets>& tets) {
   std::filesystem::create_directories(a.out);
-  remove_old_outputs(fracture_output_set(a, r.pieces.size()), a.quiet);
+  SetBeingWritten set(fracture_output_set(a, r.pieces.size()), a.quiet);
   write_pieces_obj(a.out + "/pieces.obj", r);
   write_pieces_obj(a.out + "/exploded.obj", r, a.explode);
   write_pieces_mtl(a.out + "/pieces.mtl");
@@ -189,6 +189,7 @@ void write_fracture_outputs(const FractureArgs& a, const FractureResult& r, nloh
     std::fputc('\n', f);
   }
   adjacency.close();
+  set.done();
 }
 
 void print_fracture_summary(const FractureArgs& a, const FractureResult& r, double rel) {

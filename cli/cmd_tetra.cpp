@@ -75,7 +75,7 @@ void refuse_output_over_input(const TetraArgs& a, int first_index) {
 std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, int first_index) {
   const unsigned threads = a.kernel.threads;
   std::string node = "written";
-  remove_old_outputs(tetra_output_set(a), false);  // the old set first; the input stays
+  SetBeingWritten set(tetra_output_set(a), false);  // the old set first; the input stays
   if (a.format == "npy") {
     write_npy(a.out, mesh);
     node = "none";
@@ -87,11 +87,15 @@ std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, in
     write_ele(a.out + ".ele", mesh.tets, threads);
   }
   if (a.vtu) write_vtu(a.out + ".vtu", mesh, parse_vtu_format(a.vtu_format));
+  set.done();
   return node;
 }
 
 int run_tetra(const TetraArgs& a) {
-  const BuildOptions options = a.kernel.build_options();
+  BuildOptions options = a.kernel.build_options();
+  // With --threads, the threaded build's order on any count: `--threads 1` writes what
+  // `--threads 2` writes (kernel/build.hpp, canonical_order).
+  options.canonical_order = a.kernel.threads_option && a.kernel.threads_option->count() > 0;
   const auto start = std::chrono::steady_clock::now();
   if (!a.out.empty()) check_out_prefix(a.out);
   PointFile in = read_input_points(a.input);

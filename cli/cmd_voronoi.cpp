@@ -117,6 +117,7 @@ int run_voronoi(const VoronoiArgs& a) {
   o.threads = a.threads;
   // The Delaunay build too, when --threads is given (as in tetra: kernel/README.md).
   o.build.threads = a.threads_option && a.threads_option->count() > 0 ? a.threads : 1;
+  o.build.canonical_order = a.threads_option && a.threads_option->count() > 0;  // the same tets' order at any N
   o.keep_dt = a.against != "none";  // the checker reads the relation from our DT (exact backends only)
   if (!a.box.empty()) {
     if (a.box.size() != 6 || !(a.box[0] < a.box[3] && a.box[1] < a.box[4] && a.box[2] < a.box[5]))
@@ -160,11 +161,12 @@ int run_voronoi(const VoronoiArgs& a) {
     }
   }
   if (!a.out.empty()) {
-    remove_old_outputs(voronoi_output_set(a), a.quiet);  // the old set first, never the input
+    SetBeingWritten set(voronoi_output_set(a), a.quiet);  // the old set first, never the input
     if (obj) write_cells_obj(a.out + ".obj", vd);
     if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
     if (a.tets) write_cells_tets_vtu(a.out + ".tets.vtu", vd, parse_vtu_format(a.vtu_format));
     write_text_file(a.out + ".json", m.dump(1) + "\n");
+    set.done();
   }
   if (!a.png.empty()) write_cells_png(a.png, vd, a.png_shrink);
   if (a.json) {

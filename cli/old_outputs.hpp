@@ -68,6 +68,38 @@ inline void remove_old_outputs(const OutputSet& set, bool quiet) {
                  gone.size(), gone[0].c_str());
 }
 
+// A set being written: from its first member to its last, the members this run writes
+// are guarded (kernel/exit_guard.hpp), so an interrupt between two renames (a new
+// PREFIX.node in place, its .ele not yet) removes the members already in place, and a
+// failure on the way (an exception: a full disk) removes them too; done() once the last
+// is in place. Only members missing when the writing starts are guarded (the old set is
+// gone by then): an input kept as an output (a 0-based .node) or a FIFO written in place
+// is never removed.
+class SetBeingWritten {
+ public:
+  // Removes the old set (remove_old_outputs), then guards this run's members.
+  SetBeingWritten(const OutputSet& set, bool quiet) {
+    remove_old_outputs(set, quiet);
+    for (const std::string& p : set.written) {
+      struct stat st {};
+      if (p.empty() || stat(p.c_str(), &st) == 0) continue;
+      guard_path(p);
+      guarded_.push_back(p);
+    }
+  }
+  SetBeingWritten(const SetBeingWritten&) = delete;
+  SetBeingWritten& operator=(const SetBeingWritten&) = delete;
+  ~SetBeingWritten() {
+    if (!done_) remove_output_set(guarded_);
+    for (const std::string& p : guarded_) release_path(p);
+  }
+  void done() { done_ = true; }
+
+ private:
+  std::vector<std::string> guarded_;
+  bool done_ = false;
+};
+
 // CLI11's check of --out: an empty path names no file ("" would mean "no --out").
 inline std::string non_empty_path(const std::string& path) { return path.empty() ? "an empty path names no file" : ""; }
 

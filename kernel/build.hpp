@@ -29,6 +29,12 @@ struct BuildOptions {
   // count; threaded builds list them in a canonical order (each tet from its smallest
   // vertex, sorted), so their output does not depend on the schedule either.
   unsigned threads = 1;
+  // The threaded build's order (above) on any count, one thread included: the threaded
+  // build's machinery then runs on one thread (slower than the serial inserter by the
+  // claims' cost). `tetra` and `voronoi` set it whenever --threads is given, so that
+  // `--threads 1` writes the bytes `--threads 2` writes; without it one thread is the
+  // serial build.
+  bool canonical_order = false;
   // A pass of the parallel build gives each thread at least this many points (fewer
   // points: fewer threads, down to the serial insertion). Tests and fuzz campaigns set
   // it to 1 so that even small inputs run on every thread.

@@ -344,7 +344,7 @@ BuildResult build_with(std::vector<Point3> pts, const B& pred, const BuildOption
                       {}};
   progress_begin(job.progress, "insert", n);  // stage "insert": points of the order done
   job.t0 = std::chrono::steady_clock::now();
-  if (job.threads <= 1)
+  if (job.threads <= 1 && !opt.canonical_order)
     insert_serially(job);
   else
     insert_threaded(job);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tetra's outputs (issue 26): the same tets and the same check at 1, 2 and 3 threads
-# (the same .ele bytes at 2 and 3); a 0-based input .node copied (or kept, as the output itself) byte for byte;
+# (the same .ele bytes at 1, 2 and 3, the serial build's tets without --threads); a 0-based input .node copied (or kept, as the output itself) byte for byte;
 # --format npy files that numpy.load reads (skipped without numpy), with the tets of
 # the .ele in dtlab's orientation; oracle and bench take --threads.
 set -u
@@ -11,9 +11,10 @@ for t in 1 2 3; do
   expect 0 "tetra --threads $t --check" -- "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/t$t" --threads "$t" --check
   grep -q "check: valid" "$tmp/out" && pass=$((pass + 1)) || { echo "FAIL: check at $t threads"; fails=$((fails + 1)); }
 done
-# The serial build lists its tets in insertion order, a threaded one in the canonical
-# order: the same tet sets (vertex sets compared), and byte-identical files between
-# thread counts above 1.
+# Without --threads the serial build lists its tets in insertion order; with --threads
+# (1 included) the threaded build lists them in the canonical order: the same tet sets
+# (vertex sets compared), and byte-identical files at every thread count.
+expect 0 "tetra without --threads (serial)" -- "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/s"
 same_tets() {
   /usr/bin/python3 - "$1" "$2" <<'PY'
 import sys
@@ -24,18 +25,18 @@ def tets(path):
 sys.exit(0 if tets(sys.argv[1]) == tets(sys.argv[2]) else 1)
 PY
 }
+same_tets "$tmp/s.ele" "$tmp/t1.ele" && cmp -s "$tmp/s.node" "$tmp/t1.node" && pass=$((pass + 1)) ||
+  { echo "FAIL: tets or points differ between the serial build and --threads 1"; fails=$((fails + 1)); }
 for t in 2 3; do
-  same_tets "$tmp/t1.ele" "$tmp/t$t.ele" && cmp -s "$tmp/t1.node" "$tmp/t$t.node" && pass=$((pass + 1)) ||
-    { echo "FAIL: tets or points differ between 1 and $t threads"; fails=$((fails + 1)); }
+  cmp -s "$tmp/t1.ele" "$tmp/t$t.ele" && cmp -s "$tmp/t1.node" "$tmp/t$t.node" && pass=$((pass + 1)) ||
+    { echo "FAIL: .ele or .node bytes differ between 1 and $t threads"; fails=$((fails + 1)); }
 done
-cmp -s "$tmp/t2.ele" "$tmp/t3.ele" && pass=$((pass + 1)) ||
-  { echo "FAIL: .ele bytes differ between 2 and 3 threads"; fails=$((fails + 1)); }
 expect 0 "tetra on a .node (copied)" -- "$dtlab" tetra "$tmp/t1.node" --out "$tmp/c" --json
 grep -q '"node_file": "copied"' "$tmp/out" && cmp -s "$tmp/t1.node" "$tmp/c.node" && pass=$((pass + 1)) ||
   { echo "FAIL: the input .node was not copied byte for byte"; fails=$((fails + 1)); }
 cp "$tmp/t1.node" "$tmp/k.node"
 expect 0 "tetra on a .node into itself (kept)" -- "$dtlab" tetra "$tmp/k.node" --out "$tmp/k" --json
-grep -q '"node_file": "kept"' "$tmp/out" && cmp -s "$tmp/t1.node" "$tmp/k.node" && cmp -s "$tmp/t1.ele" "$tmp/k.ele" &&
+grep -q '"node_file": "kept"' "$tmp/out" && cmp -s "$tmp/t1.node" "$tmp/k.node" && cmp -s "$tmp/s.ele" "$tmp/k.ele" &&
   pass=$((pass + 1)) || { echo "FAIL: the kept .node or its .ele changed"; fails=$((fails + 1)); }
 expect 0 "dtlab check on the kept pair" -- "$dtlab" check "$tmp/k"
 expect 2 "--format bad" -- "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/x" --format csv
@@ -47,7 +48,7 @@ import sys, numpy as np
 d = sys.argv[1]
 p, t = np.load(d + "/n.points.npy"), np.load(d + "/n.tets.npy")
 assert p.dtype == np.float64 and p.shape == (3000, 3), (p.dtype, p.shape)
-ele = np.loadtxt(d + "/t1.ele", skiprows=1, dtype=np.int64)[:, 1:]
+ele = np.loadtxt(d + "/s.ele", skiprows=1, dtype=np.int64)[:, 1:]
 ele[:, [0, 1]] = ele[:, [1, 0]]  # .ele is TetGen's orientation
 assert t.dtype == np.uint32 and (t == ele).all(), "npy tets differ from the .ele"
 xyz = np.loadtxt(d + "/p.xyz")
@@ -56,6 +57,30 @@ PY
 else
   echo "SKIP: numpy not installed (python3-numpy): .npy not read back"
 fi
+# A set is written whole or not at all (the sixth probe): with PREFIX.ele a FIFO nobody
+# reads, the .node is in place when the .ele's open fails (after DTLAB_FIFO_WAIT) or the
+# run is interrupted there; either way the new .node goes with it, the FIFO stays.
+rm -f "$tmp/w.node" "$tmp/w.ele"
+mkfifo "$tmp/w.ele"
+expect 2 "an .ele that cannot be written" -- env DTLAB_FIFO_WAIT=1 "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/w"
+ok "no .node left without its .ele (a failure)" [ ! -e "$tmp/w.node" ]
+env DTLAB_FIFO_WAIT=60 "$dtlab" tetra "$tmp/p.xyz" --out "$tmp/w" >/dev/null 2>&1 &
+run=$!
+for _ in $(seq 200); do [ -e "$tmp/w.node" ] && break; sleep 0.05; done
+ok "the .node was in place before the interrupt" [ -e "$tmp/w.node" ]
+kill -TERM "$run"
+wait "$run"
+sleep 0.3  # the exit guard removes what the run guarded once the run is gone
+ok "no .node left without its .ele (SIGTERM)" [ ! -e "$tmp/w.node" ]
+ok "the FIFO is left a FIFO" [ -p "$tmp/w.ele" ]
+rm -f "$tmp/w.ele"
+# voronoi: its cells are computed from the DT, so its files too are the same at every
+# --threads count (1 included: the threaded build's order).
+for t in 1 2; do
+  expect 0 "voronoi --threads $t" -- "$dtlab" voronoi "$tmp/p.xyz" --out "$tmp/v$t" --threads "$t" --quiet
+done
+cmp -s "$tmp/v1.obj" "$tmp/v2.obj" && pass=$((pass + 1)) ||
+  { echo "FAIL: voronoi's .obj differs between 1 and 2 threads"; fails=$((fails + 1)); }
 expect 0 "oracle --threads 2" -- "$dtlab" oracle "$tmp/p.xyz" --against cgal --threads 2 --quiet
 expect 0 "bench with the parallel peers" -- "$dtlab" bench --sizes 2000 --runs 1 --tools dtlab,cgal-parallel,gmsh-hxt \
   --threads 2 --quiet --json

@@ -403,3 +403,32 @@ TEST_CASE("parallel build: keep_adjacency gives each facet's mirror, the serial 
     CHECK(build_delaunay(inputs[c].first, kAdaptiveSos, o).mesh.adjacency.empty());
   }
 }
+
+TEST_CASE("canonical_order on one thread: the threaded build's tets and mirrors, array for array", "[threads]") {
+  std::vector<Point3> copies = lattice(6, 3);
+  const std::size_t n = copies.size();
+  for (std::size_t i = 0; i < n; ++i) copies.push_back(copies[(i * 7919) % n]);
+  BuildOptions big;
+  big.boundary = Boundary::bigtet;
+  big.bigtet_factor = 100;
+  const std::vector<std::pair<std::vector<Point3>, BuildOptions>> inputs = {
+      {test::uniform(3000, 6, 0, 1), {}}, {copies, {}}, {sphere(50, 2), {}}, {lattice(6, 4), big}};
+  for (std::size_t c = 0; c < inputs.size(); ++c) {
+    INFO("input " << c);
+    BuildOptions o = inputs[c].second;
+    o.keep_adjacency = true;
+    o.parallel_grain = 1;
+    o.threads = 2;
+    const BuildResult two = build_delaunay(inputs[c].first, kAdaptiveSos, o);
+    REQUIRE_FALSE(two.failure);
+    o.threads = 1;
+    o.canonical_order = true;
+    const BuildResult one = build_delaunay(inputs[c].first, kAdaptiveSos, o);
+    REQUIRE_FALSE(one.failure);
+    CHECK(one.mesh.tets == two.mesh.tets);
+    CHECK(one.mesh.adjacency == two.mesh.adjacency);
+    o.canonical_order = false;  // the serial inserter: the same tets, in its own order
+    const BuildResult serial = build_delaunay(inputs[c].first, kAdaptiveSos, o);
+    CHECK(canonical(serial.mesh.tets, serial.mesh.points.size()) == canonical(one.mesh.tets, one.mesh.points.size()));
+  }
+}

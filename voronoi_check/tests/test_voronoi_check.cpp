@@ -176,7 +176,7 @@ TEST_CASE("mutation suite: every mutant is detected") {
       for (double side : {1.0, -1.0}) {
         vor::ConvexCell half;
         half.assign(v.vertices, v.face_offsets, v.face_vertices, v.face_neighbor, sites[t.site(c)]);
-        half.clip({side, 0, 0}, 0, -7, 1e-15);
+        half.clip({side, 0, 0}, 0, static_cast<std::int32_t>(t.site(c)), 1e-15);  // the cut: a face towards itself
         half.translate(sites[t.site(c)]);
         m.add_cell(t.site(c), half.vertices(), half.face_offsets(), half.face_vertices(), half.face_tags());
       }
