@@ -169,18 +169,28 @@ void write_fracture_outputs(const FractureArgs& a, const FractureResult& r, nloh
   std::filesystem::create_directories(a.out);
   SetBeingWritten set(fracture_output_set(a, r.pieces.size()), a.quiet);
   write_pieces_obj(a.out + "/pieces.obj", r);
+  set.placed();
   write_pieces_obj(a.out + "/exploded.obj", r, a.explode);
+  set.placed();
   write_pieces_mtl(a.out + "/pieces.mtl");
+  set.placed();
   if (a.repair) write_off(a.out + "/repaired.off", r.input);
+  set.placed();
   if (a.vtu) write_pieces_vtu(a.out + "/pieces.vtu", r, parse_vtu_format(a.vtu_format));
+  set.placed();
   if (a.surfaces) write_piece_surfaces_vtu(a.out + "/surfaces.vtu", r, parse_vtu_format(a.vtu_format));
+  set.placed();
   if (a.gltf) write_pieces_gltf(a.out + "/pieces.gltf", r);
+  set.placed();
   if (a.tets) write_piece_tets_vtu(a.out + "/tets.vtu", r, tets, parse_vtu_format(a.vtu_format));
+  set.placed();
   if (a.split) {
     std::filesystem::create_directories(a.out + "/pieces");
     m["split_files"] = write_piece_files(a.out + "/pieces", r);
+    set.placed();
   }
   write_text_file(a.out + "/manifest.json", m.dump(1) + "\n");
+  set.placed();
   OutputFile adjacency(a.out + "/adjacency.txt");
   std::FILE* f = adjacency.get();
   for (std::size_t i = 0; i < r.pieces.size(); ++i) {

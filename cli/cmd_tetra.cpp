@@ -77,14 +77,19 @@ std::string write_outputs(const TetraArgs& a, const Tetrahedralization& mesh, in
   std::string node = "written";
   SetBeingWritten set(tetra_output_set(a), false);  // the old set first; the input stays
   if (a.format == "npy") {
-    write_npy(a.out, mesh);
+    write_npy_points(a.out + ".points.npy", mesh.points);
+    set.placed();
+    write_npy_tets(a.out + ".tets.npy", mesh.tets);
+    set.placed();
     node = "none";
   } else {
     const NodeReuse reuse =
         input_node_reusable(a, first_index) ? reuse_node_file(a.input, a.out + ".node") : NodeReuse::none;
     if (reuse == NodeReuse::none) write_node(a.out + ".node", mesh.points, threads);
+    set.placed();
     node = reuse == NodeReuse::same_file ? "kept" : reuse == NodeReuse::copied ? "copied" : "written";
     write_ele(a.out + ".ele", mesh.tets, threads);
+    set.placed();
   }
   if (a.vtu) write_vtu(a.out + ".vtu", mesh, parse_vtu_format(a.vtu_format));
   set.done();

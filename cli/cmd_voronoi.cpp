@@ -163,8 +163,11 @@ int run_voronoi(const VoronoiArgs& a) {
   if (!a.out.empty()) {
     SetBeingWritten set(voronoi_output_set(a), a.quiet);  // the old set first, never the input
     if (obj) write_cells_obj(a.out + ".obj", vd);
+    set.placed();
     if (a.vtu) write_cells_vtu(a.out + ".vtu", vd, parse_vtu_format(a.vtu_format));
+    set.placed();
     if (a.tets) write_cells_tets_vtu(a.out + ".tets.vtu", vd, parse_vtu_format(a.vtu_format));
+    set.placed();
     write_text_file(a.out + ".json", m.dump(1) + "\n");
     set.done();
   }

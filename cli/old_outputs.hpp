@@ -7,12 +7,16 @@
 // not left stale beside the new set); inputs are never removed.
 #include <sys/stat.h>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "cli/cli_error.hpp"
+#include "kernel/exit_guard.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 
@@ -68,36 +72,54 @@ inline void remove_old_outputs(const OutputSet& set, bool quiet) {
                  gone.size(), gone[0].c_str());
 }
 
-// A set being written: from its first member to its last, the members this run writes
-// are guarded (kernel/exit_guard.hpp), so an interrupt between two renames (a new
+// A set being written: each member this run puts in place is guarded from then until
+// the last is (kernel/exit_guard.hpp), so an interrupt between two renames (a new
 // PREFIX.node in place, its .ele not yet) removes the members already in place, and a
-// failure on the way (an exception: a full disk) removes them too; done() once the last
-// is in place. Only members missing when the writing starts are guarded (the old set is
-// gone by then): an input kept as an output (a 0-based .node) or a FIFO written in place
-// is never removed.
+// failure on the way (an exception: a full disk) removes them too, each only while it
+// is still the file this run wrote (the same inode). Only members missing when the
+// writing starts are taken (the old set is gone by then): an input kept as an output (a
+// 0-based .node) or a FIFO written in place is never removed.
 class SetBeingWritten {
  public:
-  // Removes the old set (remove_old_outputs), then guards this run's members.
+  // Removes the old set (remove_old_outputs); `written` the members to be placed.
   SetBeingWritten(const OutputSet& set, bool quiet) {
     remove_old_outputs(set, quiet);
     for (const std::string& p : set.written) {
       struct stat st {};
-      if (p.empty() || stat(p.c_str(), &st) == 0) continue;
-      guard_path(p);
-      guarded_.push_back(p);
+      if (!p.empty() && stat(p.c_str(), &st) != 0) new_.push_back(p);
     }
   }
   SetBeingWritten(const SetBeingWritten&) = delete;
   SetBeingWritten& operator=(const SetBeingWritten&) = delete;
   ~SetBeingWritten() {
-    if (!done_) remove_output_set(guarded_);
-    for (const std::string& p : guarded_) release_path(p);
+    for (const auto& [path, st] : placed_) {
+      struct stat now {};
+      if (stat(path.c_str(), &now) == 0 && same_file(now, st)) ::unlink(path.c_str());
+      release_path(path);
+    }
   }
-  void done() { done_ = true; }
+  // After each write: the members now in place, guarded from now on.
+  void placed() {
+    for (auto it = new_.begin(); it != new_.end();) {
+      struct stat st {};
+      if (stat(it->c_str(), &st) != 0) {
+        ++it;
+        continue;
+      }
+      guard_path(*it);
+      placed_.emplace_back(*it, st);
+      it = new_.erase(it);
+    }
+  }
+  // The last member is in place: the set is the run's result.
+  void done() {
+    for (const auto& member : placed_) release_path(member.first);
+    placed_.clear();
+  }
 
  private:
-  std::vector<std::string> guarded_;
-  bool done_ = false;
+  std::vector<std::string> new_;
+  std::vector<std::pair<std::string, struct stat>> placed_;
 };
 
 // CLI11's check of --out: an empty path names no file ("" would mean "no --out").

@@ -70,14 +70,22 @@ for _ in $(seq 200); do [ -e "$tmp/w.node" ] && break; sleep 0.05; done
 ok "the .node was in place before the interrupt" [ -e "$tmp/w.node" ]
 kill -TERM "$run"
 wait "$run"
-sleep 0.3  # the exit guard removes what the run guarded once the run is gone
 ok "no .node left without its .ele (SIGTERM)" [ ! -e "$tmp/w.node" ]
 ok "the FIFO is left a FIFO" [ -p "$tmp/w.ele" ]
 rm -f "$tmp/w.ele"
-# voronoi: its cells are computed from the DT, so its files too are the same at every
-# --threads count (1 included: the threaded build's order).
+# Enough points for parallel passes (a pass gives each thread at least 2048): the same
+# bytes at 1, 2 and 3 threads; voronoi's cells are computed from the DT, so its files too.
+expect 0 "sample 40000" -- "$dtlab" sample builtin --count 40000 --out "$tmp/q.xyz"
+for t in 1 2 3; do
+  expect 0 "tetra 40000 --threads $t" -- "$dtlab" tetra "$tmp/q.xyz" --out "$tmp/q$t" --threads "$t" --json
+done
+says "parallel passes ran at 3 threads" '"passes": [1-9]'
+for t in 2 3; do
+  cmp -s "$tmp/q1.ele" "$tmp/q$t.ele" && pass=$((pass + 1)) ||
+    { echo "FAIL: .ele bytes differ between 1 and $t threads at 40000 points"; fails=$((fails + 1)); }
+done
 for t in 1 2; do
-  expect 0 "voronoi --threads $t" -- "$dtlab" voronoi "$tmp/p.xyz" --out "$tmp/v$t" --threads "$t" --quiet
+  expect 0 "voronoi --threads $t" -- "$dtlab" voronoi "$tmp/q.xyz" --out "$tmp/v$t" --threads "$t" --quiet
 done
 cmp -s "$tmp/v1.obj" "$tmp/v2.obj" && pass=$((pass + 1)) ||
   { echo "FAIL: voronoi's .obj differs between 1 and 2 threads"; fails=$((fails + 1)); }

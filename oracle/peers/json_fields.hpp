@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -38,12 +39,17 @@ class UniqueFields {
   bool operator()(int, nlohmann::json::parse_event_t event, const nlohmann::json& parsed) {
     using E = nlohmann::json::parse_event_t;
     if (event == E::object_start || event == E::array_start) {
-      open_.push_back({event == E::object_start, {}, 0});
+      open_.push_back({event == E::object_start, {}, {}, 0});
     } else if (event == E::key) {
-      auto& fields = open_.back().fields;
+      Open& o = open_.back();
       const auto& key = parsed.get_ref<const std::string&>();
-      if (std::find(fields.begin(), fields.end(), key) != fields.end()) throw DuplicateField(path(), key);
-      fields.push_back(key);
+      // A linear search while the object is small (a cell's five fields), a hash set past
+      // kSmall: an object of 10^5 fields would otherwise cost 10^10 compares.
+      const bool seen = o.fields.size() < kSmall ? std::find(o.fields.begin(), o.fields.end(), key) != o.fields.end()
+                                                 : !o.wide.insert(key).second;
+      if (seen) throw DuplicateField(path(), key);
+      o.fields.push_back(key);
+      if (o.fields.size() == kSmall) o.wide.insert(o.fields.begin(), o.fields.end());
     } else if (event == E::object_end || event == E::array_end) {
       open_.pop_back();
       element_done();
@@ -54,9 +60,11 @@ class UniqueFields {
   }
 
  private:
+  static constexpr std::size_t kSmall = 16;
   struct Open {
     bool object;
-    std::vector<std::string> fields;
+    std::vector<std::string> fields;       // in order (the path names the last)
+    std::unordered_set<std::string> wide;  // the same, once there are kSmall of them
     std::size_t elements;
   };
   void element_done() {
