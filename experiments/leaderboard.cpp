@@ -20,6 +20,7 @@
 #include "experiments/wilson_interval.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/work_queue.hpp"
+#include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 #include "oracle/peers/child_process.hpp"
 #include "oracle/peers/peer_json.hpp"
@@ -157,6 +158,7 @@ class Leaderboard {
   // report beside another run's data. The corpora go whole: a peer left out this time
   // keeps no failure there.
   void remove_earlier_run() const {
+    refuse_a_campaign_folder();
     std::vector<std::string> files;
     for (const char* name : kRunFiles) files.push_back((dir / name).string());
     std::size_t removed = remove_output_set(files, {options.cgal_data}).size();
@@ -164,6 +166,22 @@ class Leaderboard {
     removed += remove_corpus_names(dir.string(), any).size();
     removed += remove_corpus_names((dir / "voronoi").string(), any).size();
     if (removed) step("removed " + std::to_string(removed) + " files of an earlier run");
+  }
+
+  // A fuzz campaign's folder (its settings.json, results*.jsonl) names its corpus as the
+  // leaderboard does: cleaning it as an earlier leaderboard run would remove the
+  // campaign's failures. Refused (exit 2) before anything is removed.
+  void refuse_a_campaign_folder() const {
+    std::error_code ec;
+    bool campaign = fs::exists(dir / "settings.json", ec);
+    for (fs::directory_iterator it(dir, ec), end; !campaign && !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      campaign = name.rfind("results", 0) == 0 && it->path().extension() == ".jsonl";
+    }
+    if (campaign)
+      throw InputError(dir.string(), 0,
+                       "holds a fuzz campaign (settings.json, results*.jsonl): the leaderboard would remove its "
+                       "corpus; choose another --out");
   }
 
   // Settings from the options: peers, seeds, sizes, limits.

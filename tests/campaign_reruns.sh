@@ -119,5 +119,11 @@ says "it names the missing mark" "no data/facts.json"
 expect 1 "leaderboard_table.py refuses it too" -- "$py" "$experiments/leaderboard_table.py" "$L"
 says "it names the missing mark" "no data/facts.json"
 
+# A fuzz campaign's folder is not a leaderboard's: its corpus is not cleaned away.
+expect 2 "leaderboard into a fuzz campaign's folder" -- "$dtlab" experiment leaderboard --out "$F" --quick --peers none \
+  --family uniform --cases 1 --no-meshes --voronoi-speed 100 --quiet
+says "the refusal names the campaign" "holds a fuzz campaign"
+ok "the campaign's results are kept" exists "$F/results.jsonl"
+
 echo "campaign_reruns: $pass passed, $fails failed"
 [ "$fails" -eq 0 ]
