@@ -30,11 +30,19 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 }  // namespace
 
 std::vector<std::uint32_t> site_representatives(std::span<const Point3> p) {
-  std::vector<std::uint32_t> idx(p.size()), rep(p.size());
-  std::iota(idx.begin(), idx.end(), 0u);
-  std::stable_sort(idx.begin(), idx.end(), [&](auto a, auto b) { return lex_less(p[a], p[b]); });
-  for (std::size_t k = 0; k < idx.size(); ++k)
-    rep[idx[k]] = k > 0 && p[idx[k]] == p[idx[k - 1]] ? rep[idx[k - 1]] : idx[k];
+  // Sorted as (point, index) records, not indices into the points (each comparison two
+  // scattered reads): equal points then come in index order, the first the representative.
+  struct Keyed {
+    Point3 p;
+    std::uint32_t i;
+  };
+  std::vector<Keyed> keyed(p.size());
+  for (std::size_t k = 0; k < p.size(); ++k) keyed[k] = {p[k], static_cast<std::uint32_t>(k)};
+  std::sort(keyed.begin(), keyed.end(),
+            [](const Keyed& a, const Keyed& b) { return lex_less(a.p, b.p) || (!lex_less(b.p, a.p) && a.i < b.i); });
+  std::vector<std::uint32_t> rep(p.size());
+  for (std::size_t k = 0; k < keyed.size(); ++k)
+    rep[keyed[k].i] = k > 0 && keyed[k].p == keyed[k - 1].p ? rep[keyed[k - 1].i] : keyed[k].i;
   return rep;
 }
 
