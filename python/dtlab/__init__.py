@@ -297,6 +297,13 @@ def _site(site: Any, what: str) -> int:
     return int(site)
 
 
+def _float_or_inf(x: Any) -> float:
+    try:
+        return float(x)
+    except OverflowError:
+        return float("inf")
+
+
 def _cell_vertices(verts: Any, what: str) -> Any:
     """A cell's vertices as a (k, 3) float64 array of finite numbers: a transposed
     (3, k) or a flat (3k,) array is refused, never reshaped; so are bools and strings."""
@@ -307,12 +314,13 @@ def _cell_vertices(verts: Any, what: str) -> Any:
     else:
         if isinstance(verts, (str, bytes, Mapping)) or not isinstance(verts, Iterable):
             raise TypeError(f"{what}: expected a (k, 3) array of numbers, got {_shown(verts)}")
+        rows = list(verts)  # once: a generator is walked a single time
         try:
-            a = np.asarray(list(verts), dtype=object)
+            a = np.asarray(rows, dtype=object)
         except ValueError:  # rows of different shapes numpy cannot even hold as objects
             a = None
         if a is None or (a.ndim == 1 and a.size and any(np.ndim(x) for x in a)):
-            lengths = sorted({len(x) if isinstance(x, Sized) else 0 for x in verts})
+            lengths = sorted({len(x) if isinstance(x, Sized) else 0 for x in rows})
             raise ValueError(f"{what} must be (k, 3), got rows of {', '.join(map(str, lengths))} coordinates")
     if a.shape == (0,):
         a = a.reshape(0, 3)
@@ -324,8 +332,8 @@ def _cell_vertices(verts: Any, what: str) -> Any:
                 raise ValueError(f"{what}: expected numbers, got {_shown(x)}")
     try:
         a = a.astype(np.float64)
-    except OverflowError:  # an int beyond the doubles
-        a = np.full(a.shape, np.inf)
+    except OverflowError:  # an int beyond the doubles: that vertex named below
+        a = np.array([[_float_or_inf(x) for x in row] for row in a], dtype=np.float64)
     if len(a) > _INDEX_MAX:
         raise ValueError(f"{what}: {len(a)} vertices (at most {_INDEX_MAX})")
     if not np.isfinite(a).all():

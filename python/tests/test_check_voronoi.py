@@ -198,6 +198,10 @@ def test_cell_vertices_must_be_k_by_3():
         ([[True, 0.5, 0.5]] + v[1:].tolist(), r"^cells\[0\]: vertices: expected numbers, got True$"),
         ([["0.5", 0.5, 0.5]] + v[1:].tolist(), r"^cells\[0\]: vertices: expected numbers, got '0.5'$"),
         (np.vstack([[np.nan, 0, 0], v[1:]]), r"^cells\[0\]: vertices: vertex 0 is not finite: \[nan, 0.0, 0.0\]$"),
+        # An int beyond the doubles: that vertex named, not the first.
+        (v[:2].tolist() + [[10**400, 0, 0]] + v[3:].tolist(), r"^cells\[0\]: vertices: vertex 2 is not finite: \[inf, "),
+        # Ragged rows given by a generator (walked once: the message still has the rows).
+        ((r for r in [list(v[0][:2])] + v[1:].tolist()), r"^cells\[0\]: vertices must be \(k, 3\), got rows of 2, 3"),
     ]:
         cells = _damaged(pts, vd, lambda s, _, f, n: (s, bad, f, n))
         with pytest.raises(ValueError, match=message):
