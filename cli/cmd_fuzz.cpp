@@ -22,6 +22,7 @@
 #include "cli/progress.hpp"
 #include "fuzz/campaign.hpp"
 #include "fuzz/campaign_report.hpp"
+#include "fuzz/campaign_settings.hpp"
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/summary.hpp"
@@ -49,6 +50,7 @@ struct FuzzArgs {
   std::string predicates = "adaptive";
   std::string perturb = "sos";
   KernelArgs kernel;  // --eps, --eps-mode, --boundary, --order (the seed is set per case)
+  const CLI::Option* order_option = nullptr;  // --order: given, it overrides a replayed entry's
   std::string oracle = "none";
   std::string target;  // a peer: judge it instead of dtlab
   unsigned jobs = 1;
@@ -237,20 +239,27 @@ int run_replay(const FuzzArgs& a) {
   fuzz::ReplayOptions options;
   if (a.predicates_given) options.backends = backends_of(a);
   if (a.kernel.boundary != "infinite") options.boundary = a.kernel.build_options();
+  // Each entry is rebuilt with its sidecar's order and threads unless these are given.
+  if (a.order_option && a.order_option->count() > 0) options.order = a.kernel.build_options().order;
+  if (a.kernel.threads_option && a.kernel.threads_option->count() > 0) options.threads = a.kernel.threads;
   const auto results = fuzz::replay_corpus(a.replay, options);
   std::size_t failing = 0;
   nlohmann::json lines = nlohmann::json::array();
   for (const auto& r : results) {
     failing += !r.run.ok();
     if (a.json) {
-      nlohmann::json line = {{"file", r.file}, {"backend", r.backend}, {"boundary", r.boundary},
-                             {"outcome", r.run.outcome}, {"recorded", r.recorded_outcome},
-                             {"ok", r.run.ok()}, {"detail", r.run.detail}, {"defects", r.run.defects}};
+      nlohmann::json line = {
+          {"file", r.file},           {"backend", r.backend},           {"boundary", r.boundary},
+          {"order", r.order},         {"threads", r.threads},           {"parallel_passes", r.run.parallel_passes},
+          {"outcome", r.run.outcome}, {"recorded", r.recorded_outcome}, {"ok", r.run.ok()},
+          {"detail", r.run.detail},   {"defects", r.run.defects}};
       if (!r.run.ok()) line["witness"] = witness_json(r);
       lines.push_back(std::move(line));
     } else {
-      std::printf("%-8s %-14s %-24s %s%s\n", r.run.ok() ? "ok" : "FAIL", r.backend.c_str(),
-                  r.run.outcome.c_str(), r.file.c_str(),
+      // The file with the settings it was built with: `dtlab fuzz --replay` and this line's
+      // tail is the same build.
+      std::printf("%-8s %-14s %-24s %s --order %s --threads %u%s\n", r.run.ok() ? "ok" : "FAIL", r.backend.c_str(),
+                  r.run.outcome.c_str(), r.file.c_str(), r.order.c_str(), r.threads,
                   r.recorded_outcome.empty() ? "" : (" (recorded: " + r.recorded_outcome + ")").c_str());
       if (!r.run.ok()) print_witness(r);
     }
@@ -337,8 +346,9 @@ int run_fuzz(const FuzzArgs& a) {
   o.seed = a.seed;
   o.backends = backends_of(a);
   o.build = a.kernel.build_options();  // boundary and order; the seed is set per case
-  // Threaded builds split every case across the threads, however small it is.
-  if (o.build.threads != 1) o.build.parallel_grain = 1;
+  // Threaded builds split every case across the threads, however small it is (as the
+  // replay of the corpus builds them: fuzz/campaign_settings.hpp).
+  fuzz::use_build_threads(o.build, o.build.threads);
   o.oracles = oracles_of(a.oracle);
   for (const auto& name : split(a.oracle))
     if (name == "serial") o.oracles.push_back(serial_hook(o.backends, o.build));
@@ -379,6 +389,7 @@ void add_fuzz_command(CLI::App& app, int& rc) {
                    ->capture_default_str();
   sub->add_option("--perturb", args->perturb, "comma list of none, sos")->capture_default_str();
   args->kernel.add_to(*sub, kEpsOption | kBoundaryOption | kOrderOption | kThreadsOption);
+  args->order_option = sub->get_option("--order");
   sub->add_flag_callback(
       "--relative-eps", [args] { args->kernel.eps_mode = "relative"; }, "the old spelling of --eps-mode relative");
   sub->add_option("--against,--oracle", args->oracle,
@@ -396,7 +407,10 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   sub->add_option("--out", args->out, "campaign folder (results*.jsonl, corpus/, summary.md, environment.json)")
       ->type_name("DIR");
   sub->add_option("--shard", args->shard, "K/N: run only the cases with ordinal % N == K");
-  sub->add_option("--replay", args->replay, "re-run a corpus: a .node file, a corpus or campaign folder");
+  sub->add_option("--replay", args->replay,
+                  "re-run a corpus: a .node file, a corpus or campaign folder; each entry is built with its "
+                  "sidecar's backend, boundary, order and threads (--predicates, --boundary, --order, --threads "
+                  "given: those)");
   sub->add_flag("--no-shrink", args->no_shrink, "do not shrink failing cases");
   sub->add_option("--shrink-budget", args->shrink_budget, "builds per shrunk case")->transform(count_in(0, 1e9))->capture_default_str();
   sub->add_flag("--list", args->list, "list the point-set families and what each targets");

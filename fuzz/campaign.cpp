@@ -173,7 +173,9 @@ void run_backend(const CampaignOptions& o, const PredicateSpec& spec, const Buil
   };
   const ShrinkResult s = shrink_points(points, fails, o.shrink_budget);
   r.shrunk_points = s.points.size();
-  CorpusEntryInfo info{original_command(o, r), s.tests, s.minimal};
+  // The shrinker's builds are `build`, the case's own (threads and order included), so the
+  // entry fails as recorded when replayed with the sidecar's settings.
+  CorpusEntryInfo info{original_command(o, r), s.tests, s.minimal, order_label(build)};
   std::lock_guard<std::mutex> g(corpus_lock);
   r.corpus_file = write_corpus_entry(o.out_dir, r, s.points, info);
 }

@@ -13,6 +13,11 @@ namespace fs = std::filesystem;
 
 unsigned build_thread_count(const BuildOptions& build) { return thread_count(build.threads); }
 
+void use_build_threads(BuildOptions& build, unsigned threads) {
+  build.threads = threads;
+  if (threads != 1) build.parallel_grain = 1;
+}
+
 nlohmann::json outcome_settings(const CampaignOptions& o) {
   nlohmann::json labels = nlohmann::json::array(), against = nlohmann::json::array();
   nlohmann::json eps = nullptr, eps_mode = nullptr;

@@ -14,6 +14,11 @@ namespace dtlab::fuzz {
 // serial build. Naive and epsilon builds fail differently on different counts.
 unsigned build_thread_count(const BuildOptions& build);
 
+// Sets the threads of a campaign's builds (0: all hardware threads), as a campaign and a
+// replay of its corpus set them: above 1 (or 0), every case is split across the threads
+// however small it is (parallel_grain 1); 1 is the serial build.
+void use_build_threads(BuildOptions& build, unsigned threads);
+
 // Keyed by the option that sets each: --seed, --min-points, --points, --predicates
 // (the backend labels), --eps, --eps-mode, --boundary, --order, --threads (resolved:
 // build_thread_count), --against.

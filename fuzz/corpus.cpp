@@ -1,5 +1,7 @@
 #include "fuzz/corpus.hpp"
 
+#include <cstdint>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -7,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fuzz/campaign_settings.hpp"
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
@@ -32,13 +35,22 @@ std::size_t line_at(const std::string& text, std::size_t offset) {
          static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
 }
 
-// The settings a corpus file was recorded with, from its .json sidecar when there is one.
-// A sidecar that is no JSON, holds a field of the wrong type or names an unknown backend
-// or boundary is refused with its file and line (the line of the field when it is found).
+// The most threads a sidecar may name: --threads's bound (a recorded count is resolved, never 0).
+constexpr std::int64_t kMaxSidecarThreads = 1024;
+
+// The settings a corpus file was recorded with, from its .json sidecar when there is one:
+// backend, boundary, case seed, insertion order and the build's threads (build.threads as
+// recorded; the caller applies use_build_threads). Fields a sidecar does not have (older
+// ones lack "order" and "threads") keep their defaults: brio, serial. A sidecar that is no
+// JSON, holds a field of the wrong type or names an unknown backend, boundary or order or a
+// thread count out of range is refused with its file and line (the line of the field when
+// it is found).
 void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build, std::string& outcome) {
   fs::path sidecar = file;
   sidecar.replace_extension(".json");
   std::string boundary = "infinite";
+  std::string order = "brio";
+  nlohmann::json threads = 1;
   if (fs::is_regular_file(sidecar)) {
     std::ifstream in(sidecar, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -61,6 +73,8 @@ void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build
       key = "boundary", boundary = j.value(key, boundary);
       key = "outcome", outcome = j.value(key, std::string{});
       key = "case_seed", build.seed = j.value(key, build.seed);
+      key = "order", order = j.value(key, order);
+      key = "threads", threads = j.value(key, threads);
     } catch (const nlohmann::json::exception& e) {
       throw InputError(sidecar.string(), field_line(key), std::string("'") + key + "': " + e.what());
     }
@@ -69,6 +83,15 @@ void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build
                        "unknown predicates '" + spec.backend + "' (expected naive, epsilon, adaptive or exact)");
     if (!parse_boundary(boundary, build))
       throw InputError(sidecar.string(), field_line("boundary"), "bad boundary '" + boundary + "'");
+    if (order != "brio" && order != "input")
+      throw InputError(sidecar.string(), field_line("order"), "bad order '" + order + "' (expected brio or input)");
+    if (!threads.is_number_integer() || threads.get<std::int64_t>() < 1 ||
+        threads.get<std::int64_t>() > kMaxSidecarThreads)
+      throw InputError(sidecar.string(), field_line("threads"),
+                       "bad threads " + threads.dump() + " (expected 1 to " + std::to_string(kMaxSidecarThreads) +
+                           ": the build's thread count, 1 serial)");
+    build.order = order == "input" ? InsertionOrder::input : InsertionOrder::brio;
+    build.threads = threads.get<unsigned>();
   } else {
     parse_boundary(boundary, build);
   }
@@ -120,6 +143,7 @@ std::string write_corpus_entry(const std::string& out_dir, const CaseRecord& rec
       {"predicates", record.predicates},
       {"perturb", record.perturb ? "sos" : "none"},
       {"boundary", record.boundary},
+      {"order", info.order},
       {"threads", record.threads},
       {"outcome", record.run.outcome},
       {"detail", record.run.detail},
@@ -154,10 +178,12 @@ std::vector<ReplayResult> replay_corpus(const std::string& path, const ReplayOpt
     std::string recorded_outcome;
     read_sidecar(file, recorded_spec, build, recorded_outcome);
     if (options.boundary) {
-      const std::uint64_t seed = build.seed;
-      build = *options.boundary;
-      build.seed = seed;
+      build.boundary = options.boundary->boundary;
+      build.bigtet_factor = options.boundary->bigtet_factor;
     }
+    if (options.order) build.order = *options.order;
+    // The campaign's threaded build (parallel_grain 1 above one thread), or the serial one.
+    use_build_threads(build, options.threads.value_or(build.threads));
     const std::vector<PredicateSpec> specs =
         options.backends.empty() ? std::vector<PredicateSpec>{recorded_spec} : options.backends;
     for (const auto& spec : specs) {
@@ -166,6 +192,8 @@ std::vector<ReplayResult> replay_corpus(const std::string& path, const ReplayOpt
       r.recorded_outcome = recorded_outcome;
       r.backend = backend_label(spec);
       r.boundary = boundary_label(build);
+      r.threads = build_thread_count(build);
+      r.order = order_label(build);
       r.run = run_case(points, spec, build);
       results.push_back(std::move(r));
     }

@@ -14,6 +14,7 @@ struct CorpusEntryInfo {
   std::string original_command;  // regenerates the unshrunk case
   std::size_t shrink_tests = 0;
   bool minimal = false;
+  std::string order = "brio";  // the build's insertion order (order_label): the sidecar's "order"
 };
 
 // <out_dir>/corpus/<name>.node and .json of a record (its case, backend and boundary):
@@ -29,16 +30,24 @@ struct ReplayResult {
   std::string recorded_outcome;  // from the sidecar, "" without one
   std::string backend;
   std::string boundary;
+  unsigned threads = 1;  // the build's threads (1: serial), as --threads takes it
+  std::string order;     // "brio" or "input", as --order takes it
   CaseRun run;
 };
 
 struct ReplayOptions {
   std::vector<PredicateSpec> backends;      // empty: each entry's recorded backend
-  std::optional<BuildOptions> boundary;     // nullopt: each entry's recorded boundary
+  std::optional<BuildOptions> boundary;     // nullopt: each entry's recorded boundary (only
+                                            // its boundary and bigtet factor are used)
+  std::optional<unsigned> threads;          // nullopt: each entry's recorded threads; 0: all
+  std::optional<InsertionOrder> order;      // nullopt: each entry's recorded order
 };
 
 // `path`: a .node file, a corpus folder, or a campaign folder (its corpus/ is used).
-// Files are replayed in name order. Throws InputError for unreadable input.
+// Files are replayed in name order, each built as its campaign built it: the sidecar's
+// backend, boundary, case seed, order and threads (use_build_threads; a sidecar without
+// "order" or "threads", written before they were kept: brio and serial). Throws
+// InputError for unreadable input, naming the file (and the line of a bad field).
 std::vector<ReplayResult> replay_corpus(const std::string& path, const ReplayOptions& options);
 
 // "infinite", "bigtet" or "bigtet:FACTOR" into `options`; false when malformed.

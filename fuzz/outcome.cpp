@@ -65,6 +65,7 @@ CaseRun run_case(std::span<const Point3> points, const PredicateSpec& predicates
   }
   run.build_seconds = seconds_since(t0);
   run.tets = built.mesh.tets.size();
+  run.parallel_passes = built.stats.parallel_passes;
   run.duplicates = built.duplicates.size();
 
   const bool flat_input = is_lower_dimensional(points);

@@ -28,6 +28,7 @@ struct CaseRun {
   std::string detail;                            // first witness or failure detail
   std::vector<std::uint32_t> witness_tets, witness_vertices;  // the first witness's tets and input points
   std::uint64_t tets = 0, duplicates = 0;
+  std::uint64_t parallel_passes = 0;  // insertion passes the build ran on threads (0: all serial)
   double build_seconds = 0, check_seconds = 0;
   bool ok() const { return outcome == "valid" || outcome == "lower-dimensional"; }
 };

@@ -139,6 +139,24 @@ file_error check "$tmp/bad.node" 5 -- check "$tmp/bad"
 file_error oracle "$tmp/bad.node" 5 -- oracle "$tmp/bad.node" --against cgal
 file_error voronoi "$tmp/bad.node" 5 -- voronoi "$tmp/bad.node"
 file_error fuzz "$tmp/bad.node" 5 -- fuzz --replay "$tmp/bad.node"
+# A corpus entry is replayed with its sidecar's --order and --threads (printed after the
+# file, in the JSON line too); a count out of range is refused, naming the sidecar and line.
+mkdir -p "$tmp/rt"
+printf '5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 0.3 0.3 0.3\n' > "$tmp/rt/e.node"
+printf '{\n  "outcome": "valid",\n  "order": "input",\n  "threads": 2\n}\n' > "$tmp/rt/e.json"
+expect 0 "fuzz --replay of a threaded entry" -- "$dtlab" fuzz --replay "$tmp/rt/e.node"
+says "the replay names the sidecar's settings" "^ok .* $tmp/rt/e.node --order input --threads 2 \(recorded: valid\)$"
+expect 0 "fuzz --replay --threads 1 --order brio" -- "$dtlab" fuzz --replay "$tmp/rt/e.node" --threads 1 --order brio --json
+ok "given, --threads and --order override the sidecar" /usr/bin/python3 -c "
+import json, sys; r = json.load(open(sys.argv[1]))['results'][0]
+assert (r['threads'], r['order'], r['parallel_passes']) == (1, 'brio', 0), r" "$tmp/out"
+printf '{\n  "outcome": "valid"\n}\n' > "$tmp/rt/e.json"
+expect 0 "fuzz --replay of an entry from before threads were kept" -- "$dtlab" fuzz --replay "$tmp/rt/e.node" --json
+ok "an old sidecar replays serially with brio" /usr/bin/python3 -c "
+import json, sys; r = json.load(open(sys.argv[1]))['results'][0]
+assert (r['threads'], r['order'], r['outcome']) == (1, 'brio', 'valid'), r" "$tmp/out"
+printf '{\n  "outcome": "valid",\n  "threads": 0\n}\n' > "$tmp/rt/e.json"
+file_error fuzz "$tmp/rt/e.json" 3 -- fuzz --replay "$tmp/rt/e.node"
 file_error sample "$tmp/bad.off" 4 -- sample "$tmp/bad.off" --out "$tmp/s.xyz"
 file_error fracture "$tmp/bad.off" 4 -- fracture "$tmp/bad.off" --out "$tmp/f"
 file_error "mesh check" "$tmp/bad.off" 4 -- mesh check "$tmp/bad.off"

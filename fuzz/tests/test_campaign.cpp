@@ -3,6 +3,8 @@
 #include <fstream>
 #include <set>
 
+#include <nlohmann/json.hpp>
+
 #include "fuzz/campaign.hpp"
 #include "fuzz/corpus.hpp"
 #include "fuzz/families.hpp"
@@ -205,4 +207,126 @@ TEST_CASE("a corpus sidecar that is wrong is refused with its file and line", "[
   CHECK(refusal("{\n  \"boundary\": \"moon\"\n}\n") == "2:bad boundary 'moon'");
   CHECK(refusal("[1, 2]\n") == "1:expected a JSON object");
   CHECK(refusal("{\"predicates\": \"exact\"}\n") == "accepted");
+  // The order and the thread count the entry's campaign built with: out of range, refused.
+  CHECK(refusal("{\n  \"order\": \"hilbert\"\n}\n") == "2:bad order 'hilbert' (expected brio or input)");
+  CHECK(refusal("{\n  \"order\": 1\n}\n").rfind("2:'order'", 0) == 0);
+  for (const char* bad : {"0", "-1", "1025", "2.5", "\"2\"", "null", "18446744073709551615"}) {
+    INFO(bad);
+    CHECK(refusal(std::string("{\n  \"outcome\": \"ok\",\n  \"threads\": ") + bad + "\n}\n")
+              .rfind(std::string("3:bad threads ") + bad + " (expected 1 to 1024", 0) == 0);
+  }
+  CHECK(refusal("{\"threads\": 1024, \"order\": \"input\"}\n") == "accepted");
+  // The refusal names the sidecar.
+  std::ofstream(dir.path / "c.json") << "{\"threads\": 0}\n";
+  try {
+    replay_corpus((dir.path / "c.node").string(), {});
+    FAIL("a sidecar with threads 0 was accepted");
+  } catch (const InputError& e) {
+    CHECK(e.file() == (dir.path / "c.json").string());
+  }
+}
+
+namespace {
+
+// A corpus entry "e.node" of 40 uniform points in `dir`, with the sidecar `sidecar` (none: "").
+fs::path corpus_entry(const fs::path& dir, const std::string& sidecar) {
+  fs::create_directories(dir);
+  std::ofstream node(dir / "e.node");
+  const auto points = find_family("uniform")->generate(40, 5);
+  node.precision(17);
+  node << points.size() << " 3 0 0\n";
+  for (std::size_t i = 0; i < points.size(); ++i)
+    node << i << " " << points[i].x << " " << points[i].y << " " << points[i].z << "\n";
+  if (!sidecar.empty()) std::ofstream(dir / "e.json") << sidecar;
+  return dir / "e.node";
+}
+
+}  // namespace
+
+TEST_CASE("a corpus entry is replayed with the threads and order of its sidecar", "[fuzz][campaign][replay]") {
+  TestFolder dir;
+  SECTION("threads 2: the campaign's threaded build (every case split across the threads)") {
+    const fs::path node = corpus_entry(dir.path, R"({"predicates": "adaptive", "perturb": "sos", "outcome": "valid",
+                                                      "case_seed": 7, "order": "input", "threads": 2})");
+    const auto results = replay_corpus(node.string(), {});
+    REQUIRE(results.size() == 1);
+    CHECK(results[0].threads == 2);
+    CHECK(results[0].order == "input");
+    CHECK(results[0].run.outcome == "valid");
+    // parallel_grain 1 as in the campaign: 40 points do run passes on the threads (the
+    // default grain, 2048 points a thread, would insert them serially).
+    CHECK(results[0].run.parallel_passes > 0);
+    // --threads 1 and --order given to the replay override the sidecar.
+    ReplayOptions serial;
+    serial.threads = 1;
+    serial.order = InsertionOrder::brio;
+    const auto overridden = replay_corpus(node.string(), serial);
+    REQUIRE(overridden.size() == 1);
+    CHECK(overridden[0].threads == 1);
+    CHECK(overridden[0].order == "brio");
+    CHECK(overridden[0].run.parallel_passes == 0);
+    // --boundary overrides the boundary alone: the recorded threads and order stay.
+    ReplayOptions bigtet;
+    bigtet.boundary = BuildOptions{};
+    bigtet.boundary->boundary = Boundary::bigtet;
+    const auto boxed = replay_corpus(node.string(), bigtet);
+    REQUIRE(boxed.size() == 1);
+    CHECK(boxed[0].boundary == "bigtet:10");
+    CHECK(boxed[0].threads == 2);
+    CHECK(boxed[0].order == "input");
+    CHECK(boxed[0].run.parallel_passes > 0);
+  }
+  SECTION("a sidecar from before order and threads were kept: brio, serial") {
+    const fs::path node = corpus_entry(dir.path, R"({"predicates": "adaptive", "perturb": "sos", "outcome": "valid",
+                                                      "case_seed": 7})");
+    const auto results = replay_corpus(node.string(), {});
+    REQUIRE(results.size() == 1);
+    CHECK(results[0].threads == 1);
+    CHECK(results[0].order == "brio");
+    CHECK(results[0].run.outcome == "valid");
+    CHECK(results[0].run.parallel_passes == 0);
+  }
+  SECTION("no sidecar: brio, serial") {
+    const auto results = replay_corpus(corpus_entry(dir.path, "").string(), {});
+    REQUIRE(results.size() == 1);
+    CHECK(results[0].threads == 1);
+    CHECK(results[0].order == "brio");
+    CHECK(results[0].run.parallel_passes == 0);
+  }
+}
+
+TEST_CASE("a threaded campaign's corpus records its threads and order and replays with them",
+          "[fuzz][campaign][replay]") {
+  TestFolder dir;
+  CampaignOptions o;
+  o.families = {"near_degenerate", "kettner_grid"};
+  o.cases = 3;
+  o.min_points = 16;
+  o.max_points = 40;
+  o.seed = 3;
+  o.backends = {spec("naive", false)};
+  o.build.threads = 2;
+  o.build.parallel_grain = 1;  // as dtlab fuzz --threads 2 sets it (use_build_threads)
+  o.build.order = InsertionOrder::input;
+  o.jobs = 2;
+  o.shrink_budget = 100;
+  o.out_dir = dir.path.string();
+  const CampaignResult r = run_campaign(o);
+  REQUIRE(r.failing() > 0);
+  std::size_t entries = 0;
+  for (const auto& rec : r.records) {
+    if (rec.run.ok()) continue;
+    ++entries;
+    std::ifstream in(dir.path / (rec.corpus_file.substr(0, rec.corpus_file.size() - 5) + ".json"));
+    const auto j = nlohmann::json::parse(in);
+    CHECK(j.at("threads") == 2);
+    CHECK(j.at("order") == "input");
+  }
+  const auto replayed = replay_corpus(dir.path.string(), {});
+  REQUIRE(replayed.size() == entries);
+  for (const auto& p : replayed) {
+    INFO(p.file);
+    CHECK(p.threads == 2);
+    CHECK(p.order == "input");
+  }
 }
