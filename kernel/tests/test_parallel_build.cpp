@@ -367,16 +367,29 @@ std::vector<std::array<std::uint32_t, 5>> facet_mirrors(const Tetrahedralization
 
 }  // namespace
 
-TEST_CASE("parallel build: keep_adjacency gives each facet's mirror, the serial build's, at every thread count",
-          "[threads]") {
-  std::vector<Point3> copies = lattice(7, 5);
+namespace {
+
+// Inputs for the adjacency cases: uniform points, a lattice k^3 with every point twice
+// (duplicates), a lattice in a bigtet (its corners' tets), and `extra` ones.
+std::vector<std::pair<std::vector<Point3>, BuildOptions>> adjacency_inputs(
+    int k, std::vector<std::pair<std::vector<Point3>, BuildOptions>> extra = {}) {
+  std::vector<Point3> copies = lattice(k, 5);
   const std::size_t n = copies.size();
   for (std::size_t i = 0; i < n; ++i) copies.push_back(copies[(i * 7919) % n]);
   BuildOptions big;
   big.boundary = Boundary::bigtet;
   big.bigtet_factor = 100;
-  const std::vector<std::pair<std::vector<Point3>, BuildOptions>> inputs = {
-      {test::uniform(3000, 4, 0, 1), {}}, {copies, {}}, {lattice(8, 2), big}};
+  std::vector<std::pair<std::vector<Point3>, BuildOptions>> inputs = {
+      {test::uniform(3000, 4, 0, 1), {}}, {copies, {}}, {lattice(k + 1, 2), big}};
+  for (auto& e : extra) inputs.push_back(std::move(e));
+  return inputs;
+}
+
+}  // namespace
+
+TEST_CASE("parallel build: keep_adjacency gives each facet's mirror, the serial build's, at every thread count",
+          "[threads]") {
+  const auto inputs = adjacency_inputs(7);
   for (std::size_t c = 0; c < inputs.size(); ++c) {
     INFO("input " << c);
     BuildOptions o = inputs[c].second;
@@ -405,14 +418,7 @@ TEST_CASE("parallel build: keep_adjacency gives each facet's mirror, the serial 
 }
 
 TEST_CASE("canonical_order on one thread: the threaded build's tets and mirrors, array for array", "[threads]") {
-  std::vector<Point3> copies = lattice(6, 3);
-  const std::size_t n = copies.size();
-  for (std::size_t i = 0; i < n; ++i) copies.push_back(copies[(i * 7919) % n]);
-  BuildOptions big;
-  big.boundary = Boundary::bigtet;
-  big.bigtet_factor = 100;
-  const std::vector<std::pair<std::vector<Point3>, BuildOptions>> inputs = {
-      {test::uniform(3000, 6, 0, 1), {}}, {copies, {}}, {sphere(50, 2), {}}, {lattice(6, 4), big}};
+  const auto inputs = adjacency_inputs(5, {{sphere(50, 2), {}}});
   for (std::size_t c = 0; c < inputs.size(); ++c) {
     INFO("input " << c);
     BuildOptions o = inputs[c].second;
