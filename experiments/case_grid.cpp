@@ -4,8 +4,8 @@
 #include <charconv>
 #include <filesystem>
 #include <set>
-#include <string_view>
 #include <stdexcept>
+#include <string_view>
 
 #include "fuzz/campaign.hpp"
 #include "fuzz/case_seed.hpp"

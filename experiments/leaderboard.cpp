@@ -40,9 +40,8 @@ namespace {
 constexpr const char* kDefaultCgalData = "/usr/share/doc/libcgal-demo/data.tar.gz";
 
 // The files a run writes besides its corpora, the last one written first.
-constexpr const char* kRunFiles[] = {"data/facts.json", "report.md",      "report.html",   "environment.json",
-                                     "leaderboard.csv", "data/speed.csv", "data/voronoi.csv",
-                                     "data/voronoi_speed.csv"};
+constexpr const char* kRunFiles[] = {"data/facts.json", "report.md",      "report.html",      "environment.json",
+                                     "leaderboard.csv", "data/speed.csv", "data/voronoi.csv", "data/voronoi_speed.csv"};
 // CGAL demo meshes sampled on the surface (the points of a scanned shell) and inside.
 const std::vector<std::string> kMeshes = {"elephant", "bunny00", "fandisk", "knot1"};
 

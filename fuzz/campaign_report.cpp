@@ -6,9 +6,9 @@
 #include <set>
 #include <stdexcept>
 
-#include "kernel/output_file.hpp"
 #include "fuzz/campaign_settings.hpp"
 #include "fuzz/run_environment.hpp"
+#include "kernel/output_file.hpp"
 
 namespace dtlab::fuzz {
 
@@ -32,8 +32,9 @@ nlohmann::json campaign_settings(const CampaignOptions& o) {
   }
   for (const auto& h : o.oracles) oracles.push_back(h.name);
   nlohmann::json j = {{"seed", o.seed},
-                      {"case_seeds", "case_seed(seed, family, index): SplitMix64 of the seed, FNV-1a of family and index; "
-                                     "each results line has its case_seed"},
+                      {"case_seeds",
+                       "case_seed(seed, family, index): SplitMix64 of the seed, FNV-1a of family and index; "
+                       "each results line has its case_seed"},
                       {"families", o.families},
                       {"cases_per_family", o.cases},
                       {"min_points", o.min_points},

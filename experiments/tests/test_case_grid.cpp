@@ -85,9 +85,9 @@ TEST_CASE("case grid: corpus names taken apart", "[case_grid]") {
   CHECK(name->index == 12);
   CHECK(parse_corpus_name(corpus_stem("dtlab:exact", "uniform", 48, 0) + ".node")->prefix ==
         corpus_prefix("dtlab:exact", "uniform"));
-  for (const char* other : {"mine-uniform-n8-0.txt", "mine-uniform-n8-x.node", "mine-uniform-8-0.node",
-                            "mine-uniform-n-0.node", "-n8-0.node", "uniform-s1-0-naive+sos.node",
-                            "mine-uniform-n8-99999999999999999999999.node"})
+  for (const char* other :
+       {"mine-uniform-n8-0.txt", "mine-uniform-n8-x.node", "mine-uniform-8-0.node", "mine-uniform-n-0.node",
+        "-n8-0.node", "uniform-s1-0-naive+sos.node", "mine-uniform-n8-99999999999999999999999.node"})
     CHECK_FALSE(parse_corpus_name(other));
 }
 
