@@ -175,7 +175,7 @@ void run_backend(const CampaignOptions& o, const PredicateSpec& spec, const Buil
   r.shrunk_points = s.points.size();
   // The shrinker's builds are `build`, the case's own (threads and order included), so the
   // entry fails as recorded when replayed with the sidecar's settings.
-  CorpusEntryInfo info{original_command(o, r), s.tests, s.minimal, order_label(build)};
+  CorpusEntryInfo info{original_command(o, r), s.tests, s.minimal, order_label(build), spec.eps, spec.relative_eps};
   std::lock_guard<std::mutex> g(corpus_lock);
   r.corpus_file = write_corpus_entry(o.out_dir, r, s.points, info);
 }

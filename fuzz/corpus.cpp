@@ -13,6 +13,7 @@
 #include "kernel/input_error.hpp"
 #include "kernel/output_file.hpp"
 #include "kernel/point_io.hpp"
+#include "oracle/peers/json_fields.hpp"
 #include "predicates/backend_choice.hpp"
 
 namespace dtlab::fuzz {
@@ -50,7 +51,7 @@ void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build
   sidecar.replace_extension(".json");
   std::string boundary = "infinite";
   std::string order = "brio";
-  nlohmann::json threads = 1;
+  nlohmann::json threads = 1, eps = nullptr, eps_mode = nullptr;
   if (fs::is_regular_file(sidecar)) {
     std::ifstream in(sidecar, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -61,9 +62,11 @@ void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build
     };
     nlohmann::json j;
     try {
-      j = nlohmann::json::parse(text);
+      j = parse_unique_fields(text);
     } catch (const nlohmann::json::parse_error& e) {
       throw InputError(sidecar.string(), line_at(text, e.byte == 0 ? 0 : e.byte - 1), e.what());
+    } catch (const DuplicateField& e) {
+      throw InputError(sidecar.string(), field_line(e.field.c_str()), e.what());
     }
     if (!j.is_object()) throw InputError(sidecar.string(), 1, "expected a JSON object");
     const char* key = "";
@@ -75,6 +78,8 @@ void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build
       key = "case_seed", build.seed = j.value(key, build.seed);
       key = "order", order = j.value(key, order);
       key = "threads", threads = j.value(key, threads);
+      key = "eps", eps = j.value(key, eps);
+      key = "eps_mode", eps_mode = j.value(key, eps_mode);
     } catch (const nlohmann::json::exception& e) {
       throw InputError(sidecar.string(), field_line(key), std::string("'") + key + "': " + e.what());
     }
@@ -90,6 +95,13 @@ void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build
       throw InputError(sidecar.string(), field_line("threads"),
                        "bad threads " + threads.dump() + " (expected 1 to " + std::to_string(kMaxSidecarThreads) +
                            ": the build's thread count, 1 serial)");
+    if (!eps.is_null() && !(eps.is_number() && eps.get<double>() > 0 && std::isfinite(eps.get<double>())))
+      throw InputError(sidecar.string(), field_line("eps"), "bad eps " + eps.dump() + " (expected a positive number)");
+    if (!eps_mode.is_null() && eps_mode != "absolute" && eps_mode != "relative")
+      throw InputError(sidecar.string(), field_line("eps_mode"),
+                       "bad eps_mode " + eps_mode.dump() + " (expected absolute or relative)");
+    if (!eps.is_null()) spec.eps = eps.get<double>();  // older sidecars: the default band
+    if (!eps_mode.is_null()) spec.relative_eps = eps_mode == "relative";
     build.order = order == "input" ? InsertionOrder::input : InsertionOrder::brio;
     build.threads = threads.get<unsigned>();
   } else {
@@ -144,6 +156,9 @@ std::string write_corpus_entry(const std::string& out_dir, const CaseRecord& rec
       {"perturb", record.perturb ? "sos" : "none"},
       {"boundary", record.boundary},
       {"order", info.order},
+      {"eps", record.predicates == "epsilon" ? nlohmann::json(info.eps) : nlohmann::json(nullptr)},
+      {"eps_mode", record.predicates == "epsilon" ? nlohmann::json(info.relative_eps ? "relative" : "absolute")
+                                                  : nlohmann::json(nullptr)},
       {"threads", record.threads},
       {"outcome", record.run.outcome},
       {"detail", record.run.detail},

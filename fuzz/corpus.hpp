@@ -15,6 +15,9 @@ struct CorpusEntryInfo {
   std::size_t shrink_tests = 0;
   bool minimal = false;
   std::string order = "brio";  // the build's insertion order (order_label): the sidecar's "order"
+  // The epsilon backend's band (the sidecar's "eps", "eps_mode"; other backends: none).
+  double eps = 0;
+  bool relative_eps = false;
 };
 
 // <out_dir>/corpus/<name>.node and .json of a record (its case, backend and boundary):

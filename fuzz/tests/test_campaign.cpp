@@ -216,6 +216,13 @@ TEST_CASE("a corpus sidecar that is wrong is refused with its file and line", "[
               .rfind(std::string("3:bad threads ") + bad + " (expected 1 to 1024", 0) == 0);
   }
   CHECK(refusal("{\"threads\": 1024, \"order\": \"input\"}\n") == "accepted");
+  // The epsilon band the entry's campaign ran with.
+  CHECK(refusal("{\n  \"eps\": -1\n}\n") == "2:bad eps -1 (expected a positive number)");
+  CHECK(refusal("{\n  \"eps_mode\": \"loose\"\n}\n") == "2:bad eps_mode \"loose\" (expected absolute or relative)");
+  CHECK(refusal("{\"predicates\": \"epsilon\", \"eps\": 1e-6, \"eps_mode\": \"relative\"}\n") == "accepted");
+  CHECK(refusal("{\"predicates\": \"exact\", \"eps\": null, \"eps_mode\": null}\n") == "accepted");
+  // A field named twice: refused, not the last one kept.
+  CHECK(refusal("{\n  \"threads\": 2,\n  \"threads\": 1\n}\n") == "2:duplicate field 'threads'");
   // The refusal names the sidecar.
   std::ofstream(dir.path / "c.json") << "{\"threads\": 0}\n";
   try {
@@ -304,7 +311,7 @@ TEST_CASE("a threaded campaign's corpus records its threads and order and replay
   o.min_points = 16;
   o.max_points = 40;
   o.seed = 3;
-  o.backends = {spec("naive", false)};
+  o.backends = {spec("naive", false), PredicateSpec{"epsilon", 1e-3, true, false}};
   o.build.threads = 2;
   o.build.parallel_grain = 1;  // as dtlab fuzz --threads 2 sets it (use_build_threads)
   o.build.order = InsertionOrder::input;
@@ -313,7 +320,7 @@ TEST_CASE("a threaded campaign's corpus records its threads and order and replay
   o.out_dir = dir.path.string();
   const CampaignResult r = run_campaign(o);
   REQUIRE(r.failing() > 0);
-  std::size_t entries = 0;
+  std::size_t entries = 0, epsilon_entries = 0;
   for (const auto& rec : r.records) {
     if (rec.run.ok()) continue;
     ++entries;
@@ -321,7 +328,16 @@ TEST_CASE("a threaded campaign's corpus records its threads and order and replay
     const auto j = nlohmann::json::parse(in);
     CHECK(j.at("threads") == 2);
     CHECK(j.at("order") == "input");
+    // The epsilon band goes with an epsilon entry (it replayed at the default 1e-12 before).
+    if (rec.predicates == "epsilon") {
+      ++epsilon_entries;
+      CHECK(j.at("eps") == 1e-3);
+      CHECK(j.at("eps_mode") == "relative");
+    } else {
+      CHECK(j.at("eps").is_null());
+    }
   }
+  CHECK(epsilon_entries > 0);
   const auto replayed = replay_corpus(dir.path.string(), {});
   REQUIRE(replayed.size() == entries);
   for (const auto& p : replayed) {
