@@ -108,14 +108,18 @@ std::vector<std::uint32_t> VoronoiNeighbors::pair_by_table(const FacetPairClassi
 // interior facet once, from its lower tet, classified in parallel; the flagged tets
 // marked afterwards (per-chunk lists, no shared writes). No sort of all facets.
 std::vector<std::uint32_t> VoronoiNeighbors::pair_by_adjacency(const FacetPairClassifier& cospherical,
-                                                               unsigned threads) {
+                                                               std::span<const TetSphere> spheres, unsigned threads) {
   const auto& tets = dt_->tets;
   const auto& adj = dt_->adjacency;
   constexpr std::size_t kChunk = 4096;
   std::vector<std::vector<std::uint32_t>> flagged((tets.size() + kChunk - 1) / kChunk);
+  constexpr std::size_t kAhead = 8;  // tets ahead whose neighbours' spheres are fetched
   parallel_chunks(tets.size(), threads, kChunk, [&](std::size_t b, std::size_t e, unsigned) {
     auto& out = flagged[b / kChunk];
-    for (std::size_t t = b; t < e; ++t)
+    for (std::size_t t = b; t < e; ++t) {
+      if (t + kAhead < e)
+        for (int f = 0; f < 4; ++f)
+          if (const std::uint32_t m = adj[4 * (t + kAhead) + f]; m != kNone) __builtin_prefetch(&spheres[m / 4]);
       for (int f = 0; f < 4; ++f) {
         const std::uint32_t m = adj[4 * t + f];
         if (m == kNone || m / 4 < t) continue;
@@ -124,6 +128,7 @@ std::vector<std::uint32_t> VoronoiNeighbors::pair_by_adjacency(const FacetPairCl
             static_cast<std::uint32_t>(4 * t + f), m, {v[0], v[1], v[2]}, tets[t][f], tets[m / 4][m % 4], false};
         if (cospherical(pair)) out.push_back(static_cast<std::uint32_t>(t)), out.push_back(m / 4);
       }
+    }
   });
   for (const auto& chunk : flagged)
     for (const std::uint32_t t : chunk) degenerate_[t] = 1;
@@ -148,7 +153,7 @@ void VoronoiNeighbors::build_tables(unsigned threads) {
     return pred.insphere(p[f.v[0]], p[f.v[1]], p[f.v[2]], p[f.apex1], p[f.apex2]) == 0 ? 1 : 0;
   };
   const std::vector<std::uint32_t> boundary_refs = dt_->adjacency.size() == 4 * dt_->tets.size()
-                                                       ? pair_by_adjacency(cospherical, threads)
+                                                       ? pair_by_adjacency(cospherical, spheres, threads)
                                                        : pair_by_table(cospherical, threads);
   // Hull facets by edge: the third vertex and the tet's fourth of both facets at an edge.
   struct Side {

@@ -87,7 +87,9 @@ class VoronoiNeighbors {
   bool ring_collinear(std::uint32_t a, std::uint32_t b, NeighborScratch& s) const;
   void build_tables(unsigned threads);
   std::vector<std::uint32_t> pair_by_table(const FacetPairClassifier& cospherical, unsigned threads);
-  std::vector<std::uint32_t> pair_by_adjacency(const FacetPairClassifier& cospherical, unsigned threads);
+  // `spheres`: what `cospherical` reads of each tet, fetched ahead of the walk.
+  std::vector<std::uint32_t> pair_by_adjacency(const FacetPairClassifier& cospherical,
+                                               std::span<const TetSphere> spheres, unsigned threads);
   void classify_tets(unsigned threads, std::span<const TetSphere> spheres);
 
   std::vector<std::uint32_t> rep_;
