@@ -37,7 +37,8 @@ struct KernelArgs : KernelOptions {
 
   void add_to(CLI::App& app, unsigned which = kAllKernelOptions);
   BuildOptions build_options() const;  // throws CLI::ValidationError on a bad --boundary
-  unsigned build_threads() const { return threads_option && threads_option->count() > 0 ? threads : 1; }
+  bool threads_given() const { return threads_option && threads_option->count() > 0; }
+  unsigned build_threads() const { return threads_given() ? threads : 1; }
 };
 
 }  // namespace dtlab::cli

@@ -100,7 +100,7 @@ int run_tetra(const TetraArgs& a) {
   BuildOptions options = a.kernel.build_options();
   // With --threads, the threaded build's order on any count: `--threads 1` writes what
   // `--threads 2` writes (kernel/build.hpp, canonical_order).
-  options.canonical_order = a.kernel.threads_option && a.kernel.threads_option->count() > 0;
+  options.canonical_order = a.kernel.threads_given();
   const auto start = std::chrono::steady_clock::now();
   if (!a.out.empty()) check_out_prefix(a.out);
   PointFile in = read_input_points(a.input);

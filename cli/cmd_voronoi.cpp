@@ -116,8 +116,9 @@ int run_voronoi(const VoronoiArgs& a) {
   o.build = a.kernel.build_options();
   o.threads = a.threads;
   // The Delaunay build too, when --threads is given (as in tetra: kernel/README.md).
-  o.build.threads = a.threads_option && a.threads_option->count() > 0 ? a.threads : 1;
-  o.build.canonical_order = a.threads_option && a.threads_option->count() > 0;  // the same tets' order at any N
+  const bool threads_given = a.threads_option && a.threads_option->count() > 0;
+  o.build.threads = threads_given ? a.threads : 1;
+  o.build.canonical_order = threads_given;  // the same tets' order at any N, 1 included
   o.keep_dt = a.against != "none";  // the checker reads the relation from our DT (exact backends only)
   if (!a.box.empty()) {
     if (a.box.size() != 6 || !(a.box[0] < a.box[3] && a.box[1] < a.box[4] && a.box[2] < a.box[5]))

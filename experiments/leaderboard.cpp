@@ -18,6 +18,7 @@
 #include "experiments/shrink_stage.hpp"
 #include "experiments/thesis_parts.hpp"
 #include "experiments/wilson_interval.hpp"
+#include "fuzz/campaign.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/work_queue.hpp"
 #include "kernel/input_error.hpp"
@@ -173,10 +174,8 @@ class Leaderboard {
   void refuse_a_campaign_folder() const {
     std::error_code ec;
     bool campaign = fs::exists(dir / "settings.json", ec);
-    for (fs::directory_iterator it(dir, ec), end; !campaign && !ec && it != end; it.increment(ec)) {
-      const std::string name = it->path().filename().string();
-      campaign = name.rfind("results", 0) == 0 && it->path().extension() == ".jsonl";
-    }
+    for (fs::directory_iterator it(dir, ec), end; !campaign && !ec && it != end; it.increment(ec))
+      campaign = fuzz::is_results_file(it->path().filename().string());
     if (campaign)
       throw InputError(dir.string(), 0,
                        "holds a fuzz campaign (settings.json, results*.jsonl): the leaderboard would remove its "

@@ -53,14 +53,16 @@ std::size_t case_points(std::uint64_t case_seed, std::size_t min_points, std::si
   return min_points + mix64(case_seed ^ 0x706f696e7473ULL) % (max_points - min_points + 1);
 }
 
+bool is_results_file(const std::string& file_name) {
+  return file_name.rfind("results", 0) == 0 && fs::path(file_name).extension() == ".jsonl";
+}
+
 std::vector<CaseRecord> read_records(const std::string& out_dir) {
   std::vector<CaseRecord> records;
   if (!fs::is_directory(out_dir)) return records;
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(out_dir)) {
-    const std::string name = e.path().filename().string();
-    if (e.is_regular_file() && name.rfind("results", 0) == 0 && e.path().extension() == ".jsonl")
-      files.push_back(e.path());
+    if (e.is_regular_file() && is_results_file(e.path().filename().string())) files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {

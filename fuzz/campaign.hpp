@@ -73,4 +73,7 @@ CampaignResult run_campaign(const CampaignOptions& options);
 // lines that do not parse (a run killed mid-write) are skipped.
 std::vector<CaseRecord> read_records(const std::string& out_dir);
 
+// A campaign's results file by its name: results*.jsonl (one per shard).
+bool is_results_file(const std::string& file_name);
+
 }  // namespace dtlab::fuzz

@@ -48,9 +48,7 @@ std::string results_without_settings(const std::string& dir) {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     const std::string name = e.path().filename().string();
-    if (name.rfind("results", 0) == 0 && e.path().extension() == ".jsonl" && e.is_regular_file(ec) &&
-        e.file_size(ec) > 0)
-      return name;
+    if (is_results_file(name) && e.is_regular_file(ec) && e.file_size(ec) > 0) return name;
   }
   return "";
 }

@@ -290,8 +290,10 @@ class Judge {
       auto& slot = cell_of_[nb_->rep(static_cast<std::uint32_t>(s))];
       if (slot >= 0)
         add(p, VoronoiDefect::extra_cell, s, cells_.site(slot), 0, "a second cell for this site or a copy of it");
-      else
-        slot = static_cast<std::int64_t>(c), primary_[c] = 1;
+      else {
+        slot = static_cast<std::int64_t>(c);
+        primary_[c] = 1;
+      }
     }
   }
 
@@ -393,11 +395,16 @@ class Judge {
     }
   }
 
-  // A site without a cell: missing when inside the box, or when its exact cell meets it.
-  void judge_cellless(std::uint32_t a, Partial& p, Scratch& s) const {
+  // Site a's exact neighbours into s.pos (positive faces) and s.deg (zero-area), counted.
+  void exact_neighbors(std::uint32_t a, Partial& p, Scratch& s) const {
     nb_->neighbors(a, s.pos, s.deg, s.ring);
     p.voronoi_edges += s.pos.size();
     p.degenerate_edges += s.deg.size();
+  }
+
+  // A site without a cell: missing when inside the box, or when its exact cell meets it.
+  void judge_cellless(std::uint32_t a, Partial& p, Scratch& s) const {
+    exact_neighbors(a, p, s);
     if (box_.contains(sites_[a])) {
       add(p, VoronoiDefect::missing_cell, a, -1, 0);
       return;
@@ -411,9 +418,7 @@ class Judge {
 
   // Stage 2: the neighbour set of representative site a against its cell c's.
   void judge_site(std::uint32_t a, std::size_t c, Partial& p, Scratch& s) const {
-    nb_->neighbors(a, s.pos, s.deg, s.ring);
-    p.voronoi_edges += s.pos.size();
-    p.degenerate_edges += s.deg.size();
+    exact_neighbors(a, p, s);
     const VoronoiCell cell = cells_.view(c);
     tool_faces(cell, a, s.tf, p);
     std::size_t i = 0;
