@@ -158,18 +158,21 @@ inline double rounded_plane_tolerance(double e, double R, double D, double area2
 // does not define) are not tested, and `*skipped` (if given) is set when there was
 // one; otherwise they are a defect ("zero-area face"). With `vertex_error` e > 0 a
 // face's tolerance is max(tol, rounded_plane_tolerance(e, ...)) (R: the face's farthest
-// corner from its first, D: the diagonal of the cell's vertices' bounding box), and `*widened` (if given) is set when that was more
-// than tol for a face tested; e = 0 tests with tol alone. The vertices are copied once
-// per cell into per-thread coordinate arrays for any_above_plane.
-inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip_tiny = false,
-                                     bool* skipped = nullptr, double vertex_error = 0, bool* widened = nullptr) {
+// corner from its first, D: the diagonal of the cell's vertices' bounding box), and `*widened` (if given) is set when
+// that was more than tol for a face tested; e = 0 tests with tol alone. The vertices are copied once per cell into
+// per-thread coordinate arrays for any_above_plane. With `volume` given and every face measured (the cell passed),
+// *volume is set to the cell's volume from the faces' normals: sum over faces of (o_f - v0) . n_f / 6 with o_f the
+// face's first corner and n_f its fan normal, cell_volume's fans (voronoi_check/tool_cells.hpp) summed in another
+// order; left as is when the test stopped early.
+inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip_tiny = false, bool* skipped = nullptr,
+                                     double vertex_error = 0, bool* widened = nullptr, double* volume = nullptr) {
   using namespace vor;
   thread_local std::vector<double> xs, ys, zs;
   const std::size_t nv = c.vertices.size();
   xs.resize(nv), ys.resize(nv), zs.resize(nv);
   double *X = xs.data(), *Y = ys.data(), *Z = zs.data();
   for (std::size_t i = 0; i < nv; ++i) X[i] = c.vertices[i].x, Y[i] = c.vertices[i].y, Z[i] = c.vertices[i].z;
-  double D = 0;
+  double D = 0, six_volume = 0;
   if (vertex_error > 0 && nv > 0) {
     Point3 lo = c.vertices[0], hi = c.vertices[0];
     for (const auto& v : c.vertices) lo = min3(lo, v), hi = max3(hi, v);
@@ -180,6 +183,7 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
     Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
     for (auto k = b + 1; k + 1 < e; ++k)
       n = n + cross(c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
+    if (volume) six_volume += dot(o - c.vertices[0], n);
     const double area2 = norm(n);
     if (area2 <= tol * tol) {
       if (!skip_tiny) return "zero-area face";
@@ -204,6 +208,7 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
       if (std::abs(dot(n, c.vertices[c.face_vertices[k]] - o)) > t) return "non-planar face";
     if (any_above_plane(X, Y, Z, nv, n, o, t)) return "not convex";
   }
+  if (volume) *volume = six_volume / 6;
   return {};
 }
 

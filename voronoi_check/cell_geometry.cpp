@@ -62,6 +62,9 @@ struct VertexScratch {
   std::vector<char> face_ok, face_ld;
   std::vector<FilterPlane> filter;
   std::vector<std::size_t> planes;  // the faces at one vertex with a plane
+  BoundBatch batch;                 // the vertices on three planes, for the filter
+  std::vector<std::uint32_t> batched;
+  std::vector<double> bound;
 };
 
 // The distance of vertex p (relative to the site) to the point where the three
@@ -114,21 +117,37 @@ void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<cons
   s.face_ld.assign(nf, 0);
   s.filter.resize(nf);
   for (std::size_t f = 0; f < nf; ++f) s.face_ok[f] = filter_plane(c.face_neighbor[f], sites, st, box, s.filter[f]);
-  for (std::size_t v = 0; v < c.vertices.size(); ++v) {
+  // The faces with a plane at vertex v (at most 8), into s.planes.
+  const auto gather_planes = [&](std::size_t v) {
     s.planes.clear();
     for (auto f : in.faces(static_cast<std::uint32_t>(v))) {
       if (s.planes.size() == 8) break;
       if (s.face_ok[f]) s.planes.push_back(f);
     }
-    const auto& pl = s.planes;
-    if (below >= 0 && pl.size() == 3) {
-      const double u = vertex_distance_bound(c.vertices[v], st, s.filter[pl[0]], s.filter[pl[1]], s.filter[pl[2]]);
+  };
+  // The filter first, on every vertex of three planes at once; the solve for the rest.
+  s.batch.start(c.vertices.size());
+  s.batched.clear();
+  if (below >= 0)
+    for (std::size_t v = 0; v < c.vertices.size(); ++v) {
+      gather_planes(v);
+      if (s.planes.size() != 3) continue;
+      s.batch.add(c.vertices[v], st, s.filter[s.planes[0]], s.filter[s.planes[1]], s.filter[s.planes[2]]);
+      s.batched.push_back(static_cast<std::uint32_t>(v));
+    }
+  s.bound.resize(s.batch.size());
+  s.batch.bounds(s.bound);
+  std::size_t next = 0;  // the next batched vertex
+  for (std::size_t v = 0; v < c.vertices.size(); ++v) {
+    if (next < s.batched.size() && s.batched[next] == v) {
+      const double u = s.bound[next++];
       if (u >= 0 && u <= below) {
         out[v] = VertexError{0, true, true};
         continue;
       }
     }
-    for (auto f : pl)
+    gather_planes(v);
+    for (auto f : s.planes)
       if (!s.face_ld[f]) {
         plane_of(c.face_neighbor[f], sites, st, box, s.face_plane[f]);
         s.face_norm[f] = lnorm(s.face_plane[f].n);

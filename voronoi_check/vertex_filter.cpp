@@ -1,6 +1,7 @@
 #include "voronoi_check/vertex_filter.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 // Compiled with -ffp-contract=off (CMakeLists.txt): the counts below assume one
@@ -93,66 +94,134 @@ bool filter_plane(std::int32_t tag, std::span<const Point3> sites, const Point3&
 
 namespace {
 
-inline void cross(const double* a, const double* b, double* out) {
+[[gnu::always_inline]] inline void cross(const double* a, const double* b, double* out) {
   out[0] = a[1] * b[2] - a[2] * b[1];
   out[1] = a[2] * b[0] - a[0] * b[2];
   out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
 // |a_1 b_2| + |a_2 b_1|, ...: the cross product's terms in absolute value.
-inline void abs_cross(const double* a, const double* b, double* out) {
+[[gnu::always_inline]] inline void abs_cross(const double* a, const double* b, double* out) {
   out[0] = std::abs(a[1] * b[2]) + std::abs(a[2] * b[1]);
   out[1] = std::abs(a[2] * b[0]) + std::abs(a[0] * b[2]);
   out[2] = std::abs(a[0] * b[1]) + std::abs(a[1] * b[0]);
 }
 
-}  // namespace
+// The bound's arithmetic for one lane, without a branch (every condition of the
+// derivation folded into `ok`), so that BoundBatch's loop runs it on several lanes per
+// instruction: the same operations in the same order whatever the width.
+struct MeetInputs {
+  double a[3], b[3], d[3];  // the normals
+  double ca, cb, cd;        // the offsets
+  double norms;             // the product of the three norms, as planes_meet forms it
+};
 
-bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& d, PlanesMeet& out) {
+[[gnu::always_inline]] inline bool meet_lane(const MeetInputs& in, PlanesMeet& out) {
   constexpr double u = 0x1p-53;
-  if (!(a.ok && b.ok && d.ok)) return false;
-  out.norms = a.norm * b.norm * d.norm;
-  if (!(out.norms >= 0x1p-900 && out.norms <= 0x1p900)) return false;
+  const double *a = in.a, *b = in.b, *d = in.d;
+  out.norms = in.norms;
+  bool ok = (out.norms >= 0x1p-900) & (out.norms <= 0x1p900);
   double bd[3], da[3], ab[3], pbd[3], pda[3], pab[3];
-  cross(b.n, d.n, bd);
-  abs_cross(b.n, d.n, pbd);
-  const double det = a.n[0] * bd[0] + a.n[1] * bd[1] + a.n[2] * bd[2];
-  const double p_d = std::abs(a.n[0]) * pbd[0] + std::abs(a.n[1]) * pbd[1] + std::abs(a.n[2]) * pbd[2];
+  cross(b, d, bd);
+  abs_cross(b, d, pbd);
+  const double det = a[0] * bd[0] + a[1] * bd[1] + a[2] * bd[2];
+  const double p_d = std::abs(a[0]) * pbd[0] + std::abs(a[1]) * pbd[1] + std::abs(a[2]) * pbd[2];
   out.det = std::abs(det), out.det_error = 9 * u * p_d;
-  if (!(out.det >= 0x1p-1000 && out.det_error <= 0x1p-10 * out.det)) return false;
-  cross(d.n, a.n, da);
-  cross(a.n, b.n, ab);
-  abs_cross(d.n, a.n, pda);
-  abs_cross(a.n, b.n, pab);
-  const double ca = std::abs(a.c), cb = std::abs(b.c), cd = std::abs(d.c);
+  ok &= (out.det >= 0x1p-1000) & (out.det_error <= 0x1p-10 * out.det);
+  cross(d, a, da);
+  cross(a, b, ab);
+  abs_cross(d, a, pda);
+  abs_cross(a, b, pab);
+  const double ca = std::abs(in.ca), cb = std::abs(in.cb), cd = std::abs(in.cd);
   const double inv = 1 / det, inv_abs = std::abs(inv);
   for (int j = 0; j < 3; ++j) {
     const double p_n = ca * pbd[j] + cb * pda[j] + cd * pab[j];
-    if (!(p_n <= 0x1p900)) return false;
-    out.x[j] = (a.c * bd[j] + b.c * da[j] + d.c * ab[j]) * inv;
+    ok &= p_n <= 0x1p900;
+    out.x[j] = (in.ca * bd[j] + in.cb * da[j] + in.cd * ab[j]) * inv;
     const double ax = std::abs(out.x[j]);
     // An underflowed term of p_n (below 2^-900) errs by far less than u 2^-900.
     out.error[j] = 1.01 * (13 * u * std::max(p_n, 0x1p-900) + ax * out.det_error) * inv_abs + 2.02 * u * ax;
-    if (!std::isfinite(out.error[j])) return false;
+    ok &= std::abs(out.error[j]) <= DBL_MAX;  // finite
   }
-  return true;
+  return ok;
 }
 
-double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
-                             const FilterPlane& d) {
+// vertex_distance_bound's last steps for one lane: t = p - site; -1 when not certain.
+[[gnu::always_inline]] inline double bound_lane(const MeetInputs& in, const double t[3]) {
   constexpr double u = 0x1p-53;
   PlanesMeet m;
-  if (!planes_meet(a, b, d, m) || !(m.det - m.det_error > 2e-9 * m.norms)) return -1;
-  const double t[3] = {p.x - site.x, p.y - site.y, p.z - site.z};
+  bool ok = meet_lane(in, m) & (m.det - m.det_error > 2e-9 * m.norms);
   double dist = 0, bound = 0;
   for (int j = 0; j < 3; ++j) {
     const double ae = std::abs(t[j] - m.x[j]);
     const double bj = m.error[j] + 1.01 * u * (std::abs(t[j]) + ae);
-    if (!std::isfinite(ae) || !std::isfinite(bj)) return -1;
+    ok &= (ae <= DBL_MAX) & (std::abs(bj) <= DBL_MAX);
     dist = std::max(dist, ae);
     bound = std::max(bound, bj);
   }
-  return dist * (1 + 4 * u) + 1.01 * bound;
+  const double r = dist * (1 + 4 * u) + 1.01 * bound;
+  return ok ? r : -1;
+}
+
+MeetInputs meet_inputs(const FilterPlane& a, const FilterPlane& b, const FilterPlane& d) {
+  MeetInputs in;
+  for (int j = 0; j < 3; ++j) in.a[j] = a.n[j], in.b[j] = b.n[j], in.d[j] = d.n[j];
+  in.ca = a.c, in.cb = b.c, in.cd = d.c;
+  in.norms = a.norm * b.norm * d.norm;
+  return in;
+}
+
+}  // namespace
+
+bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& d, PlanesMeet& out) {
+  return a.ok && b.ok && d.ok && meet_lane(meet_inputs(a, b, d), out);
+}
+
+double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
+                             const FilterPlane& d) {
+  if (!(a.ok && b.ok && d.ok)) return -1;
+  const double t[3] = {p.x - site.x, p.y - site.y, p.z - site.z};
+  return bound_lane(meet_inputs(a, b, d), t);
+}
+
+void BoundBatch::start(std::size_t lanes) {
+  size_ = 0;
+  if (lanes > room_) {
+    room_ = std::max(lanes, 2 * room_);
+    data_.resize(count_ * room_);
+  }
+}
+
+bool BoundBatch::add(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
+                     const FilterPlane& d) {
+  if (size_ == room_) return false;
+  const MeetInputs in = meet_inputs(a, b, d);
+  double* f = data_.data() + size_++;
+  const std::size_t r = room_;
+  for (int j = 0; j < 3; ++j) f[j * r] = in.a[j], f[(3 + j) * r] = in.b[j], f[(6 + j) * r] = in.d[j];
+  f[9 * r] = in.ca, f[10 * r] = in.cb, f[11 * r] = in.cd;
+  f[12 * r] = a.ok && b.ok && d.ok ? in.norms : NAN;  // a plane not ok: no bound (NaN fails every test)
+  f[13 * r] = p.x - site.x, f[14 * r] = p.y - site.y, f[15 * r] = p.z - site.z;
+  return true;
+}
+
+// Cloned for AVX2 (four lanes) beside the default SSE2 build (two): no FMA in either,
+// so every lane rounds as vertex_distance_bound does.
+[[gnu::target_clones("avx2", "default")]] static void bounds_of(const double* const* f, std::size_t n,
+                                                                double* __restrict out) {
+  for (std::size_t k = 0; k < n; ++k) {
+    MeetInputs in;
+    for (int j = 0; j < 3; ++j) in.a[j] = f[j][k], in.b[j] = f[3 + j][k], in.d[j] = f[6 + j][k];
+    in.ca = f[9][k], in.cb = f[10][k], in.cd = f[11][k], in.norms = f[12][k];
+    const double t[3] = {f[13][k], f[14][k], f[15][k]};
+    out[k] = bound_lane(in, t);
+  }
+}
+
+void BoundBatch::bounds(std::span<double> out) const {
+  const double* f[count_];
+  for (int j = 0; j < count_; ++j) f[j] = data_.data() + j * room_;
+  bounds_of(f, std::min(size_, out.size()), out.data());
 }
 
 }  // namespace dtlab

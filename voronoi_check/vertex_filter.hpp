@@ -7,6 +7,7 @@
 // bit for bit. The bound and its derivation: vertex_filter.cpp.
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "voronoi/box.hpp"
 
@@ -45,5 +46,24 @@ bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& 
 // only when both are certain, else a negative value (the caller then runs the solve).
 double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
                              const FilterPlane& d);
+
+// vertex_distance_bound for many vertices at once: the lanes are stored field by field
+// and bounds() runs them through one loop, several lanes per instruction (SSE2, or
+// AVX2 where the machine has it), each lane bit for bit vertex_distance_bound's value.
+class BoundBatch {
+ public:
+  // Empties the batch, with room for `lanes` lanes (no allocation once it is large enough).
+  void start(std::size_t lanes);
+  // A lane, when there is room (false: the batch is full).
+  bool add(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b, const FilterPlane& d);
+  std::size_t size() const { return size_; }
+  // out[k]: the bound of the k-th lane added (out holds at least size() values).
+  void bounds(std::span<double> out) const;
+
+ private:
+  static constexpr int count_ = 16;  // a, b, d normals (9), offsets (3), norms, p - site (3)
+  std::vector<double> data_;         // field f of lane k at f * room_ + k
+  std::size_t room_ = 0, size_ = 0;
+};
 
 }  // namespace dtlab

@@ -475,13 +475,14 @@ class Judge {
     prefetch_face_sites(c, sites_);
     p.faces += c.face_count();
     p.vertices += c.vertices.size();
-    p.volume_sum += cell_volume(c);
     cell_incidence(c, s.incidence);
+    double volume = NAN;  // from the convexity test's face normals, when it ran through
     std::string why = check_cell_closed(c, s.incidence);
     if (!why.empty())
       ++p.not_closed;
     else
-      why = check_cell_convex(c, convex_tol_, true, nullptr, vertex_error_, &p.convex_widened);
+      why = check_cell_convex(c, convex_tol_, true, nullptr, vertex_error_, &p.convex_widened, &volume);
+    p.volume_sum += std::isnan(volume) ? cell_volume(c) : volume;
     if (!why.empty()) add(p, VoronoiDefect::not_convex, site, -1, 0, why);
     if (site < 0 || static_cast<std::size_t>(site) >= sites_.size()) return;
     s.errors.resize(c.vertices.size());

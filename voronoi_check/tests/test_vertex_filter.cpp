@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <random>
 #include <string>
@@ -40,7 +41,7 @@ ToolCells moved(const VoronoiDiagram& vd, int ulps, std::uint64_t seed) {
 }
 
 struct Tally {
-  std::size_t bounded = 0, simple = 0, skipped = 0;
+  std::size_t bounded = 0, simple = 0, skipped = 0, batched = 0;
 };
 
 // Every vertex on exactly three faces: the filter's bound against the long double distance.
@@ -55,6 +56,9 @@ void check_cells(std::span<const Point3> sites, const vor::Box& box, const ToolC
     for (std::size_t f = 0; f < c.face_count(); ++f)
       for (auto i = c.face_offsets[f]; i < c.face_offsets[f + 1]; ++i) at[c.face_vertices[i]].push_back(f);
     double largest = 0;
+    BoundBatch batch;
+    batch.start(c.vertices.size());
+    std::vector<double> one_by_one;
     for (std::size_t v = 0; v < c.vertices.size(); ++v) {
       if (at[v].size() != 3) continue;
       ++tally.simple;
@@ -63,6 +67,8 @@ void check_cells(std::span<const Point3> sites, const vor::Box& box, const ToolC
       for (int i = 0; i < 3; ++i) ok &= filter_plane(c.face_neighbor[at[v][i]], sites, sites[site], box, pl[i]);
       if (!ok) continue;
       const double u = vertex_distance_bound(c.vertices[v], sites[site], pl[0], pl[1], pl[2]);
+      REQUIRE(batch.add(c.vertices[v], sites[site], pl[0], pl[1], pl[2]));
+      one_by_one.push_back(u);
       if (u < 0) continue;
       ++tally.bounded;
       INFO("cell " << k << " vertex " << v << " bound " << u << " distance " << exact[v].distance);
@@ -70,6 +76,13 @@ void check_cells(std::span<const Point3> sites, const vor::Box& box, const ToolC
       REQUIRE(exact[v].distance <= u);
       largest = std::max(largest, exact[v].distance);
     }
+    // The batch (several lanes per instruction) gives every bound bit for bit, -1 included.
+    std::vector<double> batched(batch.size());
+    batch.bounds(batched);
+    REQUIRE(batched.size() == one_by_one.size());
+    for (std::size_t i = 0; i < batched.size(); ++i)
+      REQUIRE(std::bit_cast<std::uint64_t>(batched[i]) == std::bit_cast<std::uint64_t>(one_by_one[i]));
+    tally.batched += batched.size();
     // With the cell's own largest distance as the threshold: the same numbers.
     filtered.resize(c.vertices.size());
     vertex_errors(c, sites, site, box, filtered, largest);
@@ -100,7 +113,29 @@ TEST_CASE("vertex filter: the bound lies above the long double distance on unifo
     CHECK(tally.simple > 10000);
     CHECK(tally.bounded > tally.simple * 9 / 10);  // nearly every vertex of uniform sites
     CHECK(tally.skipped > 0);
+    CHECK(tally.batched == tally.simple);
   }
+}
+
+TEST_CASE("vertex filter: a full batch refuses a lane", "[vertex-filter]") {
+  const std::vector<Point3> sites{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  FilterPlane pl[3];
+  for (int i = 0; i < 3; ++i) REQUIRE(filter_plane(i + 1, sites, sites[0], test::kBox, pl[i]));
+  BoundBatch batch;
+  batch.start(2);
+  const Point3 corner{0.5, 0.5, 0.5};
+  CHECK(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
+  CHECK(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
+  CHECK_FALSE(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
+  std::vector<double> out(batch.size());
+  batch.bounds(out);
+  CHECK(out == std::vector<double>(2, vertex_distance_bound(corner, sites[0], pl[0], pl[1], pl[2])));
+  CHECK(out[0] >= 0);
+  CHECK(out[0] < 1e-14);  // the corner is where the three bisectors meet, exactly
+  batch.start(1);         // emptied, and the room it has is kept
+  CHECK(batch.size() == 0);
+  CHECK(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
+  CHECK(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
 }
 
 TEST_CASE("vertex filter: degenerate and badly conditioned families", "[vertex-filter]") {

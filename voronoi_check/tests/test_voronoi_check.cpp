@@ -3,6 +3,7 @@
 
 #include "sites.hpp"
 
+#include "voronoi/cell_check.hpp"
 #include "voronoi/convex_cell.hpp"
 #include "voronoi_check/voronoi_check.hpp"
 
@@ -240,4 +241,26 @@ TEST_CASE("coplanar or non-finite sites are refused") {
   CHECK_THROWS_AS(check_voronoi(sites, kBox, ToolCells{}), std::invalid_argument);
   CHECK_THROWS_AS(check_voronoi(random_sites(10, 4), vor::Box{{0, 0, 0}, {0, 1, 1}}, ToolCells{}),
                   std::invalid_argument);
+}
+
+TEST_CASE("the convexity test's volume is cell_volume's, and is left unset when the test stops early") {
+  const auto sites = random_sites(300, 11);
+  const auto vd = cells_of(sites);
+  const ToolCells t = tool_cells_of(vd);
+  double fused_sum = 0, fanned_sum = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const VoronoiCell c = t.view(k);
+    double volume = NAN;
+    REQUIRE(check_cell_convex(c, 1e-12, true, nullptr, 0, nullptr, &volume).empty());
+    const double fanned = cell_volume(c);
+    CHECK(std::abs(volume - fanned) <= 1e-13 * fanned);
+    fused_sum += volume, fanned_sum += fanned;
+  }
+  CHECK(std::abs(fused_sum - kBox.volume()) <= 1e-12 * kBox.volume());
+  CHECK(std::abs(fanned_sum - kBox.volume()) <= 1e-12 * kBox.volume());
+  // A vertex pushed far out: not convex, and no volume from a test cut short.
+  const ToolCells bent = mutated(t, 0, [](auto&, auto& vs, auto&, auto&, auto&) { vs[0] = 2.0 * vs[0] - vs[1]; });
+  double volume = NAN;
+  CHECK_FALSE(check_cell_convex(bent.view(0), 1e-12, true, nullptr, 0, nullptr, &volume).empty());
+  CHECK(std::isnan(volume));
 }
