@@ -192,19 +192,6 @@ void BoundBatch::start(std::size_t lanes) {
   }
 }
 
-bool BoundBatch::add(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
-                     const FilterPlane& d) {
-  if (size_ == room_) return false;
-  const MeetInputs in = meet_inputs(a, b, d);
-  double* f = data_.data() + size_++;
-  const std::size_t r = room_;
-  for (int j = 0; j < 3; ++j) f[j * r] = in.a[j], f[(3 + j) * r] = in.b[j], f[(6 + j) * r] = in.d[j];
-  f[9 * r] = in.ca, f[10 * r] = in.cb, f[11 * r] = in.cd;
-  f[12 * r] = a.ok && b.ok && d.ok ? in.norms : NAN;  // a plane not ok: no bound (NaN fails every test)
-  f[13 * r] = p.x - site.x, f[14 * r] = p.y - site.y, f[15 * r] = p.z - site.z;
-  return true;
-}
-
 // Cloned for AVX2 (four lanes) beside the default SSE2 build (two): no FMA in either,
 // so every lane rounds as vertex_distance_bound does.
 [[gnu::target_clones("avx2", "default")]] static void bounds_of(const double* const* f, std::size_t n,

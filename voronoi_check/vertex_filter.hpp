@@ -5,6 +5,7 @@
 // no farther than the largest distance already measured (and within the tolerance)
 // needs no long double work: the reported numbers stay those of the long double path,
 // bit for bit. The bound and its derivation: vertex_filter.cpp.
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -65,5 +66,18 @@ class BoundBatch {
   std::vector<double> data_;         // field f of lane k at f * room_ + k
   std::size_t room_ = 0, size_ = 0;
 };
+
+// Inline: called per vertex. The norms' product as planes_meet forms it ((a b) d).
+inline bool BoundBatch::add(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
+                            const FilterPlane& d) {
+  if (size_ == room_) return false;
+  double* f = data_.data() + size_++;
+  const std::size_t r = room_;
+  for (int j = 0; j < 3; ++j) f[j * r] = a.n[j], f[(3 + j) * r] = b.n[j], f[(6 + j) * r] = d.n[j];
+  f[9 * r] = a.c, f[10 * r] = b.c, f[11 * r] = d.c;
+  f[12 * r] = a.ok && b.ok && d.ok ? a.norm * b.norm * d.norm : NAN;  // a plane not ok: NaN fails every test
+  f[13 * r] = p.x - site.x, f[14 * r] = p.y - site.y, f[15 * r] = p.z - site.z;
+  return true;
+}
 
 }  // namespace dtlab

@@ -46,7 +46,8 @@ std::vector<std::uint32_t> site_representatives(std::span<const Point3> p) {
   return rep;
 }
 
-std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3> sites, unsigned threads) {
+std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3> sites, unsigned threads,
+                                                         std::size_t* duplicates) {
   for (const auto& p : sites)
     if (!is_finite(p)) throw std::invalid_argument("a site is not finite");
   BuildOptions bo;
@@ -59,14 +60,22 @@ std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3>
       throw std::invalid_argument("fewer than 4 distinct sites, or all coplanar: no Delaunay tetrahedralization");
     throw std::runtime_error(std::string("Delaunay build failed: ") + failure_name(r.failure->kind));
   }
+  if (duplicates) *duplicates = r.duplicates.size();
   return std::make_shared<const Tetrahedralization>(std::move(r.mesh));
 }
 
 VoronoiNeighbors::VoronoiNeighbors(std::span<const Point3> sites, unsigned threads) {
   const auto t0 = Clock::now();
-  dt_ = exact_delaunay(sites, threads);
+  std::size_t duplicates = 0;
+  dt_ = exact_delaunay(sites, threads, &duplicates);
   seconds_dt = since(t0);
-  rep_ = site_representatives(sites);
+  // The build found every site equal to an earlier one (exact comparisons): with none,
+  // each site is its own representative and the sort is not needed.
+  if (duplicates == 0) {
+    rep_.resize(sites.size());
+    std::iota(rep_.begin(), rep_.end(), 0u);
+  } else
+    rep_ = site_representatives(sites);
   const auto t1 = Clock::now();
   build_tables(threads);
   seconds_tables = since(t1);
@@ -158,6 +167,11 @@ void VoronoiNeighbors::build_tables(unsigned threads) {
   const std::vector<std::uint32_t> boundary_refs = dt_->adjacency.size() == 4 * dt_->tets.size()
                                                        ? pair_by_adjacency(cospherical, spheres, threads)
                                                        : pair_by_table(cospherical, threads);
+  // Per vertex: some tet of its star is degenerate (one byte read per site by neighbors()).
+  degenerate_star_.assign(p.size(), 0);
+  for (std::size_t t = 0; t < degenerate_.size(); ++t)
+    if (degenerate_[t])
+      for (const std::uint32_t v : dt_->tets[t]) degenerate_star_[v] = 1;
   // Hull facets by edge: the third vertex and the tet's fourth of both facets at an edge.
   struct Side {
     std::uint64_t key;
@@ -247,12 +261,11 @@ void VoronoiNeighbors::neighbors(std::uint32_t a, std::vector<std::uint32_t>& po
   const auto st = star(a);
   auto& corners = scratch.corners;
   corners.resize(4 * st.size());
-  bool degenerate_star = false;  // no degenerate tet around a: every interior edge of a is positive
   for (std::size_t k = 0; k < st.size(); ++k) {
     const Tet& q = dt_->tets[st[k]];
     for (int j = 0; j < 4; ++j) corners[4 * k + j] = q[j];
-    degenerate_star |= degenerate_[st[k]] != 0;
   }
+  const bool degenerate_star = degenerate_star_[a];  // else every interior edge of a is positive
   all.resize(corners.size());
   std::size_t distinct = 0;
   for (auto v : corners) {

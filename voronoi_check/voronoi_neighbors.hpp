@@ -40,8 +40,10 @@ struct NeighborScratch {
 
 // The sites' DT by exact predicates with symbolic perturbation, with the build's
 // adjacency (the tables' facet pairs): what VoronoiNeighbors reads. Throws as its
-// first constructor.
-std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3> sites, unsigned threads = 1);
+// first constructor. `duplicates` (if given): how many sites equal an earlier one (the
+// build inserts none of them).
+std::shared_ptr<const Tetrahedralization> exact_delaunay(std::span<const Point3> sites, unsigned threads = 1,
+                                                         std::size_t* duplicates = nullptr);
 
 // Per site, the first site with its coordinates (itself when unique): VoronoiNeighbors::rep.
 std::vector<std::uint32_t> site_representatives(std::span<const Point3> sites);
@@ -95,7 +97,7 @@ class VoronoiNeighbors {
   std::vector<std::uint32_t> rep_;
   std::shared_ptr<const Tetrahedralization> dt_;
   std::vector<std::uint32_t> star_off_, star_;
-  std::vector<char> flat_, degenerate_, hull_vertex_;
+  std::vector<char> flat_, degenerate_, hull_vertex_, degenerate_star_;  // per tet, per tet, per vertex, per vertex
   std::vector<std::uint64_t> hull_edges_, flat_hull_edges_;  // sorted keys (min << 32 | max)
 };
 

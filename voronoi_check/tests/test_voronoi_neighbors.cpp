@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <memory>
+#include <string>
 
 #include "fuzz/families.hpp"
 #include "kernel/build.hpp"
@@ -79,4 +80,29 @@ TEST_CASE("relation tables: every adjacency entry is the mirror facet", "[vorono
   }
   CHECK(bad == 0);
   CHECK(boundary > 0);
+}
+
+TEST_CASE("representatives: the build's duplicates or, with none, every site its own", "[voronoi_check]") {
+  for (const char* name : {"uniform", "duplicates", "lattice_subset", "extreme_scale"}) {
+    const fuzz::Family* f = fuzz::find_family(name);
+    REQUIRE(f);
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      const auto sites = f->generate(400, seed);  // "duplicates": repeats, some with 0.0 as -0.0
+      std::unique_ptr<VoronoiNeighbors> nb;
+      try {
+        nb = std::make_unique<VoronoiNeighbors>(sites);
+      } catch (const std::invalid_argument&) {
+        continue;  // coplanar
+      }
+      const auto sorted = site_representatives(sites);
+      INFO(name << " seed " << seed);
+      std::size_t copies = 0;
+      for (std::uint32_t i = 0; i < sites.size(); ++i) {
+        REQUIRE(nb->rep(i) == sorted[i]);
+        copies += sorted[i] != i;
+      }
+      if (std::string(name) == "duplicates") CHECK(copies > 0);
+      if (std::string(name) == "uniform") CHECK(copies == 0);
+    }
+  }
 }
