@@ -4,7 +4,8 @@
 #include <cfloat>
 #include <cmath>
 
-// Compiled with -ffp-contract=off (CMakeLists.txt): the counts below assume one
+// Compiled with -ffp-contract=off (CMakeLists.txt; and -fno-trapping-math, which only lets
+// BoundBatch's comparisons run on vectors): the counts below assume one
 // rounding per + - * / sqrt, no fused multiply-add.
 //
 // The bound (Shewchuk-style a-priori counts, u = 2^-53, u_L = 2^-64 for long double;
