@@ -12,20 +12,26 @@ void ToolCells::add_cell(std::int64_t site, std::span<const Point3> vertices,
                          std::span<const std::uint32_t> face_offsets, std::span<const std::uint32_t> face_vertices,
                          std::span<const std::int32_t> face_neighbor) {
   const std::size_t nf = face_neighbor.size();
+  const auto fail = [site](const std::string& why) {
+    throw std::invalid_argument("cell of site " + std::to_string(site) + ": " + why);
+  };
+  if (!face_offsets.empty() && face_offsets.size() != nf + 1)
+    fail(std::to_string(nf) + " face neighbours for " + std::to_string(face_offsets.size() - 1) +
+         " faces (one per face)");
   if (face_offsets.size() != nf + 1 || face_offsets[0] != 0 || face_offsets[nf] != face_vertices.size())
-    throw std::invalid_argument("cell of site " + std::to_string(site) + ": face offsets do not match its faces");
-  for (std::size_t f = 0; f < nf; ++f)
-    if (face_offsets[f + 1] < face_offsets[f] + 3)
-      throw std::invalid_argument("cell of site " + std::to_string(site) + ": a face with fewer than 3 corners");
+    fail("face offsets do not match its faces");
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (face_offsets[f + 1] < face_offsets[f]) fail("face offsets do not rise");
+    const std::uint32_t corners = face_offsets[f + 1] - face_offsets[f];
+    if (corners < 3)
+      fail("face " + std::to_string(f) + " has " + std::to_string(corners) + " corners (a face needs at least 3)");
+  }
   for (auto id : face_neighbor)
-    if (id < -6)
-      throw std::invalid_argument("cell of site " + std::to_string(site) + ": neighbour id " + std::to_string(id) +
-                                  " is neither a site (>= 0) nor a wall (-1..-6)");
+    if (id < -6) fail("neighbour id " + std::to_string(id) + " is neither a site (>= 0) nor a wall (-1..-6)");
   for (auto v : face_vertices)
-    if (v >= vertices.size())
-      throw std::invalid_argument("cell of site " + std::to_string(site) + ": a corner out of range");
+    if (v >= vertices.size()) fail("a corner out of range");
   for (const auto& p : vertices)
-    if (!is_finite(p)) throw std::invalid_argument("cell of site " + std::to_string(site) + ": a vertex is not finite");
+    if (!is_finite(p)) fail("a vertex is not finite");
   site_.push_back(site);
   v_.insert(v_.end(), vertices.begin(), vertices.end());
   fo_.insert(fo_.end(), face_offsets.begin(), face_offsets.end());

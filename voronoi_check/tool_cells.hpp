@@ -15,9 +15,10 @@ namespace dtlab {
 
 class ToolCells {
  public:
-  // Throws std::invalid_argument on a face with fewer than 3 corners, a corner out of
-  // range, offsets that do not start at 0 or do not rise, a neighbour id below -6 (no
-  // site and no wall), or a non-finite vertex.
+  // Throws std::invalid_argument ("cell of site S: ...") on neighbours not one per face,
+  // a face with fewer than 3 corners, a corner out of range, offsets that do not start
+  // at 0 or do not rise, a neighbour id below -6 (no site and no wall), or a non-finite
+  // vertex.
   void add_cell(std::int64_t site, std::span<const Point3> vertices, std::span<const std::uint32_t> face_offsets,
                 std::span<const std::uint32_t> face_vertices, std::span<const std::int32_t> face_neighbor);
   std::size_t size() const { return site_.size(); }

@@ -260,18 +260,14 @@ def _tool_cells(points: Any, cells: Any, box: list[float]) -> list[tuple[Any, ..
 
         faces = [_ids(f, f"{where}: face {j}", 0, nv - 1, lambda v, j=j: corner_out_of_range(j, v))
                  for j, f in enumerate(faces)]
-        for j, f in enumerate(faces):
-            if len(f) < 3:
-                raise ValueError(f"{where}: face {j} has {len(f)} corners (a face needs at least 3)")
         sizes = [len(f) for f in faces]
         if sum(sizes) > _INDEX_MAX:
             raise ValueError(f"{where}: {sum(sizes)} face corners (at most {_INDEX_MAX})")
         offsets = np.concatenate([[0], np.cumsum(sizes, dtype=np.int64)]).astype(np.uint32)
         corners = np.concatenate(faces).astype(np.uint32) if faces else np.zeros(0, np.uint32)
+        # Faces of fewer than 3 corners and neighbours not one per face: ToolCells::add_cell
+        # refuses them, named cells[k] by the binding.
         neighbor_ids = _ids(neighbors, f"{where}: neighbours", -6, _NEIGHBOR_MAX)
-        if len(neighbor_ids) != len(faces):
-            raise ValueError(f"{where}: neighbours: {len(neighbor_ids)} face neighbours for {len(faces)} faces "
-                             "(one per face)")
         out.append((site_id, verts, offsets, corners, neighbor_ids.astype(np.int32)))
     return out
 

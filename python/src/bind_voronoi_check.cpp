@@ -3,6 +3,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <string>
+
 #include "python/src/bindings.hpp"
 #include "python/src/json_to_python.hpp"
 #include "python/src/numpy_io.hpp"
@@ -20,9 +22,11 @@ std::vector<T> vector_of(py::handle h, const char* what) {
   return std::vector<T>(a.data(), a.data() + a.size());
 }
 
-// cells: a list of (site, vertices (n, 3), face_offsets, face_vertices, face_neighbors).
+// cells: a list of (site, vertices (n, 3), face_offsets, face_vertices, face_neighbors);
+// what add_cell refuses is named by the cell's index, as dtlab._tool_cells names the rest.
 ToolCells tool_cells(py::handle cells) {
   ToolCells t;
+  std::size_t k = 0;
   for (py::handle c : cells) {
     const py::tuple tu = py::reinterpret_borrow<py::tuple>(c);
     if (tu.size() != 5) throw py::value_error("a cell is (site, vertices, face_offsets, face_vertices, face_neighbors)");
@@ -31,8 +35,9 @@ ToolCells tool_cells(py::handle cells) {
       t.add_cell(tu[0].cast<std::int64_t>(), points_of(v), vector_of<std::uint32_t>(tu[2], "face_offsets"),
                  vector_of<std::uint32_t>(tu[3], "face_vertices"), vector_of<std::int32_t>(tu[4], "face_neighbors"));
     } catch (const std::invalid_argument& e) {
-      throw py::value_error(e.what());
+      throw py::value_error("cells[" + std::to_string(k) + "]: " + e.what());
     }
+    ++k;
   }
   return t;
 }

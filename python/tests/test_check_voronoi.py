@@ -164,10 +164,10 @@ def test_ids_are_range_checked_before_the_narrowing_cast():
         # numpy reads [True, 1, 2] as int64: a bool among the ids is refused by name.
         (neighbours([True] + [int(x) for x in nbrs[1:]]), r"^cells\[0\]: neighbours: expected integer ids, got True$"),
         (neighbours(nbrs[1:]),
-         rf"^cells\[0\]: neighbours: {len(nbrs) - 1} face neighbours for {len(nbrs)} faces \(one per face\)$"),
+         rf"^cells\[0\]: cell of site 0: {len(nbrs) - 1} face neighbours for {len(nbrs)} faces \(one per face\)$"),
         (neighbours(np.asarray(nbrs).reshape(1, -1)), r"^cells\[0\]: neighbours: expected a 1-d"),
         (lambda s, v, f, n: (s, v, [[0, 1]] + f[1:], n),
-         r"^cells\[0\]: face 0 has 2 corners \(a face needs at least 3\)$"),
+         r"^cells\[0\]: cell of site 0: face 0 has 2 corners \(a face needs at least 3\)$"),
         (lambda s, v, f, n: (s, v, [[True] + f[0][1:]] + f[1:], n),
          r"^cells\[0\]: face 0: expected integer ids, got True$"),
     ]:
@@ -177,6 +177,28 @@ def test_ids_are_range_checked_before_the_narrowing_cast():
     cells = _damaged(pts, vd, lambda s, v, f, n: (np.uint64(s), v, [np.asarray(x, np.uint64) for x in f],
                                                   np.asarray(n, np.int16)))
     assert dtlab.check_voronoi(pts, cells, box=vd.box)["verdict"] == "exact-topology"
+
+
+def test_add_cells_refusals_name_the_cell_by_its_index():
+    # ToolCells::add_cell's messages name only the site; the binding names cells[k]
+    # (the Python side no longer repeats these two checks).
+    pts = np.random.default_rng(9).random((30, 3))
+    vd = dtlab.voronoi(pts)
+    k = 5
+    base = [(c.site, c.vertices, [list(f) for f in c.faces], list(c.face_neighbors)) for c in vd.cells]
+    s, v, f, n = base[k]
+    for cell, message in [
+        ((s, v, f[:3] + [f[3][:2]] + f[4:], n),
+         rf"^cells\[{k}\]: cell of site {s}: face 3 has 2 corners \(a face needs at least 3\)$"),
+        ((s, v, f, n + [n[0]]),
+         rf"^cells\[{k}\]: cell of site {s}: {len(n) + 1} face neighbours for {len(f)} faces \(one per face\)$"),
+        ((s, v, [], n[:1]), rf"^cells\[{k}\]: cell of site {s}: 1 face neighbours for 0 faces \(one per face\)$"),
+    ]:
+        cells = base[:k] + [cell] + base[k + 1:]
+        with pytest.raises(ValueError, match=message):
+            dtlab.check_voronoi(pts, cells, box=vd.box)
+    # The undamaged list is judged exact.
+    assert dtlab.check_voronoi(pts, base, box=vd.box)["verdict"] == "exact-topology"
 
 
 def test_cell_vertices_must_be_k_by_3():
