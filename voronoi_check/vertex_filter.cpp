@@ -193,10 +193,13 @@ void BoundBatch::start(std::size_t lanes) {
   }
 }
 
-// Cloned for AVX2 (four lanes) beside the default SSE2 build (two): no FMA in either,
-// so every lane rounds as vertex_distance_bound does.
-[[gnu::target_clones("avx2", "default")]] static void bounds_of(const double* const* f, std::size_t n,
-                                                                double* __restrict out) {
+namespace {
+
+// The loop over the lanes, compiled twice: for AVX2 (four lanes) and for the default
+// SSE2 (two), chosen at run time. No FMA in either, so every lane rounds as
+// vertex_distance_bound does. (Not `target_clones`: its ifunc resolver runs before
+// ThreadSanitizer's runtime is up and crashes the TSan build at load.)
+[[gnu::always_inline]] inline void bounds_loop(const double* const* f, std::size_t n, double* __restrict out) {
   for (std::size_t k = 0; k < n; ++k) {
     MeetInputs in;
     for (int j = 0; j < 3; ++j) in.a[j] = f[j][k], in.b[j] = f[3 + j][k], in.d[j] = f[6 + j][k];
@@ -205,11 +208,18 @@ void BoundBatch::start(std::size_t lanes) {
     out[k] = bound_lane(in, t);
   }
 }
+[[gnu::target("avx2")]] void bounds_avx2(const double* const* f, std::size_t n, double* __restrict out) {
+  bounds_loop(f, n, out);
+}
+void bounds_default(const double* const* f, std::size_t n, double* __restrict out) { bounds_loop(f, n, out); }
+
+}  // namespace
 
 void BoundBatch::bounds(std::span<double> out) const {
   const double* f[count_];
   for (int j = 0; j < count_; ++j) f[j] = data_.data() + j * room_;
-  bounds_of(f, std::min(size_, out.size()), out.data());
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  (avx2 ? bounds_avx2 : bounds_default)(f, std::min(size_, out.size()), out.data());
 }
 
 }  // namespace dtlab
