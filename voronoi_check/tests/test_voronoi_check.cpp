@@ -243,6 +243,22 @@ TEST_CASE("coplanar or non-finite sites are refused") {
                   std::invalid_argument);
 }
 
+TEST_CASE("add_cell names the face of fewer than 3 corners and neighbours not one per face") {
+  const std::vector<Point3> vs{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::vector<std::uint32_t> fv{0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  const std::vector<std::int32_t> fn{-1, -2, -3, 4};
+  ToolCells t;
+  t.add_cell(7, vs, std::vector<std::uint32_t>{0, 3, 6, 9, 12}, fv, fn);
+  CHECK(t.size() == 1);
+  CHECK_THROWS_WITH(t.add_cell(7, vs, std::vector<std::uint32_t>{0, 3, 5, 9, 12}, fv, fn),
+                    "cell of site 7: face 1 has 2 corners (a face needs at least 3)");
+  CHECK_THROWS_WITH(t.add_cell(7, vs, std::vector<std::uint32_t>{0, 3, 6, 12}, fv, fn),
+                    "cell of site 7: 4 face neighbours for 3 faces (one per face)");
+  CHECK_THROWS_WITH(t.add_cell(7, vs, std::vector<std::uint32_t>{0, 6, 3, 9, 12}, fv, fn),
+                    "cell of site 7: face offsets do not rise");
+  CHECK(t.size() == 1);
+}
+
 TEST_CASE("the convexity test's volume is cell_volume's, and is left unset when the test stops early") {
   const auto sites = random_sites(300, 11);
   const auto vd = cells_of(sites);
