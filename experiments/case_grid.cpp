@@ -52,16 +52,27 @@ double shrink_try_limit(double original_seconds, double timeout_s) {
   return std::clamp(10 * original_seconds, std::min(2.0, timeout_s), timeout_s);
 }
 
-std::string corpus_prefix(const std::string& peer, const std::string& source, bool plus_as_p) {
-  std::string prefix = peer + "-" + source;
-  std::replace(prefix.begin(), prefix.end(), ':', '_');
-  if (plus_as_p) std::replace(prefix.begin(), prefix.end(), '+', 'p');
-  return prefix;
+std::string corpus_prefix(const std::string& peer, const std::string& source) {
+  static constexpr char hex[] = "0123456789ABCDEF";
+  std::string prefix;
+  for (const char ch : peer) {
+    const auto b = static_cast<unsigned char>(ch);
+    if ((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '.' || ch == '-' ||
+        ch == '+') {
+      prefix += ch;
+    } else if (ch == ':') {
+      prefix += '_';
+    } else {
+      prefix += '~';
+      prefix += hex[b >> 4];
+      prefix += hex[b & 15];
+    }
+  }
+  return prefix + "-" + source;
 }
 
-std::string corpus_stem(const std::string& peer, const std::string& source, std::size_t n, std::size_t index,
-                        bool plus_as_p) {
-  return corpus_prefix(peer, source, plus_as_p) + "-n" + std::to_string(n) + "-" + std::to_string(index);
+std::string corpus_stem(const std::string& peer, const std::string& source, std::size_t n, std::size_t index) {
+  return corpus_prefix(peer, source) + "-n" + std::to_string(n) + "-" + std::to_string(index);
 }
 
 namespace {
@@ -98,10 +109,9 @@ std::vector<std::string> remove_corpus_names(const std::string& out_dir,
   return remove_output_set(files);
 }
 
-void remove_grid_corpus(const std::vector<std::string>& peers, const CaseGrid& grid, bool plus_as_p) {
+void remove_grid_corpus(const std::vector<std::string>& peers, const CaseGrid& grid) {
   std::set<std::pair<std::string, std::size_t>> cases;
-  for (const GridCase& c : grid_cases(peers, grid))
-    cases.insert({corpus_prefix(*c.peer, c.source->name, plus_as_p), c.index});
+  for (const GridCase& c : grid_cases(peers, grid)) cases.insert({corpus_prefix(*c.peer, c.source->name), c.index});
   remove_corpus_names(grid.out_dir, [&](const CorpusName& n) { return cases.count({n.prefix, n.index}) > 0; });
 }
 

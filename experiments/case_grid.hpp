@@ -88,13 +88,14 @@ std::vector<Case> run_grid(const std::vector<std::string>& peers, const CaseGrid
 // A shrink try's time limit: 10x the original run's, 2 s at least, `timeout_s` at most.
 double shrink_try_limit(double original_seconds, double timeout_s);
 
-// "<peer>-<source>" with ':' made '_' (`plus_as_p`: '+' made 'p' too, the Voronoi
-// campaign's names): what a case's corpus names start with.
-std::string corpus_prefix(const std::string& peer, const std::string& source, bool plus_as_p = false);
+// "<peer>-<source>": what a case's corpus names start with. The peer is escaped one to
+// one: letters, digits and . - + kept, ':' made '_' (dtlab:exact: dtlab_exact), any other
+// byte, '_' and '~' too, made ~XX, its hex (my_peer: my~5Fpeer). The source (a fuzz
+// family, MESH-surface, MESH-volume) is kept: none ends in "-" and another's name.
+std::string corpus_prefix(const std::string& peer, const std::string& source);
 
 // "<prefix>-n<N>-<case>": the name of a case's corpus files.
-std::string corpus_stem(const std::string& peer, const std::string& source, std::size_t n, std::size_t index,
-                        bool plus_as_p = false);
+std::string corpus_stem(const std::string& peer, const std::string& source, std::size_t n, std::size_t index);
 
 // A corpus file name "<prefix>-n<N>-<case>.node" (or .json) taken apart; nullopt for a
 // name of another form.
@@ -112,7 +113,7 @@ std::vector<std::string> remove_corpus_names(const std::string& out_dir,
 
 // remove_corpus_names for the cases of the grid (any size: their n is drawn afresh):
 // the entries a run of `peers` on it would write.
-void remove_grid_corpus(const std::vector<std::string>& peers, const CaseGrid& grid, bool plus_as_p);
+void remove_grid_corpus(const std::vector<std::string>& peers, const CaseGrid& grid);
 
 // Writes <out_dir>/corpus/<stem>.node (creating the folder); returns "corpus/<stem>.node".
 std::string save_corpus_points(const std::string& out_dir, const std::string& stem, const std::vector<Point3>& points);

@@ -187,7 +187,7 @@ void shrink_and_save(PeerCase& c, const std::vector<Point3>& points, const PeerO
 
 std::vector<PeerCase> run_peer_campaign(const PeerCampaignOptions& o) {
   const std::vector<std::string> peers = o.peers.empty() ? std::vector<std::string>{o.peer} : o.peers;
-  if (!o.out_dir.empty()) remove_grid_corpus(peers, o, false);
+  if (!o.out_dir.empty()) remove_grid_corpus(peers, o);
   return run_grid<PeerCase>(
       peers, o,
       [&](PeerCase& c, const std::vector<Point3>& points) {

@@ -89,7 +89,7 @@ void shrink_and_save_voronoi(VoronoiCase& c, const std::vector<Point3>& points, 
   }
   c.shrunk_points = shrunk.size();
   c.shrink_seconds = seconds_since(t0);
-  const std::string stem = corpus_stem(c.peer, c.source, c.n, c.index, true);
+  const std::string stem = corpus_stem(c.peer, c.source, c.n, c.index);
   c.corpus_file = save_corpus_points(out_dir, stem, shrunk);
   nlohmann::json j =
       case_sidecar(c, points.size(), shrunk.size(),
@@ -104,7 +104,7 @@ void shrink_and_save_voronoi(VoronoiCase& c, const std::vector<Point3>& points, 
 }
 
 std::vector<VoronoiCase> run_voronoi_campaign(const VoronoiCampaignOptions& o) {
-  if (!o.out_dir.empty()) remove_grid_corpus(o.peers, o, true);
+  if (!o.out_dir.empty()) remove_grid_corpus(o.peers, o);
   return run_grid<VoronoiCase>(
       o.peers, o,
       [&](VoronoiCase& c, const std::vector<Point3>& points) {

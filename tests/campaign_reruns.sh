@@ -74,15 +74,15 @@ ok "the wrong peer's failure is gone" gone "$T/corpus/mine-uniform-n8-0.node"
 ok "... and its sidecar" gone "$T/corpus/mine-uniform-n8-0.json"
 ok "another peer's entry stays" exists "$T/corpus/other-uniform-n8-0.node"
 
-# fuzz --target, a Voronoi peer (a name with '+', written as 'p'): a rerun that shrinks
+# fuzz --target, a Voronoi peer (a name with '+', kept; it was written as 'p'): a rerun that shrinks
 # nothing leaves none of the first run's entries.
 V="$tmp/vtarget"
 vtarget=(fuzz --target v+1 --voronoi-peer "v+1=/bin/false {in} {box} {out}" --family uniform --cases 1 --points 8
   --shrink-budget 5 --quiet --out "$V")
 expect 1 "fuzz --target a Voronoi peer that always fails" -- "$dtlab" "${vtarget[@]}"
-ok "its failure is in the corpus" exists "$V/corpus/vp1-uniform-n8-0.node"
+ok "its failure is in the corpus" exists "$V/corpus/v+1-uniform-n8-0.node"
 expect 1 "the same campaign with --no-shrink" -- "$dtlab" "${vtarget[@]}" --no-shrink
-ok "the first run's entry is gone" gone "$V/corpus/vp1-uniform-n8-0.node"
+ok "the first run's entry is gone" gone "$V/corpus/v+1-uniform-n8-0.node"
 
 # --- 9, 10. The leaderboard: a rerun removes the earlier run's files before its first.
 L="$tmp/board"

@@ -70,7 +70,9 @@ TEST_CASE("case grid: rerun command, corpus stem, shrink try limit", "[case_grid
   CHECK(grid_case_command("qhull", g, "lattice", 2) ==
         "dtlab fuzz --target qhull --family lattice --case 2 --seed 7 --min-points 5 --points 40 --out DIR");
   CHECK(corpus_stem("dtlab:naive", "uniform", 12, 3) == "dtlab_naive-uniform-n12-3");
-  CHECK(corpus_stem("dtlab:naive+none", "uniform", 12, 3, true) == "dtlab_naivepnone-uniform-n12-3");
+  CHECK(corpus_stem("dtlab:naive+none", "near_degenerate", 12, 3) == "dtlab_naive+none-near_degenerate-n12-3");
+  CHECK(corpus_stem("voro++", "uniform", 12, 3) == "voro++-uniform-n12-3");
+  CHECK(corpus_stem("my_peer~2", "uniform", 12, 3) == "my~5Fpeer~7E2-uniform-n12-3");
   CHECK(shrink_try_limit(0.01, 60) == 2);  // 2 s at least
   CHECK(shrink_try_limit(1.5, 60) == 15);  // 10x the original run
   CHECK(shrink_try_limit(100, 60) == 60);  // the time limit at most
@@ -91,6 +93,19 @@ TEST_CASE("case grid: corpus names taken apart", "[case_grid]") {
     CHECK_FALSE(parse_corpus_name(other));
 }
 
+TEST_CASE("case grid: peers whose names differ only in : _ + ~ get different corpus names", "[case_grid]") {
+  // ':' and '+' were made '_' and 'p', so dtlab:exact's shrunk inputs overwrote
+  // dtlab_exact's, a+b's apb's.
+  const std::vector<std::string> peers = {"dtlab:exact", "dtlab_exact", "dtlab~3Aexact", "dtlab~5Fexact",
+                                          "a+b",         "apb",         "a_b",           "a:b",
+                                          "a~2Bb",       "a__b",        "a:_b",          "a_:b"};
+  std::set<std::string> prefixes;
+  for (const auto& p : peers) prefixes.insert(corpus_prefix(p, "uniform"));
+  CHECK(prefixes.size() == peers.size());
+  for (const auto& p : peers)
+    CHECK(parse_corpus_name(corpus_stem(p, "uniform", 8, 1) + ".node")->prefix == corpus_prefix(p, "uniform"));
+}
+
 TEST_CASE("case grid: a run removes its own cases' corpus entries, any size, nothing else", "[case_grid]") {
   TempDir dir;
   CaseGrid g = small_grid();  // uniform and lattice, cases 0..2
@@ -102,7 +117,14 @@ TEST_CASE("case grid: a run removes its own cases' corpus entries, any size, not
                                            "p-uniform-n5-0.txt", "notes.json"};
   for (const auto& f : ours) std::ofstream(corpus / f) << "x";
   for (const auto& f : others) std::ofstream(corpus / f) << "x";
-  remove_grid_corpus({"p"}, g, false);
+  remove_grid_corpus({"p"}, g);
   for (const auto& f : ours) CHECK_FALSE(fs::exists(corpus / f));
   for (const auto& f : others) CHECK(fs::exists(corpus / f));
+  // A run of dtlab:exact leaves dtlab_exact's entries (both were dtlab_exact-...).
+  const std::string mine = corpus_stem("dtlab:exact", "uniform", 5, 0) + ".node";
+  const std::string theirs = corpus_stem("dtlab_exact", "uniform", 5, 0) + ".node";
+  for (const auto& f : {mine, theirs}) std::ofstream(corpus / f) << "x";
+  remove_grid_corpus({"dtlab:exact"}, g);
+  CHECK_FALSE(fs::exists(corpus / mine));
+  CHECK(fs::exists(corpus / theirs));
 }
