@@ -154,11 +154,15 @@ OutputSet fracture_output_set(const FractureArgs& a, std::size_t pieces) {
        {std::pair{a.repair, "/repaired.off"}, std::pair{a.vtu, "/pieces.vtu"}, std::pair{a.surfaces, "/surfaces.vtu"},
         std::pair{a.gltf, "/pieces.gltf"}, std::pair{a.tets, "/tets.vtu"}})
     (on ? set.written : set.others).push_back(a.out + name);
+  // Every piece file this run writes, those new to DIR too: each is guarded once placed.
   std::unordered_set<std::string> split;
   if (a.split)
-    for (std::size_t i = 0; i < pieces; ++i) split.insert(a.out + "/pieces/" + piece_file_name(i));
+    for (std::size_t i = 0; i < pieces; ++i) {
+      set.written.push_back(a.out + "/pieces/" + piece_file_name(i));
+      split.insert(set.written.back());
+    }
   for (std::string& p : piece_files_in(a.out + "/pieces"))
-    (split.contains(p) ? set.written : set.others).push_back(std::move(p));
+    if (!split.contains(p)) set.others.push_back(std::move(p));
   return set;
 }
 
@@ -186,8 +190,7 @@ void write_fracture_outputs(const FractureArgs& a, const FractureResult& r, nloh
   set.placed();
   if (a.split) {
     std::filesystem::create_directories(a.out + "/pieces");
-    m["split_files"] = write_piece_files(a.out + "/pieces", r);
-    set.placed();
+    m["split_files"] = write_piece_files(a.out + "/pieces", r, [&](const std::string& p) { set.placed(p); });
   }
   write_text_file(a.out + "/manifest.json", m.dump(1) + "\n");
   set.placed();

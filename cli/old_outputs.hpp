@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -99,16 +100,12 @@ class SetBeingWritten {
   }
   // After each write: the members now in place, guarded from now on.
   void placed() {
-    for (auto it = new_.begin(); it != new_.end();) {
-      struct stat st {};
-      if (stat(it->c_str(), &st) != 0) {
-        ++it;
-        continue;
-      }
-      guard_path(*it);
-      placed_.emplace_back(*it, st);
-      it = new_.erase(it);
-    }
+    for (auto it = new_.begin(); it != new_.end();) it = take(it) ? new_.erase(it) : it + 1;
+  }
+  // The same for one member (a file of many, as each is placed: fracture's piece files).
+  void placed(const std::string& member) {
+    const auto it = std::find(new_.begin(), new_.end(), member);
+    if (it != new_.end() && take(it)) new_.erase(it);
   }
   // The last member is in place: the set is the run's result.
   void done() {
@@ -117,6 +114,15 @@ class SetBeingWritten {
   }
 
  private:
+  // Guards *it when it is in place.
+  bool take(std::vector<std::string>::iterator it) {
+    struct stat st {};
+    if (stat(it->c_str(), &st) != 0) return false;
+    guard_path(*it);
+    placed_.emplace_back(*it, st);
+    return true;
+  }
+
   std::vector<std::string> new_;
   std::vector<std::pair<std::string, struct stat>> placed_;
 };

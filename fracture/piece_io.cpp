@@ -64,7 +64,8 @@ std::vector<std::string> piece_files_in(const std::string& dir) {
   return paths;
 }
 
-std::vector<std::string> write_piece_files(const std::string& dir, const FractureResult& r) {
+std::vector<std::string> write_piece_files(const std::string& dir, const FractureResult& r,
+                                           const std::function<void(const std::string& path)>& placed) {
   std::vector<std::string> names;
   for (std::size_t i = 0; i < r.pieces.size(); ++i) {
     const std::string name = piece_file_name(i);
@@ -73,6 +74,7 @@ std::vector<std::string> write_piece_files(const std::string& dir, const Fractur
     std::fprintf(file.get(), "# dtlab fracture: piece %zu of %zu\nmtllib ../pieces.mtl\n", i, r.pieces.size());
     write_piece(file.get(), i, r.pieces[i], Point3{0, 0, 0}, 1);
     file.close();
+    if (placed) placed(path);
     names.push_back(name);
   }
   return names;

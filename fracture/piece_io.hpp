@@ -4,6 +4,7 @@
 // moved away from the mesh centre by `explode` times its centroid offset) and the
 // manifest.json (the input's mesh report and repairs; per piece volume, centroid,
 // inertia tensor, interior area, neighbours).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,10 @@ namespace dtlab {
 void write_pieces_obj(const std::string& path, const FractureResult& r, double explode = 0);
 void write_pieces_mtl(const std::string& path);
 // --split: DIR/piece_0000.obj ... one closed piece per file, groups outer / cut with
-// materials from ../pieces.mtl (DIR is a subfolder of the output). Returns the file names.
-std::vector<std::string> write_piece_files(const std::string& dir, const FractureResult& r);
+// materials from ../pieces.mtl (DIR is a subfolder of the output). `placed(path)` is
+// called as each file is in place. Returns the file names.
+std::vector<std::string> write_piece_files(const std::string& dir, const FractureResult& r,
+                                           const std::function<void(const std::string& path)>& placed = {});
 // "piece_0007.obj": the name of piece i's file in the --split folder.
 std::string piece_file_name(std::size_t i);
 // The piece files in DIR that a --split run may have written (regular files named as

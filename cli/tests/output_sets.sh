@@ -45,6 +45,24 @@ ok "the new piece files and a stranger's file stay" \
 says "the removals are noted" "note: removed [4-9][0-9]* files of an earlier run"
 expect 0 "fracture without --split" -- "$dtlab" fracture builtin --pieces 3 --out "$tmp/f" --quiet
 ok "no piece file of the --split run is left" test ! -e "$tmp/f/pieces/piece_0000.obj"
+# Each piece file is guarded as it is placed: a write that fails on piece 2 (a FIFO no
+# process reads), or SIGTERM while it waits there, leaves no piece file of this run (they
+# were guarded only after the last one, those new to DIR never); the FIFO stays a FIFO.
+only_fifo() { [ -p "$1/pieces/piece_0002.obj" ] && [ "$(ls "$1/pieces")" = "piece_0002.obj" ] && [ ! -e "$1/pieces.obj" ]; }
+mkdir -p "$tmp/fw/pieces" && mkfifo "$tmp/fw/pieces/piece_0002.obj"
+expect 2 "fracture --split, piece 2 cannot be written" -- env DTLAB_FIFO_WAIT=1 "$dtlab" fracture builtin --pieces 4 \
+  --out "$tmp/fw" --split --quiet
+says "named" "piece_0002.obj:0: no process opened the FIFO for reading"
+ok "no piece file of the failed run is left (a failure)" only_fifo "$tmp/fw"
+env DTLAB_FIFO_WAIT=60 "$dtlab" fracture builtin --pieces 4 --out "$tmp/fw" --split --quiet >/dev/null 2>&1 &
+run=$!
+for _ in $(seq 400); do [ -e "$tmp/fw/pieces/piece_0001.obj" ] && break; sleep 0.05; done
+ok "pieces 0 and 1 were in place before the interrupt" test -f "$tmp/fw/pieces/piece_0000.obj" -a \
+  -f "$tmp/fw/pieces/piece_0001.obj"
+kill -TERM "$run"
+wait "$run"
+ok "no piece file of the interrupted run is left (SIGTERM)" only_fifo "$tmp/fw"
+rm -f "$tmp/fw/pieces/piece_0002.obj"
 # A mesh inside DIR is the input: never removed, even where it is a member (repaired.off).
 expect 0 "fracture --repair" -- "$dtlab" fracture builtin --pieces 3 --out "$tmp/g" --repair --quiet
 cp "$tmp/g/repaired.off" "$tmp/r.off"
