@@ -52,6 +52,7 @@ struct FuzzArgs {
   KernelArgs kernel;  // --eps, --eps-mode, --boundary, --order (the seed is set per case)
   const CLI::Option* order_option = nullptr;  // --order: given, it overrides a replayed entry's
   std::string oracle = "none";
+  const CLI::Option* against_option = nullptr;  // --against: given, it overrides a replayed entry's
   std::string target;  // a peer: judge it instead of dtlab
   unsigned jobs = 1;
   std::string out;
@@ -242,6 +243,25 @@ int run_replay(const FuzzArgs& a) {
   // Each entry is rebuilt with its sidecar's order and threads unless these are given.
   if (a.order_option && a.order_option->count() > 0) options.order = a.kernel.build_options().order;
   if (a.kernel.threads_option && a.kernel.threads_option->count() > 0) options.threads = a.kernel.threads;
+  if (a.against_option && a.against_option->count() > 0) {
+    oracles_of(a.oracle);  // an unknown name is a usage error, before any entry runs
+    options.against.emplace();
+    for (const auto& name : split(a.oracle))
+      if (name != "none") options.against->push_back(name);
+  }
+  // An entry compared with oracles is compared with them again (its sidecar's "against"),
+  // built as the campaign built them: the same hooks for the entry's backend and build.
+  options.oracles = [](const std::vector<std::string>& names, const PredicateSpec& spec, const BuildOptions& build) {
+    std::string list;
+    for (const auto& n : names) {
+      if (n != "serial" && n != "none" && !is_peer_name(n))
+        throw std::invalid_argument("unknown oracle '" + n + "' (none, or peers: see dtlab oracle --help)");
+      list += (list.empty() ? "" : ",") + n;
+    }
+    std::vector<fuzz::OracleHook> hooks = oracles_of(list);
+    if (std::find(names.begin(), names.end(), "serial") != names.end()) hooks.push_back(serial_hook({spec}, build));
+    return hooks;
+  };
   const auto results = fuzz::replay_corpus(a.replay, options);
   std::size_t failing = 0;
   nlohmann::json lines = nlohmann::json::array();
@@ -251,15 +271,18 @@ int run_replay(const FuzzArgs& a) {
       nlohmann::json line = {
           {"file", r.file},           {"backend", r.backend},           {"boundary", r.boundary},
           {"order", r.order},         {"threads", r.threads},           {"parallel_passes", r.run.parallel_passes},
-          {"outcome", r.run.outcome}, {"recorded", r.recorded_outcome}, {"ok", r.run.ok()},
+          {"against", r.against},     {"outcome", r.run.outcome},       {"recorded", r.recorded_outcome},
+          {"ok", r.run.ok()},
           {"detail", r.run.detail},   {"defects", r.run.defects}};
       if (!r.run.ok()) line["witness"] = witness_json(r);
       lines.push_back(std::move(line));
     } else {
       // The file with the settings it was built with: `dtlab fuzz --replay` and this line's
       // tail is the same build.
-      std::printf("%-8s %-14s %-24s %s --order %s --threads %u%s\n", r.run.ok() ? "ok" : "FAIL", r.backend.c_str(),
-                  r.run.outcome.c_str(), r.file.c_str(), r.order.c_str(), r.threads,
+      std::string against;
+      for (const auto& n : r.against) against += (against.empty() ? " --against " : ",") + n;
+      std::printf("%-8s %-14s %-24s %s --order %s --threads %u%s%s\n", r.run.ok() ? "ok" : "FAIL", r.backend.c_str(),
+                  r.run.outcome.c_str(), r.file.c_str(), r.order.c_str(), r.threads, against.c_str(),
                   r.recorded_outcome.empty() ? "" : (" (recorded: " + r.recorded_outcome + ")").c_str());
       if (!r.run.ok()) print_witness(r);
     }
@@ -320,8 +343,8 @@ int run_fuzz(const FuzzArgs& a) {
     for (const auto& f : fuzz::families()) std::printf("%-16s %s\n", f.name.c_str(), f.description.c_str());
     return kOk;
   }
+  a.defined.register_all();  // peers by command: a replay's oracles may be among them
   if (!a.replay.empty()) return run_replay(a);
-  a.defined.register_all();
   if (a.summarize_only) return run_summarize(a);
   if (a.out.empty()) usage_error("--out DIR is required (or --replay, --list, --summarize DIR)");
 
@@ -392,11 +415,12 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   args->order_option = sub->get_option("--order");
   sub->add_flag_callback(
       "--relative-eps", [args] { args->kernel.eps_mode = "relative"; }, "the old spelling of --eps-mode relative");
-  sub->add_option("--against,--oracle", args->oracle,
-                  "none, or a comma list of peers to compare with (cgal, tetgen, qhull, ...), as in `dtlab oracle`; "
-                  "serial: a --threads build against the serial build, tet for tet (one backend, sos); "
-                  "--oracle is the old spelling")
-      ->capture_default_str();
+  args->against_option =
+      sub->add_option("--against,--oracle", args->oracle,
+                      "none, or a comma list of peers to compare with (cgal, tetgen, qhull, ...), as in `dtlab oracle`; "
+                      "serial: a --threads build against the serial build, tet for tet (one backend, sos); "
+                      "with --replay: instead of each entry's recorded oracles; --oracle is the old spelling")
+          ->capture_default_str();
   sub->add_option(
       "--target", args->target,
       "judge this peer instead of dtlab (cgal, qhull, scipy, gmsh, ...; or a Voronoi peer: voro++, "

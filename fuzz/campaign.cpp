@@ -90,12 +90,20 @@ std::string resume_key(const std::string& id, const std::string& backend, const 
   return id + "|" + backend + "|" + boundary;
 }
 
+// " --against A,B" for the campaign's oracles, "" without.
+std::string against_option(const CampaignOptions& o) {
+  std::string names;
+  for (const OracleHook& h : o.oracles) names += (names.empty() ? "" : ",") + h.name;
+  return names.empty() ? "" : " --against " + names;
+}
+
 std::string original_command(const CampaignOptions& o, const CaseRecord& r) {
   return "dtlab fuzz --family " + r.family + " --seed " + std::to_string(o.seed) + " --case " +
          std::to_string(r.index) + " --min-points " + std::to_string(o.min_points) + " --points " +
          std::to_string(o.max_points) + " --predicates " + r.predicates + " --perturb " + (r.perturb ? "sos" : "none") +
          " --boundary " + r.boundary + " --order " + order_label(o.build) +
-         (r.threads == 1 ? "" : " --threads " + std::to_string(r.threads)) + " --out " + o.out_dir + "/repro-" + r.id;
+         (r.threads == 1 ? "" : " --threads " + std::to_string(r.threads)) + against_option(o) + " --out " + o.out_dir +
+         "/repro-" + r.id;
 }
 
 // The cases of this shard that `done` does not hold for every backend, in family then index
@@ -177,7 +185,8 @@ void run_backend(const CampaignOptions& o, const PredicateSpec& spec, const Buil
   r.shrunk_points = s.points.size();
   // The shrinker's builds are `build`, the case's own (threads and order included), so the
   // entry fails as recorded when replayed with the sidecar's settings.
-  CorpusEntryInfo info{original_command(o, r), s.tests, s.minimal, order_label(build), spec.eps, spec.relative_eps};
+  CorpusEntryInfo info{original_command(o, r), s.tests, s.minimal, order_label(build), spec.eps, spec.relative_eps, {}};
+  for (const OracleHook& h : o.oracles) info.against.push_back(h.name);
   std::lock_guard<std::mutex> g(corpus_lock);
   r.corpus_file = write_corpus_entry(o.out_dir, r, s.points, info);
 }

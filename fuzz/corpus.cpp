@@ -45,13 +45,21 @@ constexpr std::int64_t kMaxSidecarThreads = 1024;
 // ones lack "order" and "threads") keep their defaults: brio, serial. A sidecar that is no
 // JSON, holds a field of the wrong type or names an unknown backend, boundary or order or a
 // thread count out of range is refused with its file and line (the line of the field when
-// it is found).
-void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build, std::string& outcome) {
+// it is found). "against" (the oracles the case was compared with) must be a list of names;
+// older sidecars lack it: none.
+struct RecordedOracles {
+  std::vector<std::string> names;
+  std::string sidecar;   // the file, "" without one
+  std::size_t line = 0;  // of "against" in it
+};
+
+void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build, std::string& outcome,
+                  RecordedOracles& against) {
   fs::path sidecar = file;
   sidecar.replace_extension(".json");
   std::string boundary = "infinite";
   std::string order = "brio";
-  nlohmann::json threads = 1, eps = nullptr, eps_mode = nullptr;
+  nlohmann::json threads = 1, eps = nullptr, eps_mode = nullptr, oracles = nlohmann::json::array();
   if (fs::is_regular_file(sidecar)) {
     std::ifstream in(sidecar, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -80,6 +88,7 @@ void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build
       key = "threads", threads = j.value(key, threads);
       key = "eps", eps = j.value(key, eps);
       key = "eps_mode", eps_mode = j.value(key, eps_mode);
+      key = "against", oracles = j.value(key, oracles);
     } catch (const nlohmann::json::exception& e) {
       throw InputError(sidecar.string(), field_line(key), std::string("'") + key + "': " + e.what());
     }
@@ -100,6 +109,11 @@ void read_sidecar(const fs::path& file, PredicateSpec& spec, BuildOptions& build
     if (!eps_mode.is_null() && eps_mode != "absolute" && eps_mode != "relative")
       throw InputError(sidecar.string(), field_line("eps_mode"),
                        "bad eps_mode " + eps_mode.dump() + " (expected absolute or relative)");
+    const auto is_name = [](const nlohmann::json& n) { return n.is_string() && !n.get<std::string>().empty(); };
+    if (!oracles.is_array() || !std::all_of(oracles.begin(), oracles.end(), is_name))
+      throw InputError(sidecar.string(), field_line("against"),
+                       "bad against " + oracles.dump() + " (expected a list of oracle names)");
+    against = {oracles.get<std::vector<std::string>>(), sidecar.string(), field_line("against")};
     if (!eps.is_null()) spec.eps = eps.get<double>();  // older sidecars: the default band
     if (!eps_mode.is_null()) spec.relative_eps = eps_mode == "relative";
     build.order = order == "input" ? InsertionOrder::input : InsertionOrder::brio;
@@ -160,6 +174,7 @@ std::string write_corpus_entry(const std::string& out_dir, const CaseRecord& rec
       {"eps_mode", record.predicates == "epsilon" ? nlohmann::json(info.relative_eps ? "relative" : "absolute")
                                                   : nlohmann::json(nullptr)},
       {"threads", record.threads},
+      {"against", info.against},
       {"outcome", record.run.outcome},
       {"detail", record.run.detail},
       {"shrink_tests", info.shrink_tests},
@@ -191,7 +206,8 @@ std::vector<ReplayResult> replay_corpus(const std::string& path, const ReplayOpt
     PredicateSpec recorded_spec;
     BuildOptions build;
     std::string recorded_outcome;
-    read_sidecar(file, recorded_spec, build, recorded_outcome);
+    RecordedOracles recorded_against;
+    read_sidecar(file, recorded_spec, build, recorded_outcome, recorded_against);
     if (options.boundary) {
       build.boundary = options.boundary->boundary;
       build.bigtet_factor = options.boundary->bigtet_factor;
@@ -201,6 +217,18 @@ std::vector<ReplayResult> replay_corpus(const std::string& path, const ReplayOpt
     use_build_threads(build, options.threads.value_or(build.threads));
     const std::vector<PredicateSpec> specs =
         options.backends.empty() ? std::vector<PredicateSpec>{recorded_spec} : options.backends;
+    const std::vector<std::string> against = options.against.value_or(recorded_against.names);
+    if (!against.empty() && !options.oracles)
+      throw std::invalid_argument(file.string() + " was compared with oracles and this replay has none to run");
+    // The hooks of the recorded names; a name no oracle has is the sidecar's defect.
+    const auto hooks = [&](const PredicateSpec& spec) {
+      try {
+        return options.oracles(against, spec, build);
+      } catch (const std::invalid_argument& e) {
+        if (options.against) throw;
+        throw InputError(recorded_against.sidecar, static_cast<long>(recorded_against.line), e.what());
+      }
+    };
     for (const auto& spec : specs) {
       ReplayResult r;
       r.file = file.string();
@@ -209,7 +237,8 @@ std::vector<ReplayResult> replay_corpus(const std::string& path, const ReplayOpt
       r.boundary = boundary_label(build);
       r.threads = build_thread_count(build);
       r.order = order_label(build);
-      r.run = run_case(points, spec, build);
+      r.against = against;
+      r.run = against.empty() ? run_case(points, spec, build) : run_case(points, spec, build, hooks(spec));
       results.push_back(std::move(r));
     }
   }

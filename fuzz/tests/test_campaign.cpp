@@ -221,6 +221,10 @@ TEST_CASE("a corpus sidecar that is wrong is refused with its file and line", "[
   CHECK(refusal("{\n  \"eps_mode\": \"loose\"\n}\n") == "2:bad eps_mode \"loose\" (expected absolute or relative)");
   CHECK(refusal("{\"predicates\": \"epsilon\", \"eps\": 1e-6, \"eps_mode\": \"relative\"}\n") == "accepted");
   CHECK(refusal("{\"predicates\": \"exact\", \"eps\": null, \"eps_mode\": null}\n") == "accepted");
+  // The oracles it was compared with: a list of names, else refused.
+  CHECK(refusal("{\n  \"against\": \"cgal\"\n}\n") == "2:bad against \"cgal\" (expected a list of oracle names)");
+  CHECK(refusal("{\n  \"against\": [\"\"]\n}\n").rfind("2:bad against", 0) == 0);
+  CHECK(refusal("{\"against\": []}\n") == "accepted");
   // A field named twice: refused, not the last one kept.
   CHECK(refusal("{\n  \"threads\": 2,\n  \"threads\": 1\n}\n") == "2:duplicate field 'threads'");
   // The refusal names the sidecar.
@@ -345,4 +349,54 @@ TEST_CASE("a threaded campaign's corpus records its threads and order and replay
     CHECK(p.threads == 2);
     CHECK(p.order == "input");
   }
+}
+
+TEST_CASE("a corpus entry that differed from an oracle is compared with it again when replayed",
+          "[fuzz][campaign][replay]") {
+  // An oracle that disagrees with every build of 9 or more points: the shrinker keeps 9.
+  const auto picky = [](const std::string& name) {
+    return OracleHook{name, [](std::span<const Point3> points, const BuildResult&) -> std::string {
+                        return points.size() >= 9 ? "too-many" : "";
+                      }};
+  };
+  TestFolder dir;
+  CampaignOptions o;
+  o.families = {"uniform"};
+  o.cases = 2;
+  o.min_points = 12;
+  o.max_points = 20;
+  o.backends = {spec("adaptive", true)};
+  o.oracles = {picky("picky")};
+  o.out_dir = dir.path.string();
+  const CampaignResult r = run_campaign(o);
+  REQUIRE(r.failing() == 2);
+  for (const auto& rec : r.records) {
+    CHECK(rec.run.outcome == "oracle-picky");
+    std::ifstream in(dir.path / (rec.corpus_file.substr(0, rec.corpus_file.size() - 5) + ".json"));
+    const auto j = nlohmann::json::parse(in);
+    CHECK(j.at("against") == nlohmann::json::array({"picky"}));
+    CHECK(j.at("reproduce_original").get<std::string>().find(" --against picky ") != std::string::npos);
+  }
+  std::vector<std::string> asked;
+  ReplayOptions replay;
+  replay.oracles = [&](const std::vector<std::string>& names, const PredicateSpec&, const BuildOptions&) {
+    asked.insert(asked.end(), names.begin(), names.end());
+    std::vector<OracleHook> hooks;
+    for (const auto& n : names) hooks.push_back(picky(n));
+    return hooks;
+  };
+  const auto replayed = replay_corpus(dir.path.string(), replay);
+  REQUIRE(replayed.size() == 2);
+  CHECK(asked == std::vector<std::string>{"picky", "picky"});
+  for (const auto& p : replayed) {
+    INFO(p.file);
+    CHECK(p.against == std::vector<std::string>{"picky"});
+    CHECK(p.run.outcome == "oracle-picky");  // the build alone is valid: before, the replay said so
+    CHECK(p.recorded_outcome == "oracle-picky");
+  }
+  // --against none given to the replay: the build alone, valid.
+  replay.against.emplace();
+  for (const auto& p : replay_corpus(dir.path.string(), replay)) CHECK(p.run.outcome == "valid");
+  // Without hooks to run, the recorded oracles cannot be compared: refused, not passed.
+  CHECK_THROWS_AS(replay_corpus(dir.path.string(), {}), std::invalid_argument);
 }
