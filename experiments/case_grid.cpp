@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string_view>
@@ -99,20 +101,65 @@ std::optional<CorpusName> parse_corpus_name(const std::string& file_name) {
 }
 
 std::vector<std::string> remove_corpus_names(const std::string& out_dir,
-                                             const std::function<bool(const CorpusName&)>& ours) {
+                                             const std::function<bool(const CorpusName&, const std::string&)>& ours) {
   std::vector<std::string> files;
   std::error_code ec;
-  for (const auto& e : fs::directory_iterator(fs::path(out_dir) / "corpus", ec))
-    if (const auto name = parse_corpus_name(e.path().filename().string()); name && ours(*name))
+  for (const auto& e : fs::directory_iterator(fs::path(out_dir) / "corpus", ec)) {
+    const std::string file_name = e.path().filename().string();
+    if (const auto name = parse_corpus_name(file_name); name && ours(*name, file_name))
       files.push_back(e.path().string());
+  }
   std::sort(files.begin(), files.end());
   return remove_output_set(files);
 }
 
+namespace {
+
+// The prefixes of the names before the one-to-one escape (2026-12-07): the peer with ':'
+// as '_', and in the Voronoi campaign '+' as 'p' too. Not one to one (dtlab:exact and
+// dtlab_exact shared a name), so such a file is a case's only when its sidecar says so.
+std::vector<std::string> legacy_corpus_prefixes(const std::string& peer, const std::string& source) {
+  std::string colon = peer + "-" + source;
+  std::replace(colon.begin(), colon.end(), ':', '_');
+  std::string plus = colon;
+  std::replace(plus.begin(), plus.end(), '+', 'p');
+  std::vector<std::string> out;
+  for (std::string* p : {&colon, &plus})
+    if (*p != corpus_prefix(peer, source) && std::find(out.begin(), out.end(), *p) == out.end()) out.push_back(*p);
+  return out;
+}
+
+// The "peer" of the sidecar of corpus name `n` (<dir>/<prefix>-n*-<index>.json, any n),
+// "" when there is none or it cannot be read.
+std::string sidecar_peer(const fs::path& dir, const std::string& file_name) {
+  fs::path side = dir / file_name;
+  side.replace_extension(".json");
+  std::ifstream in(side, std::ios::binary);
+  if (!in) return "";
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    return j.is_object() && j.contains("peer") && j["peer"].is_string() ? j["peer"].get<std::string>() : "";
+  } catch (const nlohmann::json::exception&) {
+    return "";
+  }
+}
+
+}  // namespace
+
 void remove_grid_corpus(const std::vector<std::string>& peers, const CaseGrid& grid) {
   std::set<std::pair<std::string, std::size_t>> cases;
-  for (const GridCase& c : grid_cases(peers, grid)) cases.insert({corpus_prefix(*c.peer, c.source->name), c.index});
-  remove_corpus_names(grid.out_dir, [&](const CorpusName& n) { return cases.count({n.prefix, n.index}) > 0; });
+  std::map<std::pair<std::string, std::size_t>, std::set<std::string>> legacy;  // (old prefix, case) -> peers
+  for (const GridCase& c : grid_cases(peers, grid)) {
+    cases.insert({corpus_prefix(*c.peer, c.source->name), c.index});
+    for (const std::string& old : legacy_corpus_prefixes(*c.peer, c.source->name))
+      legacy[{old, c.index}].insert(*c.peer);
+  }
+  const fs::path dir = fs::path(grid.out_dir) / "corpus";
+  remove_corpus_names(grid.out_dir, [&](const CorpusName& n, const std::string& file_name) {
+    if (cases.count({n.prefix, n.index})) return true;
+    const auto old = legacy.find({n.prefix, n.index});
+    return old != legacy.end() && old->second.count(sidecar_peer(dir, file_name)) > 0;
+  });
 }
 
 std::string save_corpus_points(const std::string& out_dir, const std::string& stem, const std::vector<Point3>& points) {

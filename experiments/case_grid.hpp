@@ -105,14 +105,17 @@ struct CorpusName {
 };
 std::optional<CorpusName> parse_corpus_name(const std::string& file_name);
 
-// Removes the files of <out_dir>/corpus with a corpus name that `ours` accepts (the
-// names a run writes), before the run writes any: an earlier run's failure that this
-// one does not repeat is not left beside its results. Returns the paths removed.
+// Removes the files of <out_dir>/corpus with a corpus name that `ours` accepts (given
+// the name and the file's name in the folder: the names a run writes), before the run
+// writes any: an earlier run's failure that this one does not repeat is not left beside
+// its results. Returns the paths removed.
 std::vector<std::string> remove_corpus_names(const std::string& out_dir,
-                                             const std::function<bool(const CorpusName&)>& ours);
+                                             const std::function<bool(const CorpusName&, const std::string&)>& ours);
 
 // remove_corpus_names for the cases of the grid (any size: their n is drawn afresh):
-// the entries a run of `peers` on it would write.
+// the entries a run of `peers` on it would write, and those an earlier dtlab wrote for
+// them under the names before the one-to-one escape (':' as '_', the Voronoi campaign's
+// '+' as 'p'), when their sidecar names the same peer.
 void remove_grid_corpus(const std::vector<std::string>& peers, const CaseGrid& grid);
 
 // Writes <out_dir>/corpus/<stem>.node (creating the folder); returns "corpus/<stem>.node".

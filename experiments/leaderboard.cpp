@@ -162,7 +162,7 @@ class Leaderboard {
     std::vector<std::string> files;
     for (const char* name : kRunFiles) files.push_back((dir / name).string());
     std::size_t removed = remove_output_set(files, {options.cgal_data}).size();
-    const auto any = [](const CorpusName&) { return true; };
+    const auto any = [](const CorpusName&, const std::string&) { return true; };
     removed += remove_corpus_names(dir.string(), any).size();
     removed += remove_corpus_names((dir / "voronoi").string(), any).size();
     if (removed) step("removed " + std::to_string(removed) + " files of an earlier run");

@@ -128,3 +128,31 @@ TEST_CASE("case grid: a run removes its own cases' corpus entries, any size, not
   CHECK_FALSE(fs::exists(corpus / mine));
   CHECK(fs::exists(corpus / theirs));
 }
+
+TEST_CASE("case grid: a run removes its cases' entries under the names an earlier dtlab gave them", "[case_grid]") {
+  TempDir dir;
+  CaseGrid g = small_grid();  // uniform and lattice, cases 0..2
+  g.out_dir = dir.path().string();
+  const fs::path corpus = dir.path() / "corpus";
+  fs::create_directories(corpus);
+  const auto entry = [&](const std::string& stem, const std::string& peer) {
+    std::ofstream(corpus / (stem + ".node")) << "x";
+    if (!peer.empty()) std::ofstream(corpus / (stem + ".json")) << nlohmann::json{{"peer", peer}}.dump();
+  };
+  // Before the one-to-one escape: voro++ as voropp (the Voronoi campaign), my_peer as
+  // my_peer (today my~5Fpeer; my_peer is today's name of my:peer).
+  entry("voropp-uniform-n9-1", "voro++");
+  entry("voro++-lattice-n9-2", "voro++");  // today's name
+  entry("my_peer-lattice-n7-0", "my_peer");
+  // The old name of a case of another peer, or without a sidecar to say whose: kept.
+  entry("my_peer-uniform-n7-0", "my:peer");
+  entry("voropp-uniform-n9-2", "");
+  entry("voropp-uniform-n9-3", "voro++");  // no case of the grid
+  remove_grid_corpus({"voro++", "my_peer"}, g);
+  for (const char* gone : {"voropp-uniform-n9-1.node", "voropp-uniform-n9-1.json", "voro++-lattice-n9-2.node",
+                           "voro++-lattice-n9-2.json", "my_peer-lattice-n7-0.node", "my_peer-lattice-n7-0.json"})
+    CHECK_FALSE(fs::exists(corpus / gone));
+  for (const char* kept : {"my_peer-uniform-n7-0.node", "my_peer-uniform-n7-0.json", "voropp-uniform-n9-2.node",
+                           "voropp-uniform-n9-3.node"})
+    CHECK(fs::exists(corpus / kept));
+}
