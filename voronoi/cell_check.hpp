@@ -153,19 +153,33 @@ inline double rounded_plane_tolerance(double e, double R, double D, double area2
   return (2 * e + theta * D) * (1 + 1e-12) + 0x1p-50 * D;
 }
 
-// Planar faces and convex (every vertex behind every face plane), within `tol`
-// (absolute length). With `skip_tiny`, faces of area below tol^2 (whose plane rounding
-// does not define) are not tested, and `*skipped` (if given) is set when there was
-// one; otherwise they are a defect ("zero-area face"). With `vertex_error` e > 0 a
-// face's tolerance is max(tol, rounded_plane_tolerance(e, ...)) (R: the face's farthest
-// corner from its first, D: the diagonal of the cell's vertices' bounding box), and `*widened` (if given) is set when
-// that was more than tol for a face tested; e = 0 tests with tol alone. The vertices are copied once per cell into
-// per-thread coordinate arrays for any_above_plane. With `volume` given and every face measured (the cell passed),
-// *volume is set to the cell's volume from the faces' normals: sum over faces of (o_f - v0) . n_f / 6 with o_f the
-// face's first corner and n_f its fan normal, cell_volume's fans (voronoi_check/tool_cells.hpp) summed in another
-// order; left as is when the test stopped early.
-inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip_tiny = false, bool* skipped = nullptr,
-                                     double vertex_error = 0, bool* widened = nullptr, double* volume = nullptr) {
+// How check_cell_convex tests a cell. `tol`: absolute length. `skip_tiny`: faces of area
+// below tol^2 (whose plane rounding does not define) are not tested; otherwise they are a
+// defect ("zero-area face"). `vertex_error` e > 0: a face's tolerance is max(tol,
+// rounded_plane_tolerance(e, ...)) (R: the face's farthest corner from its first, D: the
+// diagonal of the cell's vertices' bounding box); e = 0 tests with tol alone.
+struct ConvexTest {
+  double tol = 0;
+  bool skip_tiny = false;
+  double vertex_error = 0;
+};
+
+// What check_cell_convex found beside its verdict. `skipped`: a tiny face was not tested;
+// `widened`: some tested face's tolerance was above tol; `volume`: with every face
+// measured (the cell passed), the cell's volume from the faces' normals (sum over faces of
+// (o_f - v0) . n_f / 6, o_f the face's first corner, n_f its fan normal: cell_volume's
+// fans, voronoi_check/tool_cells.hpp, summed in another order); NaN when the test stopped
+// early.
+struct ConvexFindings {
+  bool skipped = false, widened = false;
+  double volume = NAN;
+};
+
+// Planar faces and convex (every vertex behind every face plane) as `test` says; "" or
+// the defect. The vertices are copied once per cell into per-thread coordinate arrays for
+// any_above_plane. `found` (if given) receives the findings above.
+inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& test, ConvexFindings* found = nullptr) {
+  const double tol = test.tol, vertex_error = test.vertex_error;
   using namespace vor;
   thread_local std::vector<double> xs, ys, zs;
   const std::size_t nv = c.vertices.size();
@@ -183,11 +197,11 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
     Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
     for (auto k = b + 1; k + 1 < e; ++k)
       n = n + cross(c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
-    if (volume) six_volume += dot(o - c.vertices[0], n);
+    six_volume += dot(o - c.vertices[0], n);
     const double area2 = norm(n);
     if (area2 <= tol * tol) {
-      if (!skip_tiny) return "zero-area face";
-      if (skipped) *skipped = true;
+      if (!test.skip_tiny) return "zero-area face";
+      if (found) found->skipped = true;
       continue;
     }
     double t = tol;
@@ -200,7 +214,7 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
                                                triangles);
       if (r > tol) {
         t = r;
-        if (widened) *widened = true;
+        if (found) found->widened = true;
       }
     }
     n = 1.0 / area2 * n;
@@ -208,7 +222,7 @@ inline std::string check_cell_convex(const VoronoiCell& c, double tol, bool skip
       if (std::abs(dot(n, c.vertices[c.face_vertices[k]] - o)) > t) return "non-planar face";
     if (any_above_plane(X, Y, Z, nv, n, o, t)) return "not convex";
   }
-  if (volume) *volume = six_volume / 6;
+  if (found) found->volume = six_volume / 6;
   return {};
 }
 
@@ -234,7 +248,7 @@ inline bool has_edge_within(const VoronoiCell& c, double tol) {
 // edge of length <= tol "zero-length", real ones included (has_edge_within).
 inline std::string check_cell(const VoronoiCell& c, double tol, double vertex_error = 0) {
   if (std::string why = check_cell_closed(c); !why.empty()) return why;
-  return check_cell_convex(c, tol, true, nullptr, vertex_error);
+  return check_cell_convex(c, {tol, true, vertex_error});
 }
 
 }  // namespace dtlab

@@ -144,8 +144,9 @@ Rounded judge_rounded(const ConvexCell& c, double tol, double vertex_error) {
   if (c.empty()) return {true, true};
   const VoronoiCell view = cell_view(c);
   if (!check_cell_closed(view).empty()) return {false, false};
-  bool tiny_face = false;
-  const bool convex = check_cell_convex(view, tol, true, &tiny_face, vertex_error).empty();
+  ConvexFindings found;
+  const bool convex = check_cell_convex(view, {tol, true, vertex_error}, &found).empty();
+  const bool tiny_face = found.skipped;
   const bool short_edge = has_edge_within(view, tol);  // implied by a collapsed one
   const bool representable = convex && !(short_edge && has_edge_within(view, 0));
   return {representable && !short_edge && !tiny_face, representable};

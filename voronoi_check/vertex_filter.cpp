@@ -110,17 +110,13 @@ namespace {
 
 // The bound's arithmetic for one lane, without a branch (every condition of the
 // derivation folded into `ok`), so that BoundBatch's loop runs it on several lanes per
-// instruction: the same operations in the same order whatever the width.
-struct MeetInputs {
-  double a[3], b[3], d[3];  // the normals
-  double ca, cb, cd;        // the offsets
-  double norms;             // the product of the three norms, as planes_meet forms it
-};
-
-[[gnu::always_inline]] inline bool meet_lane(const MeetInputs& in, PlanesMeet& out) {
+// instruction: the same operations in the same order whatever the width. Reads fields
+// 0-12 of `in` (the planes).
+[[gnu::always_inline]] inline bool meet_lane(const BoundInputs& in, PlanesMeet& out) {
   constexpr double u = 0x1p-53;
-  const double *a = in.a, *b = in.b, *d = in.d;
-  out.norms = in.norms;
+  const double *a = in.f, *b = in.f + 3, *d = in.f + 6;
+  const double in_ca = in.f[9], in_cb = in.f[10], in_cd = in.f[11];
+  out.norms = in.f[12];
   bool ok = (out.norms >= 0x1p-900) & (out.norms <= 0x1p900);
   double bd[3], da[3], ab[3], pbd[3], pda[3], pab[3];
   cross(b, d, bd);
@@ -133,12 +129,12 @@ struct MeetInputs {
   cross(a, b, ab);
   abs_cross(d, a, pda);
   abs_cross(a, b, pab);
-  const double ca = std::abs(in.ca), cb = std::abs(in.cb), cd = std::abs(in.cd);
+  const double ca = std::abs(in_ca), cb = std::abs(in_cb), cd = std::abs(in_cd);
   const double inv = 1 / det, inv_abs = std::abs(inv);
   for (int j = 0; j < 3; ++j) {
     const double p_n = ca * pbd[j] + cb * pda[j] + cd * pab[j];
     ok &= p_n <= 0x1p900;
-    out.x[j] = (in.ca * bd[j] + in.cb * da[j] + in.cd * ab[j]) * inv;
+    out.x[j] = (in_ca * bd[j] + in_cb * da[j] + in_cd * ab[j]) * inv;
     const double ax = std::abs(out.x[j]);
     // An underflowed term of p_n (below 2^-900) errs by far less than u 2^-900.
     out.error[j] = 1.01 * (13 * u * std::max(p_n, 0x1p-900) + ax * out.det_error) * inv_abs + 2.02 * u * ax;
@@ -147,9 +143,11 @@ struct MeetInputs {
   return ok;
 }
 
-// vertex_distance_bound's last steps for one lane: t = p - site; -1 when not certain.
-[[gnu::always_inline]] inline double bound_lane(const MeetInputs& in, const double t[3]) {
+// vertex_distance_bound's last steps for one lane (t = p - site: fields 13-15); -1 when
+// not certain.
+[[gnu::always_inline]] inline double bound_lane(const BoundInputs& in) {
   constexpr double u = 0x1p-53;
+  const double* t = in.f + 13;
   PlanesMeet m;
   bool ok = meet_lane(in, m) & (m.det - m.det_error > 2e-9 * m.norms);
   double dist = 0, bound = 0;
@@ -164,32 +162,24 @@ struct MeetInputs {
   return ok ? r : -1;
 }
 
-MeetInputs meet_inputs(const FilterPlane& a, const FilterPlane& b, const FilterPlane& d) {
-  MeetInputs in;
-  for (int j = 0; j < 3; ++j) in.a[j] = a.n[j], in.b[j] = b.n[j], in.d[j] = d.n[j];
-  in.ca = a.c, in.cb = b.c, in.cd = d.c;
-  in.norms = a.norm * b.norm * d.norm;
-  return in;
-}
-
 }  // namespace
 
 bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& d, PlanesMeet& out) {
-  return a.ok && b.ok && d.ok && meet_lane(meet_inputs(a, b, d), out);
+  const Point3 none{0, 0, 0};  // fields 13-15, not read
+  return a.ok && b.ok && d.ok && meet_lane(bound_inputs(none, none, a, b, d), out);
 }
 
 double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
                              const FilterPlane& d) {
   if (!(a.ok && b.ok && d.ok)) return -1;
-  const double t[3] = {p.x - site.x, p.y - site.y, p.z - site.z};
-  return bound_lane(meet_inputs(a, b, d), t);
+  return bound_lane(bound_inputs(p, site, a, b, d));
 }
 
 void BoundBatch::start(std::size_t lanes) {
   size_ = 0;
   if (lanes > room_) {
     room_ = std::max(lanes, 2 * room_);
-    data_.resize(count_ * room_);
+    data_.resize(BoundInputs::kFields * room_);
   }
 }
 
@@ -201,11 +191,9 @@ namespace {
 // ThreadSanitizer's runtime is up and crashes the TSan build at load.)
 [[gnu::always_inline]] inline void bounds_loop(const double* const* f, std::size_t n, double* __restrict out) {
   for (std::size_t k = 0; k < n; ++k) {
-    MeetInputs in;
-    for (int j = 0; j < 3; ++j) in.a[j] = f[j][k], in.b[j] = f[3 + j][k], in.d[j] = f[6 + j][k];
-    in.ca = f[9][k], in.cb = f[10][k], in.cd = f[11][k], in.norms = f[12][k];
-    const double t[3] = {f[13][k], f[14][k], f[15][k]};
-    out[k] = bound_lane(in, t);
+    BoundInputs in;
+    for (int j = 0; j < BoundInputs::kFields; ++j) in.f[j] = f[j][k];
+    out[k] = bound_lane(in);
   }
 }
 [[gnu::target("avx2")]] void bounds_avx2(const double* const* f, std::size_t n, double* __restrict out) {
@@ -216,8 +204,8 @@ void bounds_default(const double* const* f, std::size_t n, double* __restrict ou
 }  // namespace
 
 void BoundBatch::bounds(std::span<double> out) const {
-  const double* f[count_];
-  for (int j = 0; j < count_; ++j) f[j] = data_.data() + j * room_;
+  const double* f[BoundInputs::kFields];
+  for (int j = 0; j < BoundInputs::kFields; ++j) f[j] = data_.data() + j * room_;
   static const bool avx2 = __builtin_cpu_supports("avx2");
   (avx2 ? bounds_avx2 : bounds_default)(f, std::min(size_, out.size()), out.data());
 }

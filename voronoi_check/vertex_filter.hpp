@@ -48,6 +48,25 @@ bool planes_meet(const FilterPlane& a, const FilterPlane& b, const FilterPlane& 
 double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
                              const FilterPlane& d);
 
+// What the bound reads of one vertex, in one layout for vertex_distance_bound and for
+// BoundBatch's lanes: the three normals, their offsets, the product of the norms as
+// planes_meet forms it ((a b) d; NaN when a plane is not ok, which fails every test of
+// the bound) and p - site.
+struct BoundInputs {
+  static constexpr int kFields = 16;
+  double f[kFields];  // a.n (0-2), b.n (3-5), d.n (6-8), a.c, b.c, d.c (9-11), norms (12), p - site (13-15)
+};
+
+inline BoundInputs bound_inputs(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
+                                const FilterPlane& d) {
+  BoundInputs in;
+  for (int j = 0; j < 3; ++j) in.f[j] = a.n[j], in.f[3 + j] = b.n[j], in.f[6 + j] = d.n[j];
+  in.f[9] = a.c, in.f[10] = b.c, in.f[11] = d.c;
+  in.f[12] = a.ok && b.ok && d.ok ? a.norm * b.norm * d.norm : NAN;
+  in.f[13] = p.x - site.x, in.f[14] = p.y - site.y, in.f[15] = p.z - site.z;
+  return in;
+}
+
 // vertex_distance_bound for many vertices at once: the lanes are stored field by field
 // and bounds() runs them through one loop, several lanes per instruction (SSE2, or
 // AVX2 where the machine has it), each lane bit for bit vertex_distance_bound's value.
@@ -62,21 +81,17 @@ class BoundBatch {
   void bounds(std::span<double> out) const;
 
  private:
-  static constexpr int count_ = 16;  // a, b, d normals (9), offsets (3), norms, p - site (3)
-  std::vector<double> data_;         // field f of lane k at f * room_ + k
+  std::vector<double> data_;  // field j of lane k at j * room_ + k
   std::size_t room_ = 0, size_ = 0;
 };
 
-// Inline: called per vertex. The norms' product as planes_meet forms it ((a b) d).
+// Inline: called per vertex.
 inline bool BoundBatch::add(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
                             const FilterPlane& d) {
   if (size_ == room_) return false;
-  double* f = data_.data() + size_++;
-  const std::size_t r = room_;
-  for (int j = 0; j < 3; ++j) f[j * r] = a.n[j], f[(3 + j) * r] = b.n[j], f[(6 + j) * r] = d.n[j];
-  f[9 * r] = a.c, f[10 * r] = b.c, f[11 * r] = d.c;
-  f[12 * r] = a.ok && b.ok && d.ok ? a.norm * b.norm * d.norm : NAN;  // a plane not ok: NaN fails every test
-  f[13 * r] = p.x - site.x, f[14 * r] = p.y - site.y, f[15 * r] = p.z - site.z;
+  const BoundInputs in = bound_inputs(p, site, a, b, d);
+  double* lane = data_.data() + size_++;
+  for (int j = 0; j < BoundInputs::kFields; ++j) lane[j * room_] = in.f[j];
   return true;
 }
 

@@ -476,13 +476,14 @@ class Judge {
     p.faces += c.face_count();
     p.vertices += c.vertices.size();
     cell_incidence(c, s.incidence);
-    double volume = NAN;  // from the convexity test's face normals, when it ran through
+    ConvexFindings found;  // its volume from the face normals, when the test ran through
     std::string why = check_cell_closed(c, s.incidence);
     if (!why.empty())
       ++p.not_closed;
     else
-      why = check_cell_convex(c, convex_tol_, true, nullptr, vertex_error_, &p.convex_widened, &volume);
-    p.volume_sum += std::isnan(volume) ? cell_volume(c) : volume;
+      why = check_cell_convex(c, {convex_tol_, true, vertex_error_}, &found);
+    p.convex_widened = p.convex_widened || found.widened;
+    p.volume_sum += std::isnan(found.volume) ? cell_volume(c) : found.volume;
     if (!why.empty()) add(p, VoronoiDefect::not_convex, site, -1, 0, why);
     if (site < 0 || static_cast<std::size_t>(site) >= sites_.size()) return;
     s.errors.resize(c.vertices.size());

@@ -92,7 +92,7 @@ TEST_CASE("volume_rounding_bound and rounded_plane_tolerance hold for random mov
       c.clip(n, 0.6 * norm(n) * h, k, 1e-12);
     }
     const OwnedCell base = owned(c);
-    REQUIRE(check_cell_convex(base.view(), 1e-12).empty());
+    REQUIRE(check_cell_convex(base.view(), {1e-12}).empty());
     for (double d : {1e-9, 1e-6, 1e-4 * h, 0.05 * h}) {
       const VolumeRoundingBound b = volume_rounding_bound(base.view(), d);
       for (int trial = 0; trial < 20; ++trial) {
@@ -101,7 +101,7 @@ TEST_CASE("volume_rounding_bound and rounded_plane_tolerance hold for random mov
         INFO("cell " << cell << " d " << d << ": change " << change << ", bound " << b.volume);
         CHECK(change <= b.volume);
         // The moved cell is convex within what the move allows for each face's plane.
-        CHECK(check_cell_convex(m.view(), 1e-15, true, nullptr, d).empty());
+        CHECK(check_cell_convex(m.view(), {1e-15, true, d}).empty());
       }
     }
   }
@@ -112,15 +112,15 @@ TEST_CASE("check_cell_convex: a vertex moved beyond what the rounding allows is 
   box.reset({{0, 0, 0}, {1, 1, 1}});
   OwnedCell m = owned(box);
   const double e = 1e-6;
-  bool widened = false;
-  CHECK(check_cell_convex(m.view(), 1e-15, true, nullptr, e, &widened).empty());
-  CHECK(widened);
+  ConvexFindings found;
+  CHECK(check_cell_convex(m.view(), {1e-15, true, e}, &found).empty());
+  CHECK(found.widened);
   // One corner pushed out along x by 100 e: beyond 2 e + theta D for the unit faces.
   for (auto& v : m.vertices)
     if (v.x == 1 && v.y == 1 && v.z == 1) v.x += 100 * e;
-  CHECK_FALSE(check_cell_convex(m.view(), 1e-15, true, nullptr, e).empty());
+  CHECK_FALSE(check_cell_convex(m.view(), {1e-15, true, e}).empty());
   // e = 0: the tolerance alone, as before.
-  CHECK_FALSE(check_cell_convex(m.view(), 1e-9, true).empty());
+  CHECK_FALSE(check_cell_convex(m.view(), {1e-9, true}).empty());
 }
 
 TEST_CASE("check_cell: a corner pair rounded to one point passes, a cell left open does not") {

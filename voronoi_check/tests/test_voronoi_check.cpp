@@ -266,9 +266,9 @@ TEST_CASE("the convexity test's volume is cell_volume's, and is left unset when 
   double fused_sum = 0, fanned_sum = 0;
   for (std::size_t k = 0; k < t.size(); ++k) {
     const VoronoiCell c = t.view(k);
-    double volume = NAN;
-    REQUIRE(check_cell_convex(c, 1e-12, true, nullptr, 0, nullptr, &volume).empty());
-    const double fanned = cell_volume(c);
+    ConvexFindings found;
+    REQUIRE(check_cell_convex(c, {1e-12, true}, &found).empty());
+    const double volume = found.volume, fanned = cell_volume(c);
     CHECK(std::abs(volume - fanned) <= 1e-13 * fanned);
     fused_sum += volume, fanned_sum += fanned;
   }
@@ -276,7 +276,7 @@ TEST_CASE("the convexity test's volume is cell_volume's, and is left unset when 
   CHECK(std::abs(fanned_sum - kBox.volume()) <= 1e-12 * kBox.volume());
   // A vertex pushed far out: not convex, and no volume from a test cut short.
   const ToolCells bent = mutated(t, 0, [](auto&, auto& vs, auto&, auto&, auto&) { vs[0] = 2.0 * vs[0] - vs[1]; });
-  double volume = NAN;
-  CHECK_FALSE(check_cell_convex(bent.view(0), 1e-12, true, nullptr, 0, nullptr, &volume).empty());
-  CHECK(std::isnan(volume));
+  ConvexFindings found;
+  CHECK_FALSE(check_cell_convex(bent.view(0), {1e-12, true}, &found).empty());
+  CHECK(std::isnan(found.volume));
 }
