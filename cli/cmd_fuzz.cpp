@@ -269,11 +269,10 @@ int run_replay(const FuzzArgs& a) {
     failing += !r.run.ok();
     if (a.json) {
       nlohmann::json line = {
-          {"file", r.file},           {"backend", r.backend},           {"boundary", r.boundary},
-          {"order", r.order},         {"threads", r.threads},           {"parallel_passes", r.run.parallel_passes},
-          {"against", r.against},     {"outcome", r.run.outcome},       {"recorded", r.recorded_outcome},
-          {"ok", r.run.ok()},
-          {"detail", r.run.detail},   {"defects", r.run.defects}};
+          {"file", r.file},       {"backend", r.backend},     {"boundary", r.boundary},
+          {"order", r.order},     {"threads", r.threads},     {"parallel_passes", r.run.parallel_passes},
+          {"against", r.against}, {"outcome", r.run.outcome}, {"recorded", r.recorded_outcome},
+          {"ok", r.run.ok()},     {"detail", r.run.detail},   {"defects", r.run.defects}};
       if (!r.run.ok()) line["witness"] = witness_json(r);
       lines.push_back(std::move(line));
     } else {
@@ -416,10 +415,11 @@ void add_fuzz_command(CLI::App& app, int& rc) {
   sub->add_flag_callback(
       "--relative-eps", [args] { args->kernel.eps_mode = "relative"; }, "the old spelling of --eps-mode relative");
   args->against_option =
-      sub->add_option("--against,--oracle", args->oracle,
-                      "none, or a comma list of peers to compare with (cgal, tetgen, qhull, ...), as in `dtlab oracle`; "
-                      "serial: a --threads build against the serial build, tet for tet (one backend, sos); "
-                      "with --replay: instead of each entry's recorded oracles; --oracle is the old spelling")
+      sub->add_option(
+             "--against,--oracle", args->oracle,
+             "none, or a comma list of peers to compare with (cgal, tetgen, qhull, ...), as in `dtlab oracle`; "
+             "serial: a --threads build against the serial build, tet for tet (one backend, sos); "
+             "with --replay: instead of each entry's recorded oracles; --oracle is the old spelling")
           ->capture_default_str();
   sub->add_option(
       "--target", args->target,

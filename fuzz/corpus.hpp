@@ -55,7 +55,7 @@ struct ReplayOptions {
   std::optional<unsigned> threads;          // nullopt: each entry's recorded threads; 0: all
   std::optional<InsertionOrder> order;      // nullopt: each entry's recorded order
   std::optional<std::vector<std::string>> against;  // nullopt: each entry's recorded oracles
-  OracleFactory oracles;                    // needed when an entry is compared with oracles
+  OracleFactory oracles;                            // needed when an entry is compared with oracles
 };
 
 // `path`: a .node file, a corpus folder, or a campaign folder (its corpus/ is used).
