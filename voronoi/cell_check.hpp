@@ -11,10 +11,7 @@
 #include <utility>
 #include <vector>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
+#include "voronoi/above_plane.hpp"
 #include "voronoi/voronoi.hpp"
 
 namespace dtlab {
@@ -115,29 +112,6 @@ inline std::string check_cell_closed(const VoronoiCell& c) {
   thread_local CellIncidence in;
   cell_incidence(c, in);
   return check_cell_closed(c, in);
-}
-
-// Whether n . (p_i - o) > tol for some i < count (p_i = (X[i], Y[i], Z[i])), with the
-// products and sums of dot(n, p - o) in that order: two points at a time with SSE2,
-// the rest (or every point without SSE2) one at a time, the same answer either way.
-inline bool any_above_plane(const double* X, const double* Y, const double* Z, std::size_t count, const Point3& n,
-                            const Point3& o, double tol) {
-  std::size_t i = 0;
-  bool above = false;
-#if defined(__SSE2__)
-  const __m128d nx = _mm_set1_pd(n.x), ny = _mm_set1_pd(n.y), nz = _mm_set1_pd(n.z);
-  const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z), t = _mm_set1_pd(tol);
-  __m128d any = _mm_setzero_pd();
-  for (; i + 2 <= count; i += 2) {
-    const __m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, _mm_sub_pd(_mm_loadu_pd(X + i), ox)),
-                                            _mm_mul_pd(ny, _mm_sub_pd(_mm_loadu_pd(Y + i), oy))),
-                                 _mm_mul_pd(nz, _mm_sub_pd(_mm_loadu_pd(Z + i), oz)));
-    any = _mm_or_pd(any, _mm_cmpgt_pd(d, t));
-  }
-  above = _mm_movemask_pd(any) != 0;
-#endif
-  for (; i < count; ++i) above |= n.x * (X[i] - o.x) + n.y * (Y[i] - o.y) + n.z * (Z[i] - o.z) > tol;
-  return above;
 }
 
 // The most a vertex of a cell can lie beyond a face's computed plane when each vertex is

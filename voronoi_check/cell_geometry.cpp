@@ -61,7 +61,9 @@ struct VertexScratch {
   std::vector<L> face_norm;
   std::vector<char> face_ok, face_ld;
   std::vector<FilterPlane> filter;
-  std::vector<std::size_t> planes;  // the faces at one vertex with a plane
+  std::array<std::uint32_t, 8> plane_at{};  // the faces at one vertex with a plane (at most 8) ...
+  std::size_t plane_count = 0;              // ... so many of them
+  std::span<const std::uint32_t> planes() const { return {plane_at.data(), plane_count}; }
   BoundBatch batch;                 // the vertices on three planes, for the filter
   std::vector<std::uint32_t> batched;
   std::vector<double> bound;
@@ -73,7 +75,7 @@ std::optional<L> vertex_error(const Point3& p, const Point3& site, const VertexS
   L best = 0, det = 0;
   std::array<L, 3> bd{};
   std::array<std::size_t, 3> pick{};
-  const auto& pl = s.planes;
+  const auto pl = s.planes();
   if (pl.size() == 3) {
     // The one triple (a simple vertex: nearly all of them), as the loop below takes it.
     bd = lcross(s.face_plane[pl[1]].n, s.face_plane[pl[2]].n);
@@ -116,30 +118,35 @@ void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<cons
   s.face_ok.resize(nf);
   s.face_ld.assign(nf, 0);
   s.filter.resize(nf);
-  for (std::size_t f = 0; f < nf; ++f) s.face_ok[f] = filter_plane(c.face_neighbor[f], sites, st, box, s.filter[f]);
-  // The faces with a plane at vertex v (at most 8), into s.planes.
+  filter_planes(c.face_neighbor, sites, st, box, s.filter.data(), s.face_ok.data());
+  // The faces with a plane at vertex v (at most 8), into s.planes().
+  const char* face_ok = s.face_ok.data();
   const auto gather_planes = [&](std::size_t v) {
-    s.planes.clear();
+    std::size_t n = 0;
     for (auto f : in.faces(static_cast<std::uint32_t>(v))) {
-      if (s.planes.size() == 8) break;
-      if (s.face_ok[f]) s.planes.push_back(f);
+      if (n == s.plane_at.size()) break;
+      s.plane_at[n] = f;
+      n += face_ok[f] != 0;
     }
+    s.plane_count = n;
   };
   // The filter first, on every vertex of three planes at once; the solve for the rest.
   s.batch.start(c.vertices.size());
-  s.batched.clear();
+  s.batched.resize(c.vertices.size());
+  std::size_t batched = 0;
   if (below >= 0)
     for (std::size_t v = 0; v < c.vertices.size(); ++v) {
       gather_planes(v);
-      if (s.planes.size() != 3) continue;
-      s.batch.add(c.vertices[v], st, s.filter[s.planes[0]], s.filter[s.planes[1]], s.filter[s.planes[2]]);
-      s.batched.push_back(static_cast<std::uint32_t>(v));
+      if (s.plane_count != 3) continue;
+      const auto& pl = s.plane_at;
+      s.batch.add(c.vertices[v], st, s.filter[pl[0]], s.filter[pl[1]], s.filter[pl[2]]);
+      s.batched[batched++] = static_cast<std::uint32_t>(v);
     }
   s.bound.resize(s.batch.size());
   s.batch.bounds(s.bound);
   std::size_t next = 0;  // the next batched vertex
   for (std::size_t v = 0; v < c.vertices.size(); ++v) {
-    if (next < s.batched.size() && s.batched[next] == v) {
+    if (next < batched && s.batched[next] == v) {
       const double u = s.bound[next++];
       if (u >= 0 && u <= below) {
         out[v] = VertexError{0, true, true};
@@ -147,7 +154,7 @@ void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<cons
       }
     }
     gather_planes(v);
-    for (auto f : s.planes)
+    for (auto f : s.planes())
       if (!s.face_ld[f]) {
         plane_of(c.face_neighbor[f], sites, st, box, s.face_plane[f]);
         s.face_norm[f] = lnorm(s.face_plane[f].n);

@@ -93,6 +93,11 @@ bool filter_plane(std::int32_t tag, std::span<const Point3> sites, const Point3&
   return true;
 }
 
+void filter_planes(std::span<const std::int32_t> tags, std::span<const Point3> sites, const Point3& site,
+                   const Box& box, FilterPlane* out, char* found) {
+  for (std::size_t f = 0; f < tags.size(); ++f) found[f] = filter_plane(tags[f], sites, site, box, out[f]);
+}
+
 namespace {
 
 [[gnu::always_inline]] inline void cross(const double* a, const double* b, double* out) {

@@ -29,6 +29,11 @@ struct FilterPlane {
 bool filter_plane(std::int32_t tag, std::span<const Point3> sites, const Point3& site, const vor::Box& box,
                   FilterPlane& out);
 
+// filter_plane for every face of a cell: out[f] and found[f] (its return value) for the
+// neighbour tags[f]; one call per cell.
+void filter_planes(std::span<const std::int32_t> tags, std::span<const Point3> sites, const Point3& site,
+                   const vor::Box& box, FilterPlane* out, char* found);
+
 // Where planes a, b, d meet (relative to their site), in doubles: x, and per
 // coordinate a bound on its error against the exact point (the planes of the exact
 // inputs). False when the bound does not hold or the planes are too ill-conditioned
@@ -57,13 +62,21 @@ struct BoundInputs {
   double f[kFields];  // a.n (0-2), b.n (3-5), d.n (6-8), a.c, b.c, d.c (9-11), norms (12), p - site (13-15)
 };
 
+// The fields of BoundInputs for one vertex, each given to put(field, value): the one
+// place the layout is written, for a BoundInputs and for a BoundBatch lane alike.
+template <class Put>
+[[gnu::always_inline]] inline void put_bound_inputs(const Point3& p, const Point3& site, const FilterPlane& a,
+                                                    const FilterPlane& b, const FilterPlane& d, Put&& put) {
+  for (int j = 0; j < 3; ++j) put(j, a.n[j]), put(3 + j, b.n[j]), put(6 + j, d.n[j]);
+  put(9, a.c), put(10, b.c), put(11, d.c);
+  put(12, a.ok && b.ok && d.ok ? a.norm * b.norm * d.norm : NAN);
+  put(13, p.x - site.x), put(14, p.y - site.y), put(15, p.z - site.z);
+}
+
 inline BoundInputs bound_inputs(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
                                 const FilterPlane& d) {
   BoundInputs in;
-  for (int j = 0; j < 3; ++j) in.f[j] = a.n[j], in.f[3 + j] = b.n[j], in.f[6 + j] = d.n[j];
-  in.f[9] = a.c, in.f[10] = b.c, in.f[11] = d.c;
-  in.f[12] = a.ok && b.ok && d.ok ? a.norm * b.norm * d.norm : NAN;
-  in.f[13] = p.x - site.x, in.f[14] = p.y - site.y, in.f[15] = p.z - site.z;
+  put_bound_inputs(p, site, a, b, d, [&](int j, double v) { in.f[j] = v; });
   return in;
 }
 
@@ -89,9 +102,9 @@ class BoundBatch {
 inline bool BoundBatch::add(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
                             const FilterPlane& d) {
   if (size_ == room_) return false;
-  const BoundInputs in = bound_inputs(p, site, a, b, d);
   double* lane = data_.data() + size_++;
-  for (int j = 0; j < BoundInputs::kFields; ++j) lane[j * room_] = in.f[j];
+  const std::size_t r = room_;
+  put_bound_inputs(p, site, a, b, d, [&](int j, double v) { lane[j * r] = v; });
   return true;
 }
 
