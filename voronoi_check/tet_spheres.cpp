@@ -13,26 +13,46 @@ namespace dtlab {
 std::vector<TetSphere> tet_spheres(std::span<const Point3> p, std::span<const Tet> tets, unsigned threads) {
   std::vector<TetSphere> out(tets.size());
   const vor::Box no_walls{};  // the planes are bisectors only
+  constexpr std::size_t kLanes = 256;
   parallel_chunks(tets.size(), threads, 4096, [&](std::size_t b, std::size_t e, unsigned) {
-    for (std::size_t t = b; t < e; ++t) {
-      const Tet& q = tets[t];
-      const Point3& o = p[q[0]];
-      TetSphere& s = out[t];
-      s.error = INFINITY;
-      FilterPlane pl[3];
-      bool ok = true;
-      for (int k = 0; k < 3; ++k)  // an id beyond int32 would read as a wall: left uncertified
-        ok = ok && q[k + 1] <= 0x7FFFFFFFu && filter_plane(static_cast<std::int32_t>(q[k + 1]), p, o, no_walls, pl[k]);
-      PlanesMeet m;
-      if (!ok || !planes_meet(pl[0], pl[1], pl[2], m)) continue;
-      // The centre o + x: one rounding more per coordinate.
-      double err = 0;
-      const double oc[3] = {o.x, o.y, o.z};
-      for (int j = 0; j < 3; ++j) {
-        s.c[j] = oc[j] + m.x[j];
-        err = std::max(err, m.error[j] + 0x1.02p-53 * std::abs(s.c[j]));
+    // The planes of kLanes tets at a time into one batch; where they meet, all at once.
+    thread_local BoundBatch batch;
+    thread_local std::vector<std::uint32_t> lane_tet;
+    thread_local std::vector<PlanesMeet> meet;
+    thread_local std::vector<char> found;
+    for (std::size_t t0 = b; t0 < e; t0 += kLanes) {
+      const std::size_t t1 = std::min(e, t0 + kLanes);
+      batch.start(kLanes);
+      lane_tet.clear();
+      for (std::size_t t = t0; t < t1; ++t) {
+        const Tet& q = tets[t];
+        const Point3& o = p[q[0]];
+        out[t].error = INFINITY;
+        FilterPlane pl[3];
+        bool ok = true;
+        for (int k = 0; k < 3; ++k)  // an id beyond int32 would read as a wall: left uncertified
+          ok =
+              ok && q[k + 1] <= 0x7FFFFFFFu && filter_plane(static_cast<std::int32_t>(q[k + 1]), p, o, no_walls, pl[k]);
+        if (!ok) continue;
+        batch.add(o, o, pl[0], pl[1], pl[2]);
+        lane_tet.push_back(static_cast<std::uint32_t>(t));
       }
-      if (std::isfinite(err)) s.error = err;
+      meet.resize(lane_tet.size());
+      found.resize(lane_tet.size());
+      batch.meets(meet, found);
+      for (std::size_t k = 0; k < lane_tet.size(); ++k) {
+        if (!found[k]) continue;
+        TetSphere& s = out[lane_tet[k]];
+        const Point3& o = p[tets[lane_tet[k]][0]];
+        // The centre o + x: one rounding more per coordinate.
+        double err = 0;
+        const double oc[3] = {o.x, o.y, o.z};
+        for (int j = 0; j < 3; ++j) {
+          s.c[j] = oc[j] + meet[k].x[j];
+          err = std::max(err, meet[k].error[j] + 0x1.02p-53 * std::abs(s.c[j]));
+        }
+        if (std::isfinite(err)) s.error = err;
+      }
     }
   });
   return out;

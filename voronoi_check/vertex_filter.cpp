@@ -206,13 +206,40 @@ namespace {
 }
 void bounds_default(const double* const* f, std::size_t n, double* __restrict out) { bounds_loop(f, n, out); }
 
+// The same for planes_meet (the planes' fields 0-12 only).
+[[gnu::always_inline]] inline void meets_loop(const double* const* f, std::size_t n, PlanesMeet* __restrict out,
+                                              char* __restrict found) {
+  for (std::size_t k = 0; k < n; ++k) {
+    BoundInputs in;
+    for (int j = 0; j < 13; ++j) in.f[j] = f[j][k];
+    found[k] = meet_lane(in, out[k]);
+  }
+}
+[[gnu::target("avx2")]] void meets_avx2(const double* const* f, std::size_t n, PlanesMeet* __restrict out,
+                                        char* __restrict found) {
+  meets_loop(f, n, out, found);
+}
+void meets_default(const double* const* f, std::size_t n, PlanesMeet* __restrict out, char* __restrict found) {
+  meets_loop(f, n, out, found);
+}
+
+bool have_avx2() {
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2;
+}
+
 }  // namespace
 
 void BoundBatch::bounds(std::span<double> out) const {
   const double* f[BoundInputs::kFields];
   for (int j = 0; j < BoundInputs::kFields; ++j) f[j] = data_.data() + j * room_;
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  (avx2 ? bounds_avx2 : bounds_default)(f, std::min(size_, out.size()), out.data());
+  (have_avx2() ? bounds_avx2 : bounds_default)(f, std::min(size_, out.size()), out.data());
+}
+
+void BoundBatch::meets(std::span<PlanesMeet> out, std::span<char> found) const {
+  const double* f[BoundInputs::kFields];
+  for (int j = 0; j < BoundInputs::kFields; ++j) f[j] = data_.data() + j * room_;
+  (have_avx2() ? meets_avx2 : meets_default)(f, std::min({size_, out.size(), found.size()}), out.data(), found.data());
 }
 
 }  // namespace dtlab

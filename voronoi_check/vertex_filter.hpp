@@ -80,9 +80,10 @@ inline BoundInputs bound_inputs(const Point3& p, const Point3& site, const Filte
   return in;
 }
 
-// vertex_distance_bound for many vertices at once: the lanes are stored field by field
-// and bounds() runs them through one loop, several lanes per instruction (SSE2, or
-// AVX2 where the machine has it), each lane bit for bit vertex_distance_bound's value.
+// vertex_distance_bound (or planes_meet) for many vertices at once: the lanes are stored
+// field by field and bounds() (meets()) runs them through one loop, several lanes per
+// instruction (SSE2, or AVX2 where the machine has it), each lane bit for bit the scalar
+// function's value.
 class BoundBatch {
  public:
   // Empties the batch, with room for `lanes` lanes (no allocation once it is large enough).
@@ -92,6 +93,9 @@ class BoundBatch {
   std::size_t size() const { return size_; }
   // out[k]: the bound of the k-th lane added (out holds at least size() values).
   void bounds(std::span<double> out) const;
+  // out[k] and found[k]: planes_meet of the k-th lane's planes and its return value, bit
+  // for bit (the lane's point is not read; out and found hold at least size() values).
+  void meets(std::span<PlanesMeet> out, std::span<char> found) const;
 
  private:
   std::vector<double> data_;  // field j of lane k at j * room_ + k
