@@ -157,6 +157,20 @@ import json, sys; r = json.load(open(sys.argv[1]))['results'][0]
 assert (r['threads'], r['order'], r['outcome']) == (1, 'brio', 'valid'), r" "$tmp/out"
 printf '{\n  "outcome": "valid",\n  "threads": 0\n}\n' > "$tmp/rt/e.json"
 file_error fuzz "$tmp/rt/e.json" 3 -- fuzz --replay "$tmp/rt/e.node"
+# The oracles an entry was compared with ("against") are run again; --against overrides; a
+# name no oracle has, or an "against" that is no list, is the sidecar's error with its line.
+printf '{\n  "outcome": "oracle-serial",\n  "threads": 2,\n  "against": ["serial"]\n}\n' > "$tmp/rt/e.json"
+expect 0 "fuzz --replay of an entry compared with the serial build" -- "$dtlab" fuzz --replay "$tmp/rt/e.node"
+says "the replay names the oracles it ran" "^ok .* --threads 2 --against serial \(recorded: oracle-serial\)$"
+expect 0 "fuzz --replay --against none" -- "$dtlab" fuzz --replay "$tmp/rt/e.node" --against none --json
+ok "--against none: the build alone" /usr/bin/python3 -c "
+import json, sys; r = json.load(open(sys.argv[1]))['results'][0]
+assert (r['against'], r['outcome']) == ([], 'valid'), r" "$tmp/out"
+usage_error fuzz -- fuzz --replay "$tmp/rt/e.node" --against nosuchpeer
+printf '{\n  "outcome": "valid",\n  "against": ["nosuchpeer"]\n}\n' > "$tmp/rt/e.json"
+file_error fuzz "$tmp/rt/e.json" 3 -- fuzz --replay "$tmp/rt/e.node"
+printf '{\n  "outcome": "valid",\n\n  "against": "cgal"\n}\n' > "$tmp/rt/e.json"
+file_error fuzz "$tmp/rt/e.json" 4 -- fuzz --replay "$tmp/rt/e.node"
 file_error sample "$tmp/bad.off" 4 -- sample "$tmp/bad.off" --out "$tmp/s.xyz"
 file_error fracture "$tmp/bad.off" 4 -- fracture "$tmp/bad.off" --out "$tmp/f"
 file_error "mesh check" "$tmp/bad.off" 4 -- mesh check "$tmp/bad.off"
