@@ -106,12 +106,22 @@ TEST_CASE("case grid: peers whose names differ only in : _ + ~ get different cor
     CHECK(parse_corpus_name(corpus_stem(p, "uniform", 8, 1) + ".node")->prefix == corpus_prefix(p, "uniform"));
 }
 
-TEST_CASE("case grid: a run removes its own cases' corpus entries, any size, nothing else", "[case_grid]") {
+// small_grid() (uniform and lattice, cases 0..2) writing into a fresh folder whose
+// corpus/ exists.
+struct GridFolder {
   TempDir dir;
-  CaseGrid g = small_grid();  // uniform and lattice, cases 0..2
-  g.out_dir = dir.path().string();
-  const fs::path corpus = dir.path() / "corpus";
-  fs::create_directories(corpus);
+  CaseGrid grid = small_grid();
+  fs::path corpus = dir.path() / "corpus";
+  GridFolder() {
+    grid.out_dir = dir.path().string();
+    fs::create_directories(corpus);
+  }
+};
+
+TEST_CASE("case grid: a run removes its own cases' corpus entries, any size, nothing else", "[case_grid]") {
+  GridFolder folder;
+  const CaseGrid& g = folder.grid;
+  const fs::path& corpus = folder.corpus;
   const std::vector<std::string> ours = {"p-uniform-n5-0.node", "p-uniform-n5-0.json", "p-lattice-n999-2.node"};
   const std::vector<std::string> others = {"p-uniform-n5-3.node", "q-uniform-n5-0.node", "p-cube-n5-0.node",
                                            "p-uniform-n5-0.txt", "notes.json"};
@@ -130,11 +140,9 @@ TEST_CASE("case grid: a run removes its own cases' corpus entries, any size, not
 }
 
 TEST_CASE("case grid: a run removes its cases' entries under the names an earlier dtlab gave them", "[case_grid]") {
-  TempDir dir;
-  CaseGrid g = small_grid();  // uniform and lattice, cases 0..2
-  g.out_dir = dir.path().string();
-  const fs::path corpus = dir.path() / "corpus";
-  fs::create_directories(corpus);
+  GridFolder folder;
+  const CaseGrid& g = folder.grid;
+  const fs::path& corpus = folder.corpus;
   const auto entry = [&](const std::string& stem, const std::string& peer) {
     std::ofstream(corpus / (stem + ".node")) << "x";
     if (!peer.empty()) std::ofstream(corpus / (stem + ".json")) << nlohmann::json{{"peer", peer}}.dump();
