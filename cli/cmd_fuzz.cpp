@@ -119,11 +119,25 @@ fuzz::OracleHook serial_hook(const std::vector<PredicateSpec>& backends, const B
           }};
 }
 
-std::vector<fuzz::OracleHook> oracles_of(const std::string& names) {
+// The first of `names` that is no oracle ("none", "serial" or a peer's name), "" when all are.
+std::string unknown_oracle(const std::vector<std::string>& names) {
+  for (const auto& name : names)
+    if (name != "none" && name != "serial" && !is_peer_name(name)) return name;
+  return "";
+}
+
+std::string unknown_oracle_message(const std::string& name) {
+  return "unknown oracle '" + name + "' (none, or peers: see dtlab oracle --help)";
+}
+
+// The hooks of oracle names (unknown_oracle(names) empty): the peers in their order, then
+// `serial` (serial_hook) when named; "none" adds nothing. A campaign and a replay of its
+// corpus build them alike.
+std::vector<fuzz::OracleHook> oracle_hooks(const std::vector<std::string>& names,
+                                           const std::vector<PredicateSpec>& backends, const BuildOptions& build) {
   std::vector<fuzz::OracleHook> hooks;
-  for (const auto& name : split(names)) {
-    if (name == "none" || name == "serial") continue;  // serial: serial_hook
-    if (!is_peer_name(name)) usage_error("unknown oracle '" + name + "' (none, or peers: see dtlab oracle --help)");
+  for (const auto& name : names) {
+    if (name == "none" || name == "serial") continue;
     // The peer runs in its own process and its answer counts only when the checker
     // proves it Delaunay: its crash, time-out or wrong answer is "no answer", never
     // ours. Ours is compared canonically (Delaunay complex; tets in general position).
@@ -138,6 +152,7 @@ std::vector<fuzz::OracleHook> oracles_of(const std::string& names) {
       return compare_canonical(ours.mesh, mine, *run.mesh, *run.report).agree() ? "" : "differs-from-" + name;
     }});
   }
+  if (std::find(names.begin(), names.end(), "serial") != names.end()) hooks.push_back(serial_hook(backends, build));
   return hooks;
 }
 
@@ -244,23 +259,19 @@ int run_replay(const FuzzArgs& a) {
   if (a.order_option && a.order_option->count() > 0) options.order = a.kernel.build_options().order;
   if (a.kernel.threads_option && a.kernel.threads_option->count() > 0) options.threads = a.kernel.threads;
   if (a.against_option && a.against_option->count() > 0) {
-    oracles_of(a.oracle);  // an unknown name is a usage error, before any entry runs
+    const auto names = split(a.oracle);
+    // An unknown name is a usage error, before any entry runs.
+    if (const std::string bad = unknown_oracle(names); !bad.empty()) usage_error(unknown_oracle_message(bad));
     options.against.emplace();
-    for (const auto& name : split(a.oracle))
+    for (const auto& name : names)
       if (name != "none") options.against->push_back(name);
   }
   // An entry compared with oracles is compared with them again (its sidecar's "against"),
   // built as the campaign built them: the same hooks for the entry's backend and build.
   options.oracles = [](const std::vector<std::string>& names, const PredicateSpec& spec, const BuildOptions& build) {
-    std::string list;
-    for (const auto& n : names) {
-      if (n != "serial" && n != "none" && !is_peer_name(n))
-        throw std::invalid_argument("unknown oracle '" + n + "' (none, or peers: see dtlab oracle --help)");
-      list += (list.empty() ? "" : ",") + n;
-    }
-    std::vector<fuzz::OracleHook> hooks = oracles_of(list);
-    if (std::find(names.begin(), names.end(), "serial") != names.end()) hooks.push_back(serial_hook({spec}, build));
-    return hooks;
+    if (const std::string bad = unknown_oracle(names); !bad.empty())
+      throw std::invalid_argument(unknown_oracle_message(bad));
+    return oracle_hooks(names, {spec}, build);
   };
   const auto results = fuzz::replay_corpus(a.replay, options);
   std::size_t failing = 0;
@@ -371,9 +382,9 @@ int run_fuzz(const FuzzArgs& a) {
   // Threaded builds split every case across the threads, however small it is (as the
   // replay of the corpus builds them: fuzz/campaign_settings.hpp).
   fuzz::use_build_threads(o.build, o.build.threads);
-  o.oracles = oracles_of(a.oracle);
-  for (const auto& name : split(a.oracle))
-    if (name == "serial") o.oracles.push_back(serial_hook(o.backends, o.build));
+  const auto oracle_names = split(a.oracle);
+  if (const std::string bad = unknown_oracle(oracle_names); !bad.empty()) usage_error(unknown_oracle_message(bad));
+  o.oracles = oracle_hooks(oracle_names, o.backends, o.build);
   o.jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
   o.out_dir = a.out;
   if (!a.shard.empty()) {

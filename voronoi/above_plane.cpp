@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "kernel/cpu_features.hpp"
+
 // Compiled with -ffp-contract=off (no fused multiply-add: each lane rounds as the scalar
 // expression) and -fno-trapping-math (the comparisons may then run on vectors; no
 // floating-point exception is ever read).
@@ -28,8 +30,7 @@ namespace {
   return above;
 }
 
-// Two builds of the loop, picked at run time as vertex_filter.cpp's bounds (not
-// `target_clones`, whose ifunc resolver crashes the ThreadSanitizer build at load).
+// Two builds of the loop, picked at run time (kernel/cpu_features.hpp).
 [[gnu::target("avx2")]] bool above_avx2(const double* X, const double* Y, const double* Z, std::size_t count,
                                         const Point3& n, const Point3& o, double tol) {
   return above_loop(X, Y, Z, count, n, o, tol);
@@ -43,8 +44,7 @@ bool above_default(const double* X, const double* Y, const double* Z, std::size_
 
 bool any_above_plane(const double* X, const double* Y, const double* Z, std::size_t count, const Point3& n,
                      const Point3& o, double tol) {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return (avx2 ? above_avx2 : above_default)(X, Y, Z, count, n, o, tol);
+  return (cpu_has_avx2() ? above_avx2 : above_default)(X, Y, Z, count, n, o, tol);
 }
 
 }  // namespace dtlab

@@ -4,6 +4,8 @@
 #include <cfloat>
 #include <cmath>
 
+#include "kernel/cpu_features.hpp"
+
 // Compiled with -ffp-contract=off (CMakeLists.txt; and -fno-trapping-math, which only lets
 // BoundBatch's comparisons run on vectors): the counts below assume one
 // rounding per + - * / sqrt, no fused multiply-add.
@@ -191,9 +193,8 @@ void BoundBatch::start(std::size_t lanes) {
 namespace {
 
 // The loop over the lanes, compiled twice: for AVX2 (four lanes) and for the default
-// SSE2 (two), chosen at run time. No FMA in either, so every lane rounds as
-// vertex_distance_bound does. (Not `target_clones`: its ifunc resolver runs before
-// ThreadSanitizer's runtime is up and crashes the TSan build at load.)
+// SSE2 (two), chosen at run time (kernel/cpu_features.hpp). No FMA in either, so every
+// lane rounds as vertex_distance_bound does.
 [[gnu::always_inline]] inline void bounds_loop(const double* const* f, std::size_t n, double* __restrict out) {
   for (std::size_t k = 0; k < n; ++k) {
     BoundInputs in;
@@ -211,7 +212,7 @@ void bounds_default(const double* const* f, std::size_t n, double* __restrict ou
                                               char* __restrict found) {
   for (std::size_t k = 0; k < n; ++k) {
     BoundInputs in;
-    for (int j = 0; j < 13; ++j) in.f[j] = f[j][k];
+    for (int j = 0; j < BoundInputs::kPlaneFields; ++j) in.f[j] = f[j][k];
     found[k] = meet_lane(in, out[k]);
   }
 }
@@ -223,23 +224,23 @@ void meets_default(const double* const* f, std::size_t n, PlanesMeet* __restrict
   meets_loop(f, n, out, found);
 }
 
-bool have_avx2() {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx2;
-}
-
 }  // namespace
+
+void BoundBatch::fields(const double* (&f)[BoundInputs::kFields]) const {
+  for (int j = 0; j < BoundInputs::kFields; ++j) f[j] = data_.data() + j * room_;
+}
 
 void BoundBatch::bounds(std::span<double> out) const {
   const double* f[BoundInputs::kFields];
-  for (int j = 0; j < BoundInputs::kFields; ++j) f[j] = data_.data() + j * room_;
-  (have_avx2() ? bounds_avx2 : bounds_default)(f, std::min(size_, out.size()), out.data());
+  fields(f);
+  (cpu_has_avx2() ? bounds_avx2 : bounds_default)(f, std::min(size_, out.size()), out.data());
 }
 
 void BoundBatch::meets(std::span<PlanesMeet> out, std::span<char> found) const {
   const double* f[BoundInputs::kFields];
-  for (int j = 0; j < BoundInputs::kFields; ++j) f[j] = data_.data() + j * room_;
-  (have_avx2() ? meets_avx2 : meets_default)(f, std::min({size_, out.size(), found.size()}), out.data(), found.data());
+  fields(f);
+  (cpu_has_avx2() ? meets_avx2 : meets_default)(f, std::min({size_, out.size(), found.size()}), out.data(),
+                                                found.data());
 }
 
 }  // namespace dtlab

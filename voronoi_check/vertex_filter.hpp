@@ -59,6 +59,7 @@ double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPl
 // the bound) and p - site.
 struct BoundInputs {
   static constexpr int kFields = 16;
+  static constexpr int kPlaneFields = 13;  // the planes' (0-12): all that planes_meet reads
   double f[kFields];  // a.n (0-2), b.n (3-5), d.n (6-8), a.c, b.c, d.c (9-11), norms (12), p - site (13-15)
 };
 
@@ -98,6 +99,7 @@ class BoundBatch {
   void meets(std::span<PlanesMeet> out, std::span<char> found) const;
 
  private:
+  void fields(const double* (&f)[BoundInputs::kFields]) const;  // f[j]: field j's first lane
   std::vector<double> data_;  // field j of lane k at j * room_ + k
   std::size_t room_ = 0, size_ = 0;
 };
