@@ -99,7 +99,8 @@ class BoundBatch {
   void meets(std::span<PlanesMeet> out, std::span<char> found) const;
 
  private:
-  void fields(const double* (&f)[BoundInputs::kFields]) const;  // f[j]: field j's first lane
+  // f[j]: the first lane's field j.
+  void fields(const double* (&f)[BoundInputs::kFields]) const;
   std::vector<double> data_;  // field j of lane k at j * room_ + k
   std::size_t room_ = 0, size_ = 0;
 };
