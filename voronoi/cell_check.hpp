@@ -16,25 +16,43 @@
 
 namespace dtlab {
 
-// A cell's directed edges by tail vertex, in compressed rows: the edges out of v are
-// k in [off[v], off[v+1]), each with its head vertex and its face, in face order (so a
-// vertex's faces are listed as it meets them). Built once per cell for both the
-// closedness check and the vertex test (voronoi_check/cell_geometry.hpp); the arrays
-// are reused, no allocation once warm.
+// A cell's incidence, built once per cell for both the closedness check and the vertex
+// test (voronoi_check/cell_geometry.hpp); the arrays are reused, no allocation once warm.
+// Two forms. Bit sets, for a cell of at most 64 vertices and 64 faces with no vertex
+// twice in one face (nearly every cell): per vertex u the heads of the edges out of u
+// (`out`), the tails of the edges into u (`in`) and the faces at u (`faces`), plus
+// whether some directed edge is listed twice (`repeated`). Otherwise compressed rows:
+// the edges out of v are k in [off[v], off[v+1]), each with its head vertex and its
+// face, in face order.
 struct CellIncidence {
+  bool bits = false;  // the sets hold the incidence (else the rows)
+  bool repeated = false;
+  std::uint64_t out[64], in[64], faces[64];
   std::vector<std::uint32_t> off, head, face;
-  std::vector<std::uint32_t> fill;  // cell_incidence's cursor per vertex
+  std::vector<std::uint32_t> fill;  // cell_rows' cursor per vertex
+  // The edges out of v (rows only).
   std::span<const std::uint32_t> heads(std::uint32_t v) const {
     return std::span<const std::uint32_t>(head).subspan(off[v], off[v + 1] - off[v]);
   }
-  std::span<const std::uint32_t> faces(std::uint32_t v) const {
-    return std::span<const std::uint32_t>(face).subspan(off[v], off[v + 1] - off[v]);
+  // The faces at v in the order the cell lists them, each given to visit(f), which
+  // returns false to stop.
+  template <class Visit>
+  void visit_faces(std::uint32_t v, Visit&& visit) const {
+    if (bits) {
+      for (std::uint64_t m = faces[v]; m != 0; m &= m - 1)
+        if (!visit(static_cast<std::uint32_t>(__builtin_ctzll(m)))) return;
+      return;
+    }
+    for (auto k = off[v]; k < off[v + 1]; ++k)
+      if (!visit(face[k])) return;
   }
 };
 
-// Requires every face vertex id below c.vertices.size() (ToolCells and our cells keep it).
-inline void cell_incidence(const VoronoiCell& c, CellIncidence& in) {
+// The rows form. Requires every face vertex id below c.vertices.size() (ToolCells and
+// our cells keep it).
+inline void cell_rows(const VoronoiCell& c, CellIncidence& in) {
   const std::size_t nf = c.face_count(), nv = c.vertices.size();
+  in.bits = false;
   in.off.assign(nv + 1, 0);
   for (auto v : c.face_vertices) ++in.off[v + 1];
   for (std::size_t v = 0; v < nv; ++v) in.off[v + 1] += in.off[v];
@@ -49,6 +67,37 @@ inline void cell_incidence(const VoronoiCell& c, CellIncidence& in) {
       in.face[slot] = static_cast<std::uint32_t>(f);
     }
   }
+}
+
+// The bit sets form where the cell allows it (one pass over the faces' corners, no
+// branch on the data), else the rows. The same requirement.
+inline void cell_incidence(const VoronoiCell& c, CellIncidence& in) {
+  const std::size_t nf = c.face_count(), nv = c.vertices.size();
+  if (nv > 64 || nf > 64) return cell_rows(c, in);
+  std::fill_n(in.out, nv, 0), std::fill_n(in.in, nv, 0), std::fill_n(in.faces, nv, 0);
+  // Each face's edges from its last corner round: u -> v, u's set bit `bu`.
+  std::uint64_t twice = 0, face_twice = 0;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
+    if (b == e) continue;
+    const std::uint64_t bf = std::uint64_t{1} << f;
+    std::uint32_t u = c.face_vertices[e - 1];
+    std::uint64_t bu = std::uint64_t{1} << u, seen = 0;
+    for (auto k = b; k < e; ++k) {
+      const std::uint32_t v = c.face_vertices[k];
+      const std::uint64_t bv = std::uint64_t{1} << v;
+      face_twice |= seen & bv;
+      seen |= bv;
+      twice |= in.out[u] & bv;
+      in.out[u] |= bv;
+      in.in[v] |= bu;
+      in.faces[v] |= bf;
+      u = v, bu = bv;
+    }
+  }
+  if (face_twice != 0) return cell_rows(c, in);
+  in.bits = true;
+  in.repeated = twice != 0;
 }
 
 namespace detail {
@@ -76,19 +125,18 @@ inline bool edges_paired(std::size_t nv, const CellIncidence& in) {
   return ok;
 }
 
-}  // namespace detail
+// The same from the bit sets: no edge listed twice, and per vertex u an edge out
+// (every vertex used), none to itself, and the heads of its edges out the tails of its
+// edges in (every edge's reverse present).
+inline bool sets_paired(std::size_t nv, const CellIncidence& in) {
+  bool ok = !in.repeated;
+  for (std::size_t u = 0; u < nv; ++u) ok &= (in.out[u] != 0) & (((in.out[u] >> u) & 1) == 0) & (in.out[u] == in.in[u]);
+  return ok;
+}
 
-// Closed and consistently oriented: at least 4 faces of 3+ corners, every directed
-// edge once and its reverse once, no edge from a vertex to itself, every vertex used,
-// V - E + F = 2. Exact (no tolerance). `in`: the cell's incidence (cell_incidence).
-inline std::string check_cell_closed(const VoronoiCell& c, const CellIncidence& in) {
-  const std::size_t nf = c.face_count(), nv = c.vertices.size();
-  if (nf < 4) return "fewer than 4 faces";
-  for (std::size_t f = 0; f < nf; ++f)
-    if (c.face_offsets[f + 1] - c.face_offsets[f] < 3) return "face with fewer than 3 vertices";
-  const long euler = long(nv) - long(c.face_vertices.size() / 2) + long(nf);
-  if (nv <= 64 && detail::edges_paired(nv, in))
-    return euler == 2 ? std::string{} : "Euler characteristic " + std::to_string(euler);
+// The first defect of a cell whose edges are not paired (rows), or the Euler test.
+inline std::string closed_search(const VoronoiCell& c, const CellIncidence& in, long euler) {
+  const std::size_t nv = c.vertices.size();
   for (std::uint32_t u = 0; u < nv; ++u) {
     const auto out = in.heads(u);
     for (std::size_t i = 0; i < out.size(); ++i)
@@ -105,6 +153,28 @@ inline std::string check_cell_closed(const VoronoiCell& c, const CellIncidence& 
     if (in.off[v + 1] == in.off[v]) return "unused vertex";
   if (euler != 2) return "Euler characteristic " + std::to_string(euler);
   return {};
+}
+
+}  // namespace detail
+
+// Closed and consistently oriented: at least 4 faces of 3+ corners, every directed
+// edge once and its reverse once, no edge from a vertex to itself, every vertex used,
+// V - E + F = 2. Exact (no tolerance). `in`: the cell's incidence (cell_incidence).
+inline std::string check_cell_closed(const VoronoiCell& c, const CellIncidence& in) {
+  const std::size_t nf = c.face_count(), nv = c.vertices.size();
+  if (nf < 4) return "fewer than 4 faces";
+  for (std::size_t f = 0; f < nf; ++f)
+    if (c.face_offsets[f + 1] - c.face_offsets[f] < 3) return "face with fewer than 3 vertices";
+  const long euler = long(nv) - long(c.face_vertices.size() / 2) + long(nf);
+  const auto euler_test = [&] { return euler == 2 ? std::string{} : "Euler characteristic " + std::to_string(euler); };
+  if (in.bits) {
+    if (detail::sets_paired(nv, in)) return euler_test();
+    thread_local CellIncidence rows;  // the search reads rows; a defective cell is rare
+    cell_rows(c, rows);
+    return detail::closed_search(c, rows, euler);
+  }
+  if (nv <= 64 && detail::edges_paired(nv, in)) return euler_test();
+  return detail::closed_search(c, in, euler);
 }
 
 // The same, building the incidence in an array kept by the thread.
@@ -192,9 +262,17 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
       }
     }
     n = 1.0 / area2 * n;
-    for (auto k = b; k < e; ++k)
-      if (std::abs(dot(n, c.vertices[c.face_vertices[k]] - o)) > t) return "non-planar face";
-    if (any_above_plane(X, Y, Z, nv, n, o, t)) return "not convex";
+    // Planar: every corner within t of the plane (the first is on it). The side above
+    // is any_above_plane's, which tests every vertex; which of the two defects a vertex
+    // above shows is asked only then.
+    const auto corner_beyond = [&](auto&& beyond) {
+      for (auto k = b + 1; k < e; ++k)
+        if (beyond(dot(n, c.vertices[c.face_vertices[k]] - o))) return true;
+      return false;
+    };
+    if (corner_beyond([t](double d) { return d < -t; })) return "non-planar face";
+    if (any_above_plane(X, Y, Z, nv, n, o, t))
+      return corner_beyond([t](double d) { return d > t; }) ? "non-planar face" : "not convex";
   }
   if (found) found->volume = six_volume / 6;
   return {};

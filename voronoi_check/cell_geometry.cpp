@@ -123,11 +123,12 @@ void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<cons
   const char* face_ok = s.face_ok.data();
   const auto gather_planes = [&](std::size_t v) {
     std::size_t n = 0;
-    for (auto f : in.faces(static_cast<std::uint32_t>(v))) {
-      if (n == s.plane_at.size()) break;
+    in.visit_faces(static_cast<std::uint32_t>(v), [&](std::uint32_t f) {
+      if (n == s.plane_at.size()) return false;
       s.plane_at[n] = f;
       n += face_ok[f] != 0;
-    }
+      return true;
+    });
     s.plane_count = n;
   };
   // The filter first, on every vertex of three planes at once; the solve for the rest.
