@@ -12,7 +12,6 @@ namespace dtlab {
 
 std::vector<TetSphere> tet_spheres(std::span<const Point3> p, std::span<const Tet> tets, unsigned threads) {
   std::vector<TetSphere> out(tets.size());
-  const vor::Box no_walls{};  // the planes are bisectors only
   constexpr std::size_t kLanes = 256;
   parallel_chunks(tets.size(), threads, 4096, [&](std::size_t b, std::size_t e, unsigned) {
     // The planes of kLanes tets at a time into one batch; where they meet, all at once.
@@ -26,14 +25,11 @@ std::vector<TetSphere> tet_spheres(std::span<const Point3> p, std::span<const Te
       lane_tet.clear();
       for (std::size_t t = t0; t < t1; ++t) {
         const Tet& q = tets[t];
-        const Point3& o = p[q[0]];
         out[t].error = INFINITY;
+        if (q[0] >= p.size() || q[1] >= p.size() || q[2] >= p.size() || q[3] >= p.size()) continue;
+        const Point3& o = p[q[0]];
         FilterPlane pl[3];
-        bool ok = true;
-        for (int k = 0; k < 3; ++k)  // an id beyond int32 would read as a wall: left uncertified
-          ok =
-              ok && q[k + 1] <= 0x7FFFFFFFu && filter_plane(static_cast<std::int32_t>(q[k + 1]), p, o, no_walls, pl[k]);
-        if (!ok) continue;
+        for (int k = 0; k < 3; ++k) bisector_plane(p[q[k + 1]], o, pl[k]);
         batch.add(o, o, pl[0], pl[1], pl[2]);
         lane_tet.push_back(static_cast<std::uint32_t>(t));
       }

@@ -74,12 +74,7 @@ using namespace vor;
 bool filter_plane(std::int32_t tag, std::span<const Point3> sites, const Point3& s, const Box& box, FilterPlane& out) {
   if (tag >= 0) {
     if (static_cast<std::size_t>(tag) >= sites.size()) return false;
-    const Point3& q = sites[tag];
-    out.n[0] = q.x - s.x, out.n[1] = q.y - s.y, out.n[2] = q.z - s.z;
-    const double nn = (out.n[0] * out.n[0] + out.n[1] * out.n[1]) + out.n[2] * out.n[2];
-    out.c = nn / 2;
-    out.norm = std::sqrt(nn);
-    out.ok = nn >= 0x1p-1000 && nn <= 0x1p1000;
+    bisector_plane(sites[tag], s, out);
     return true;
   }
   if (tag < -6) return false;

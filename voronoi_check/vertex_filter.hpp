@@ -24,6 +24,18 @@ struct FilterPlane {
   bool ok;
 };
 
+// The bisector of `site` and site q (filter_plane's plane for a site's tag); inline, as
+// tet_spheres builds three per tet. Only for files compiled with -ffp-contract=off (the
+// bound counts one rounding per operation: a fused n.n would not be the long double
+// path's sum).
+inline void bisector_plane(const Point3& q, const Point3& site, FilterPlane& out) {
+  out.n[0] = q.x - site.x, out.n[1] = q.y - site.y, out.n[2] = q.z - site.z;
+  const double nn = (out.n[0] * out.n[0] + out.n[1] * out.n[1]) + out.n[2] * out.n[2];
+  out.c = nn / 2;
+  out.norm = std::sqrt(nn);
+  out.ok = nn >= 0x1p-1000 && nn <= 0x1p1000;
+}
+
 // The plane of the face with neighbour `tag` (a site id, or -1..-6 for the walls of
 // `box`) relative to `site`; false when the tag is no site and no wall.
 bool filter_plane(std::int32_t tag, std::span<const Point3> sites, const Point3& site, const vor::Box& box,
