@@ -229,13 +229,22 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
   const std::size_t nv = c.vertices.size();
   xs.resize(nv), ys.resize(nv), zs.resize(nv);
   double *X = xs.data(), *Y = ys.data(), *Z = zs.data();
-  for (std::size_t i = 0; i < nv; ++i) X[i] = c.vertices[i].x, Y[i] = c.vertices[i].y, Z[i] = c.vertices[i].z;
-  double D = 0, six_volume = 0;
-  if (vertex_error > 0 && nv > 0) {
-    Point3 lo = c.vertices[0], hi = c.vertices[0];
-    for (const auto& v : c.vertices) lo = min3(lo, v), hi = max3(hi, v);
-    D = norm(hi - lo);
+  Point3 lo = nv > 0 ? c.vertices[0] : Point3{0, 0, 0}, hi = lo;
+  for (std::size_t i = 0; i < nv; ++i) {
+    const Point3& v = c.vertices[i];
+    X[i] = v.x, Y[i] = v.y, Z[i] = v.z;
+    lo = min3(lo, v), hi = max3(hi, v);
   }
+  double six_volume = 0;
+  const double D = vertex_error > 0 ? norm(hi - lo) : 0;
+  // A face's tolerance can exceed tol only where rounded_plane_tolerance(e, D, D, area2,
+  // T) > tol, i.e. where theta D = T K / area2 (K = 2 (4 e D + 4 e^2) D) exceeds `room`,
+  // less 1e-9 of the terms (far more than the roundings of either side). So that bound
+  // is computed only for faces with T K >= room area2 / 2, or any face when room <= 0
+  // (or NaN); a face let through is decided as before, so the result is the same.
+  const double K = 2 * (4 * vertex_error * D + 4 * vertex_error * vertex_error) * D;
+  const double room =
+      (tol - 0x1p-50 * D) / (1 + 1e-12) - 2 * vertex_error - 1e-9 * (tol + 2 * vertex_error + 0x1p-50 * D);
   for (std::size_t f = 0; f < c.face_count(); ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
     Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
@@ -251,7 +260,8 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
     double t = tol;
     const std::size_t triangles = e - b > 2 ? e - b - 2 : 1;
     // R <= D: the face's own R only where the bound with D exceeds tol (thin faces).
-    if (vertex_error > 0 && rounded_plane_tolerance(vertex_error, D, D, area2, triangles) > tol) {
+    if (vertex_error > 0 && !(room > 0 && static_cast<double>(triangles) * K < 0.5 * room * area2) &&
+        rounded_plane_tolerance(vertex_error, D, D, area2, triangles) > tol) {
       double r2 = 0;
       for (auto k = b + 1; k < e; ++k) r2 = std::max(r2, norm2(c.vertices[c.face_vertices[k]] - o));
       const double r = rounded_plane_tolerance(vertex_error, std::min(D, std::sqrt(r2) * (1 + 1e-15)), D, area2,

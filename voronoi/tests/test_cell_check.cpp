@@ -136,32 +136,61 @@ TEST_CASE("cell incidence: cells beyond 64 vertices or faces use the rows", "[ce
 
 namespace {
 
-// check_cell_convex's verdict by its definition, face by face in order: "non-planar face"
-// when a corner is farther than t from the face's plane, else "not convex" when a vertex
-// of the cell lies beyond it by more than t (tol alone: no vertex error, no tiny face).
-std::string convex_by_definition(const VoronoiCell& c, double tol) {
+// check_cell_convex's verdict by its definition, face by face in order: a face of area
+// below tol^2 skipped; its tolerance t = tol, or rounded_plane_tolerance(e, R, D, ...) where
+// that is larger (R: the face's farthest corner from its first, at most D; D: the
+// diagonal of the vertices' box); "non-planar face" when a corner is farther than t from
+// the plane, else "not convex" when a vertex lies beyond it by more than t.
+struct ConvexVerdict {
+  std::string why;
+  bool skipped = false, widened = false;
+};
+ConvexVerdict convex_by_definition(const VoronoiCell& c, double tol, double e) {
+  ConvexVerdict out;
+  Point3 lo = c.vertices[0], hi = lo;
+  for (const auto& v : c.vertices) lo = min3(lo, v), hi = max3(hi, v);
+  const double D = norm(hi - lo);
   for (std::size_t f = 0; f < c.face_count(); ++f) {
-    const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
+    const auto b = c.face_offsets[f], end = c.face_offsets[f + 1];
     Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
-    for (auto k = b + 1; k + 1 < e; ++k)
+    for (auto k = b + 1; k + 1 < end; ++k)
       n = n + cross(c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
-    n = 1.0 / norm(n) * n;
-    for (auto k = b; k < e; ++k)
-      if (std::abs(dot(n, c.vertices[c.face_vertices[k]] - o)) > tol) return "non-planar face";
+    const double area2 = norm(n);
+    if (area2 <= tol * tol) {
+      out.skipped = true;
+      continue;
+    }
+    double t = tol;
+    if (e > 0) {
+      double r2 = 0;
+      for (auto k = b + 1; k < end; ++k) r2 = std::max(r2, norm2(c.vertices[c.face_vertices[k]] - o));
+      const double R = std::min(D, std::sqrt(r2) * (1 + 1e-15));
+      const double r = rounded_plane_tolerance(e, R, D, area2, end - b - 2);
+      if (r > tol) t = r, out.widened = true;
+    }
+    n = 1.0 / area2 * n;
+    for (auto k = b; k < end; ++k)
+      if (std::abs(dot(n, c.vertices[c.face_vertices[k]] - o)) > t) {
+        out.why = "non-planar face";
+        return out;
+      }
     for (const auto& v : c.vertices)
-      if (dot(n, v - o) > tol) return "not convex";
+      if (dot(n, v - o) > t) {
+        out.why = "not convex";
+        return out;
+      }
   }
-  return {};
+  return out;
 }
 
 }  // namespace
 
-TEST_CASE("check_cell_convex names the defect its definition names", "[cell_check]") {
+TEST_CASE("check_cell_convex names the defect its definition names, tolerances widened as defined", "[cell_check]") {
   VoronoiOptions vo;
   const VoronoiDiagram vd = compute_voronoi(test::uniform(300, 5), vo);
   std::mt19937_64 rng(3);
   std::normal_distribution<double> jitter(0, 1);
-  std::size_t named[3] = {0, 0, 0};  // sound, non-planar, not convex
+  std::size_t named[3] = {0, 0, 0}, widened = 0, kept = 0;  // sound, non-planar, not convex
   for (const VoronoiCell& c : vd.cells) {
     for (int trial = 0; trial < 4; ++trial) {
       OwnedCell o = own(c);
@@ -172,12 +201,23 @@ TEST_CASE("check_cell_convex names the defect its definition names", "[cell_chec
         v = v + 1e-3 * size * Point3{jitter(rng), jitter(rng), jitter(rng)};
       }
       const double tol = 1e-6 * size;
-      const std::string want = convex_by_definition(o.view(), tol);
-      CHECK(check_cell_convex(o.view(), {tol, false, 0}) == want);
-      ++named[want.empty() ? 0 : want == "non-planar face" ? 1 : 2];
+      // Vertex errors from none to beyond tol, some near the widening's threshold.
+      for (const double e : {0.0, 1e-15 * size, 1e-9 * size, 4e-8 * size, 1e-7 * size, 3e-7 * size, 1e-5 * size}) {
+        const ConvexVerdict want = convex_by_definition(o.view(), tol, e);
+        ConvexFindings found;
+        CHECK(check_cell_convex(o.view(), {tol, true, e}, &found) == want.why);
+        if (want.why.empty()) {  // the findings are complete only for a cell that passed
+          CHECK(found.widened == want.widened);
+          CHECK(found.skipped == want.skipped);
+        }
+        widened += want.widened, kept += !want.widened && e > 0;
+        if (e == 0) ++named[want.why.empty() ? 0 : want.why == "non-planar face" ? 1 : 2];
+      }
     }
   }
   CHECK(named[0] >= vd.cells.size());
   CHECK(named[1] > 0);
   CHECK(named[2] > 0);
+  CHECK(widened > 0);
+  CHECK(kept > 0);
 }
