@@ -131,38 +131,43 @@ void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<cons
     });
     s.plane_count = n;
   };
-  // The filter first, on every vertex of three planes at once; the solve for the rest.
-  s.batch.start(c.vertices.size());
-  s.batched.resize(c.vertices.size());
-  std::size_t batched = 0;
-  if (below >= 0)
-    for (std::size_t v = 0; v < c.vertices.size(); ++v) {
+  // The filter first, on the vertices of three planes of a block of vertices at once
+  // (one batch: every cell but a huge one is one block); the solve for the rest.
+  const std::size_t nv = c.vertices.size();
+  s.batched.resize(BoundBatch::kLanes);
+  s.bound.resize(BoundBatch::kLanes);
+  for (std::size_t v0 = 0; v0 < nv; v0 += BoundBatch::kLanes) {
+    const std::size_t v1 = std::min(nv, v0 + BoundBatch::kLanes);
+    s.batch.start();
+    std::size_t batched = 0;
+    if (below >= 0)
+      for (std::size_t v = v0; v < v1; ++v) {
+        gather_planes(v);
+        if (s.plane_count != 3) continue;
+        const auto& pl = s.plane_at;
+        s.batch.add(c.vertices[v], st, s.filter[pl[0]], s.filter[pl[1]], s.filter[pl[2]]);
+        s.batched[batched++] = static_cast<std::uint32_t>(v);
+      }
+    s.batch.bounds(s.bound);
+    std::size_t next = 0;  // the next batched vertex
+    for (std::size_t v = v0; v < v1; ++v) {
+      if (next < batched && s.batched[next] == v) {
+        const double u = s.bound[next++];
+        if (u >= 0 && u <= below) {
+          out[v] = VertexError{0, true, true};
+          continue;
+        }
+      }
       gather_planes(v);
-      if (s.plane_count != 3) continue;
-      const auto& pl = s.plane_at;
-      s.batch.add(c.vertices[v], st, s.filter[pl[0]], s.filter[pl[1]], s.filter[pl[2]]);
-      s.batched[batched++] = static_cast<std::uint32_t>(v);
+      for (auto f : s.planes())
+        if (!s.face_ld[f]) {
+          plane_of(c.face_neighbor[f], sites, st, box, s.face_plane[f]);
+          s.face_norm[f] = lnorm(s.face_plane[f].n);
+          s.face_ld[f] = 1;
+        }
+      const auto e = vertex_error(c.vertices[v], st, s);
+      out[v] = e ? VertexError{static_cast<double>(*e), true} : VertexError{};
     }
-  s.bound.resize(s.batch.size());
-  s.batch.bounds(s.bound);
-  std::size_t next = 0;  // the next batched vertex
-  for (std::size_t v = 0; v < c.vertices.size(); ++v) {
-    if (next < batched && s.batched[next] == v) {
-      const double u = s.bound[next++];
-      if (u >= 0 && u <= below) {
-        out[v] = VertexError{0, true, true};
-        continue;
-      }
-    }
-    gather_planes(v);
-    for (auto f : s.planes())
-      if (!s.face_ld[f]) {
-        plane_of(c.face_neighbor[f], sites, st, box, s.face_plane[f]);
-        s.face_norm[f] = lnorm(s.face_plane[f].n);
-        s.face_ld[f] = 1;
-      }
-    const auto e = vertex_error(c.vertices[v], st, s);
-    out[v] = e ? VertexError{static_cast<double>(*e), true} : VertexError{};
   }
 }
 

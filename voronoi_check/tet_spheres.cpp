@@ -12,7 +12,7 @@ namespace dtlab {
 
 std::vector<TetSphere> tet_spheres(std::span<const Point3> p, std::span<const Tet> tets, unsigned threads) {
   std::vector<TetSphere> out(tets.size());
-  constexpr std::size_t kLanes = 256;
+  constexpr std::size_t kLanes = BoundBatch::kLanes;
   parallel_chunks(tets.size(), threads, 4096, [&](std::size_t b, std::size_t e, unsigned) {
     // The planes of kLanes tets at a time into one batch; where they meet, all at once.
     thread_local BoundBatch batch;
@@ -21,7 +21,7 @@ std::vector<TetSphere> tet_spheres(std::span<const Point3> p, std::span<const Te
     thread_local std::vector<char> found;
     for (std::size_t t0 = b; t0 < e; t0 += kLanes) {
       const std::size_t t1 = std::min(e, t0 + kLanes);
-      batch.start(kLanes);
+      batch.start();
       lane_tet.clear();
       for (std::size_t t = t0; t < t1; ++t) {
         const Tet& q = tets[t];

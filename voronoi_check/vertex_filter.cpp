@@ -85,8 +85,8 @@ bool filter_plane(std::int32_t tag, std::span<const Point3> sites, const Point3&
   out.n[0] = out.n[1] = out.n[2] = 0;
   out.n[axis] = 1;
   out.c = (hi ? hi_c[axis] : lo_c[axis]) - sc[axis];
-  out.norm = 1;
   out.ok = std::isfinite(out.c);
+  out.norm = out.ok ? 1 : NAN;
   return true;
 }
 
@@ -177,14 +177,6 @@ double vertex_distance_bound(const Point3& p, const Point3& site, const FilterPl
   return bound_lane(bound_inputs(p, site, a, b, d));
 }
 
-void BoundBatch::start(std::size_t lanes) {
-  size_ = 0;
-  if (lanes > room_) {
-    room_ = std::max(lanes, 2 * room_);
-    data_.resize(BoundInputs::kFields * room_);
-  }
-}
-
 namespace {
 
 // The loop over the lanes, compiled twice: for AVX2 (four lanes) and for the default
@@ -222,7 +214,7 @@ void meets_default(const double* const* f, std::size_t n, PlanesMeet* __restrict
 }  // namespace
 
 void BoundBatch::fields(const double* (&f)[BoundInputs::kFields]) const {
-  for (int j = 0; j < BoundInputs::kFields; ++j) f[j] = data_.data() + j * room_;
+  for (int j = 0; j < BoundInputs::kFields; ++j) f[j] = data_.data() + j * kLanes;
 }
 
 void BoundBatch::bounds(std::span<double> out) const {

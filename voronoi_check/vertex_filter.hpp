@@ -16,7 +16,8 @@ namespace dtlab {
 
 // A face plane n . (x - site) = c in doubles, as the long double path builds it
 // (bisector: n = q - site, c = n.n / 2; wall of axis k: n = e_k, c = wall - site_k),
-// with the rounded norm of n. `ok`: finite and in the range where the bound holds.
+// with the rounded norm of n (NaN when not ok, so that a product of norms is NaN too).
+// `ok`: finite and in the range where the bound holds.
 struct FilterPlane {
   double n[3];
   double c;
@@ -32,8 +33,8 @@ inline void bisector_plane(const Point3& q, const Point3& site, FilterPlane& out
   out.n[0] = q.x - site.x, out.n[1] = q.y - site.y, out.n[2] = q.z - site.z;
   const double nn = (out.n[0] * out.n[0] + out.n[1] * out.n[1]) + out.n[2] * out.n[2];
   out.c = nn / 2;
-  out.norm = std::sqrt(nn);
   out.ok = nn >= 0x1p-1000 && nn <= 0x1p1000;
+  out.norm = out.ok ? std::sqrt(nn) : NAN;
 }
 
 // The plane of the face with neighbour `tag` (a site id, or -1..-6 for the walls of
@@ -82,7 +83,7 @@ template <class Put>
                                                     const FilterPlane& b, const FilterPlane& d, Put&& put) {
   for (int j = 0; j < 3; ++j) put(j, a.n[j]), put(3 + j, b.n[j]), put(6 + j, d.n[j]);
   put(9, a.c), put(10, b.c), put(11, d.c);
-  put(12, a.ok && b.ok && d.ok ? a.norm * b.norm * d.norm : NAN);
+  put(12, a.norm * b.norm * d.norm);  // NaN when a plane is not ok
   put(13, p.x - site.x), put(14, p.y - site.y), put(15, p.z - site.z);
 }
 
@@ -99,8 +100,12 @@ inline BoundInputs bound_inputs(const Point3& p, const Point3& site, const Filte
 // function's value.
 class BoundBatch {
  public:
-  // Empties the batch, with room for `lanes` lanes (no allocation once it is large enough).
-  void start(std::size_t lanes);
+  // The lanes a batch holds: fixed, so that a lane's fields lie at constant offsets
+  // (one store each in add; 32 KB of fields, of which a cell's few lanes touch a few KB).
+  static constexpr std::size_t kLanes = 256;
+  BoundBatch() : data_(BoundInputs::kFields * kLanes) {}
+  // Empties the batch.
+  void start() { size_ = 0; }
   // A lane, when there is room (false: the batch is full).
   bool add(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b, const FilterPlane& d);
   std::size_t size() const { return size_; }
@@ -113,17 +118,16 @@ class BoundBatch {
  private:
   // f[j]: the first lane's field j.
   void fields(const double* (&f)[BoundInputs::kFields]) const;
-  std::vector<double> data_;  // field j of lane k at j * room_ + k
-  std::size_t room_ = 0, size_ = 0;
+  std::vector<double> data_;  // field j of lane k at j * kLanes + k
+  std::size_t size_ = 0;
 };
 
 // Inline: called per vertex.
 inline bool BoundBatch::add(const Point3& p, const Point3& site, const FilterPlane& a, const FilterPlane& b,
                             const FilterPlane& d) {
-  if (size_ == room_) return false;
+  if (size_ == kLanes) return false;
   double* lane = data_.data() + size_++;
-  const std::size_t r = room_;
-  put_bound_inputs(p, site, a, b, d, [&](int j, double v) { lane[j * r] = v; });
+  put_bound_inputs(p, site, a, b, d, [&](int j, double v) { lane[j * kLanes] = v; });
   return true;
 }
 

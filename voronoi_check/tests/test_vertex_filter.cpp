@@ -57,7 +57,7 @@ void check_cells(std::span<const Point3> sites, const vor::Box& box, const ToolC
       for (auto i = c.face_offsets[f]; i < c.face_offsets[f + 1]; ++i) at[c.face_vertices[i]].push_back(f);
     double largest = 0;
     BoundBatch batch;
-    batch.start(c.vertices.size());
+    batch.start();
     std::vector<double> one_by_one;
     for (std::size_t v = 0; v < c.vertices.size(); ++v) {
       if (at[v].size() != 3) continue;
@@ -122,19 +122,17 @@ TEST_CASE("vertex filter: a full batch refuses a lane", "[vertex-filter]") {
   FilterPlane pl[3];
   for (int i = 0; i < 3; ++i) REQUIRE(filter_plane(i + 1, sites, sites[0], test::kBox, pl[i]));
   BoundBatch batch;
-  batch.start(2);
+  batch.start();
   const Point3 corner{0.5, 0.5, 0.5};
-  CHECK(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
-  CHECK(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
+  for (std::size_t k = 0; k < BoundBatch::kLanes; ++k) REQUIRE(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
   CHECK_FALSE(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
   std::vector<double> out(batch.size());
   batch.bounds(out);
-  CHECK(out == std::vector<double>(2, vertex_distance_bound(corner, sites[0], pl[0], pl[1], pl[2])));
+  CHECK(out == std::vector<double>(BoundBatch::kLanes, vertex_distance_bound(corner, sites[0], pl[0], pl[1], pl[2])));
   CHECK(out[0] >= 0);
   CHECK(out[0] < 1e-14);  // the corner is where the three bisectors meet, exactly
-  batch.start(1);         // emptied, and the room it has is kept
+  batch.start();          // emptied
   CHECK(batch.size() == 0);
-  CHECK(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
   CHECK(batch.add(corner, sites[0], pl[0], pl[1], pl[2]));
 }
 
@@ -161,4 +159,42 @@ TEST_CASE("vertex filter: degenerate and badly conditioned families", "[vertex-f
   // Both paths taken: bounds given, and vertices left to the long double solve.
   CHECK(all.bounded > 0);
   CHECK(all.bounded < all.simple);
+}
+
+TEST_CASE("vertex filter: a cell of more vertices than a batch holds is filtered block by block", "[vertex-filter]") {
+  // A site inside 400 sites spread over a sphere: its cell has about 800 vertices.
+  std::vector<Point3> sites{{0, 0, 0}};
+  const int k = 400;
+  for (int i = 0; i < k; ++i) {
+    const double z = 1 - (2 * i + 1.0) / k, r = std::sqrt(1 - z * z), phi = 2.399963229728653 * i;
+    sites.push_back({r * std::cos(phi), r * std::sin(phi), z});
+  }
+  const vor::Box box{{-2, -2, -2}, {2, 2, 2}};
+  VoronoiOptions o;
+  o.box = box;
+  const auto vd = compute_voronoi(sites, o);
+  // Vertices moved by up to 2^20 ulps: distances well above the filter's own error
+  // (the neighbours' directions are close, so the planes' meets are conditioned badly).
+  const ToolCells t = moved(vd, 1 << 20, 3);
+  REQUIRE(t.site(0) == 0);
+  const VoronoiCell c = t.view(0);
+  REQUIRE(c.vertices.size() > 2 * BoundBatch::kLanes);
+  std::vector<VertexError> exact(c.vertices.size()), filtered(c.vertices.size());
+  vertex_errors(c, sites, 0, box, exact);
+  double largest = 0;
+  for (const auto& e : exact) largest = std::max(largest, e.decided ? e.distance : 0);
+  vertex_errors(c, sites, 0, box, filtered, largest);
+  std::size_t skipped = 0, late = 0;  // late: skipped beyond the first block
+  for (std::size_t v = 0; v < c.vertices.size(); ++v) {
+    INFO("vertex " << v);
+    REQUIRE(filtered[v].decided == exact[v].decided);
+    if (filtered[v].below) {
+      ++skipped, late += v >= BoundBatch::kLanes;
+      REQUIRE(exact[v].distance <= largest);
+    } else {
+      REQUIRE(filtered[v].distance == exact[v].distance);
+    }
+  }
+  CHECK(late > 0);
+  CHECK(skipped > c.vertices.size() / 2);
 }
