@@ -30,21 +30,28 @@ namespace {
   return above;
 }
 
-// Two builds of the loop, picked at run time (kernel/cpu_features.hpp).
-[[gnu::target("avx2")]] bool above_avx2(const double* X, const double* Y, const double* Z, std::size_t count,
-                                        const Point3& n, const Point3& o, double tol) {
-  return above_loop(X, Y, Z, count, n, o, tol);
+[[gnu::always_inline]] inline std::size_t planes_loop(const double* X, const double* Y, const double* Z,
+                                                      std::size_t points, const FacePlane* planes, std::size_t count) {
+  for (std::size_t f = 0; f < count; ++f)
+    if (above_loop(X, Y, Z, points, planes[f].n, planes[f].o, planes[f].t)) return f;
+  return count;
 }
-bool above_default(const double* X, const double* Y, const double* Z, std::size_t count, const Point3& n,
-                   const Point3& o, double tol) {
-  return above_loop(X, Y, Z, count, n, o, tol);
+
+// Two builds of the loop, picked at run time (kernel/cpu_features.hpp).
+[[gnu::target("avx2")]] std::size_t planes_avx2(const double* X, const double* Y, const double* Z, std::size_t points,
+                                                const FacePlane* planes, std::size_t count) {
+  return planes_loop(X, Y, Z, points, planes, count);
+}
+std::size_t planes_default(const double* X, const double* Y, const double* Z, std::size_t points,
+                           const FacePlane* planes, std::size_t count) {
+  return planes_loop(X, Y, Z, points, planes, count);
 }
 
 }  // namespace
 
-bool any_above_plane(const double* X, const double* Y, const double* Z, std::size_t count, const Point3& n,
-                     const Point3& o, double tol) {
-  return (cpu_has_avx2() ? above_avx2 : above_default)(X, Y, Z, count, n, o, tol);
+std::size_t first_plane_exceeded(const double* X, const double* Y, const double* Z, std::size_t points,
+                                 const FacePlane* planes, std::size_t count) {
+  return (cpu_has_avx2() ? planes_avx2 : planes_default)(X, Y, Z, points, planes, count);
 }
 
 }  // namespace dtlab

@@ -220,13 +220,20 @@ struct ConvexFindings {
 };
 
 // Planar faces and convex (every vertex behind every face plane) as `test` says; "" or
-// the defect. The vertices are copied once per cell into per-thread coordinate arrays for
-// any_above_plane. `found` (if given) receives the findings above.
+// the defect, that of the first face (in the cell's order) that shows one. Two passes:
+// each face's plane, tolerance and planarity below it (the first pass stops at a face
+// that fails), then every vertex against the planes before that face at once
+// (first_plane_exceeded, the vertices copied into per-thread coordinate arrays), which
+// also covers planarity above. `found` (if given) receives the findings above, of the
+// faces up to the one that failed.
 inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& test, ConvexFindings* found = nullptr) {
   const double tol = test.tol, vertex_error = test.vertex_error;
   using namespace vor;
   thread_local std::vector<double> xs, ys, zs;
-  const std::size_t nv = c.vertices.size();
+  thread_local std::vector<FacePlane> planes;
+  thread_local std::vector<std::uint32_t> plane_face;  // the face of each plane
+  thread_local std::vector<char> widened;              // per plane: its tolerance above tol
+  const std::size_t nv = c.vertices.size(), nf = c.face_count();
   xs.resize(nv), ys.resize(nv), zs.resize(nv);
   double *X = xs.data(), *Y = ys.data(), *Z = zs.data();
   Point3 lo = nv > 0 ? c.vertices[0] : Point3{0, 0, 0}, hi = lo;
@@ -245,19 +252,41 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
   const double K = 2 * (4 * vertex_error * D + 4 * vertex_error * vertex_error) * D;
   const double room =
       (tol - 0x1p-50 * D) / (1 + 1e-12) - 2 * vertex_error - 1e-9 * (tol + 2 * vertex_error + 0x1p-50 * D);
-  for (std::size_t f = 0; f < c.face_count(); ++f) {
+  planes.resize(nf), plane_face.resize(nf), widened.resize(nf);
+  std::size_t np = 0, first_tiny = nf;  // planes made; the first face skipped as tiny
+  const char* stop = nullptr;           // the first pass's defect, at face `stop_face`
+  std::size_t stop_face = nf;
+  bool stop_planar = false;  // the stop is a face's planarity (its plane made)
+  const auto corner_beyond = [&](std::size_t f, const FacePlane& pl, auto&& beyond) {
+    for (auto k = c.face_offsets[f] + 1; k < c.face_offsets[f + 1]; ++k)
+      if (beyond(dot(pl.n, c.vertices[c.face_vertices[k]] - pl.o))) return true;
+    return false;
+  };
+  for (std::size_t f = 0; f < nf; ++f) {
     const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
-    Point3 n{0, 0, 0}, o = c.vertices[c.face_vertices[b]];
-    for (auto k = b + 1; k + 1 < e; ++k)
-      n = n + cross(c.vertices[c.face_vertices[k]] - o, c.vertices[c.face_vertices[k + 1]] - o);
+    const Point3 o = c.vertices[c.face_vertices[b]];
+    // The fan from the first corner, each corner's difference to it carried to the next triangle.
+    Point3 n{0, 0, 0};
+    if (e - b >= 3) {
+      Point3 prev = c.vertices[c.face_vertices[b + 1]] - o;
+      for (auto k = b + 2; k < e; ++k) {
+        const Point3 next = c.vertices[c.face_vertices[k]] - o;
+        n = n + cross(prev, next);
+        prev = next;
+      }
+    }
     six_volume += dot(o - c.vertices[0], n);
     const double area2 = norm(n);
     if (area2 <= tol * tol) {
-      if (!test.skip_tiny) return "zero-area face";
-      if (found) found->skipped = true;
+      if (!test.skip_tiny) {
+        stop = "zero-area face", stop_face = f;
+        break;
+      }
+      first_tiny = std::min(first_tiny, f);
       continue;
     }
     double t = tol;
+    bool wide = false;
     const std::size_t triangles = e - b > 2 ? e - b - 2 : 1;
     // R <= D: the face's own R only where the bound with D exceeds tol (thin faces).
     if (vertex_error > 0 && !(room > 0 && static_cast<double>(triangles) * K < 0.5 * room * area2) &&
@@ -266,24 +295,34 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
       for (auto k = b + 1; k < e; ++k) r2 = std::max(r2, norm2(c.vertices[c.face_vertices[k]] - o));
       const double r = rounded_plane_tolerance(vertex_error, std::min(D, std::sqrt(r2) * (1 + 1e-15)), D, area2,
                                                triangles);
-      if (r > tol) {
-        t = r;
-        if (found) found->widened = true;
-      }
+      if (r > tol) t = r, wide = true;
     }
-    n = 1.0 / area2 * n;
-    // Planar: every corner within t of the plane (the first is on it). The side above
-    // is any_above_plane's, which tests every vertex; which of the two defects a vertex
-    // above shows is asked only then.
-    const auto corner_beyond = [&](auto&& beyond) {
-      for (auto k = b + 1; k < e; ++k)
-        if (beyond(dot(n, c.vertices[c.face_vertices[k]] - o))) return true;
-      return false;
-    };
-    if (corner_beyond([t](double d) { return d < -t; })) return "non-planar face";
-    if (any_above_plane(X, Y, Z, nv, n, o, t))
-      return corner_beyond([t](double d) { return d > t; }) ? "non-planar face" : "not convex";
+    planes[np] = {1.0 / area2 * n, o, t};
+    plane_face[np] = static_cast<std::uint32_t>(f);
+    widened[np] = wide;
+    // Planar below the plane (the first corner is on it; above: the second pass).
+    ++np;
+    if (corner_beyond(f, planes[np - 1], [t](double d) { return d < -t; })) {
+      stop = "non-planar face", stop_face = f, stop_planar = true;
+      break;
+    }
   }
+  // The planes before the stop (a face stopped at by planarity is tested there: its
+  // corners lie beyond below, the defect named is the same).
+  const std::size_t tested = stop_planar ? np - 1 : np;
+  const std::size_t g = first_plane_exceeded(X, Y, Z, nv, planes.data(), tested);
+  // The findings of the faces up to the first defect (the old single pass stopped there).
+  const std::size_t last_face = g < tested ? plane_face[g] : stop_face;
+  if (found) {
+    found->skipped = first_tiny < last_face;
+    for (std::size_t i = 0; i < np && plane_face[i] <= last_face; ++i)
+      found->widened = found->widened || widened[i] != 0;
+  }
+  if (g < tested) {
+    const double t = planes[g].t;
+    return corner_beyond(plane_face[g], planes[g], [t](double d) { return d > t; }) ? "non-planar face" : "not convex";
+  }
+  if (stop) return stop;
   if (found) found->volume = six_volume / 6;
   return {};
 }

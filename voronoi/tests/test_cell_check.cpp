@@ -190,29 +190,29 @@ TEST_CASE("check_cell_convex names the defect its definition names, tolerances w
   const VoronoiDiagram vd = compute_voronoi(test::uniform(300, 5), vo);
   std::mt19937_64 rng(3);
   std::normal_distribution<double> jitter(0, 1);
-  std::size_t named[3] = {0, 0, 0}, widened = 0, kept = 0;  // sound, non-planar, not convex
+  std::size_t named[3] = {0, 0, 0}, widened = 0, kept = 0, skipped = 0;  // named: sound, non-planar, not convex
   for (const VoronoiCell& c : vd.cells) {
     for (int trial = 0; trial < 4; ++trial) {
       OwnedCell o = own(c);
-      // One vertex moved by about 1e-3 of the cell (trial 0: none moved).
+      // One vertex moved by about 1e-3 of the cell, or 0.1 (trial 3; trial 0: none moved).
       const double size = std::cbrt(c.volume);
       if (trial > 0) {
         Point3& v = o.vertices[rng() % o.vertices.size()];
-        v = v + 1e-3 * size * Point3{jitter(rng), jitter(rng), jitter(rng)};
+        v = v + (trial == 3 ? 0.1 : 1e-3) * size * Point3{jitter(rng), jitter(rng), jitter(rng)};
       }
-      const double tol = 1e-6 * size;
-      // Vertex errors from none to beyond tol, some near the widening's threshold.
-      for (const double e : {0.0, 1e-15 * size, 1e-9 * size, 4e-8 * size, 1e-7 * size, 3e-7 * size, 1e-5 * size}) {
-        const ConvexVerdict want = convex_by_definition(o.view(), tol, e);
-        ConvexFindings found;
-        CHECK(check_cell_convex(o.view(), {tol, true, e}, &found) == want.why);
-        if (want.why.empty()) {  // the findings are complete only for a cell that passed
+      // Vertex errors from none to beyond tol, some near the widening's threshold; a
+      // tolerance large enough for some faces to be too small to test.
+      for (const double tol : {1e-6 * size, 2e-2 * size})
+        for (const double e : {0.0, 1e-15 * size, 1e-9 * size, 4e-8 * size, 1e-7 * size, 3e-7 * size, 1e-5 * size}) {
+          const ConvexVerdict want = convex_by_definition(o.view(), tol, e);
+          ConvexFindings found;
+          CHECK(check_cell_convex(o.view(), {tol, true, e}, &found) == want.why);
+          // The findings of the faces up to the one that failed.
           CHECK(found.widened == want.widened);
           CHECK(found.skipped == want.skipped);
+          widened += want.widened, kept += !want.widened && e > 0, skipped += want.skipped;
+          if (e == 0 && tol < 1e-5 * size) ++named[want.why.empty() ? 0 : want.why == "non-planar face" ? 1 : 2];
         }
-        widened += want.widened, kept += !want.widened && e > 0;
-        if (e == 0) ++named[want.why.empty() ? 0 : want.why == "non-planar face" ? 1 : 2];
-      }
     }
   }
   CHECK(named[0] >= vd.cells.size());
@@ -220,4 +220,5 @@ TEST_CASE("check_cell_convex names the defect its definition names, tolerances w
   CHECK(named[2] > 0);
   CHECK(widened > 0);
   CHECK(kept > 0);
+  CHECK(skipped > 0);
 }
