@@ -253,6 +253,9 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
   const double room =
       (tol - 0x1p-50 * D) / (1 + 1e-12) - 2 * vertex_error - 1e-9 * (tol + 2 * vertex_error + 0x1p-50 * D);
   planes.resize(nf), plane_face.resize(nf), widened.resize(nf);
+  FacePlane* const plane = planes.data();  // raw pointers: the thread's vectors are not reread per face
+  std::uint32_t* const face_of = plane_face.data();
+  char* const wide_at = widened.data();
   std::size_t np = 0, first_tiny = nf;  // planes made; the first face skipped as tiny
   const char* stop = nullptr;           // the first pass's defect, at face `stop_face`
   std::size_t stop_face = nf;
@@ -297,12 +300,12 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
                                                triangles);
       if (r > tol) t = r, wide = true;
     }
-    planes[np] = {1.0 / area2 * n, o, t};
-    plane_face[np] = static_cast<std::uint32_t>(f);
-    widened[np] = wide;
+    plane[np] = {1.0 / area2 * n, o, t};
+    face_of[np] = static_cast<std::uint32_t>(f);
+    wide_at[np] = wide;
     // Planar below the plane (the first corner is on it; above: the second pass).
     ++np;
-    if (corner_beyond(f, planes[np - 1], [t](double d) { return d < -t; })) {
+    if (corner_beyond(f, plane[np - 1], [t](double d) { return d < -t; })) {
       stop = "non-planar face", stop_face = f, stop_planar = true;
       break;
     }
@@ -310,17 +313,16 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
   // The planes before the stop (a face stopped at by planarity is tested there: its
   // corners lie beyond below, the defect named is the same).
   const std::size_t tested = stop_planar ? np - 1 : np;
-  const std::size_t g = first_plane_exceeded(X, Y, Z, nv, planes.data(), tested);
+  const std::size_t g = first_plane_exceeded(X, Y, Z, nv, plane, tested);
   // The findings of the faces up to the first defect (the old single pass stopped there).
-  const std::size_t last_face = g < tested ? plane_face[g] : stop_face;
+  const std::size_t last_face = g < tested ? face_of[g] : stop_face;
   if (found) {
     found->skipped = first_tiny < last_face;
-    for (std::size_t i = 0; i < np && plane_face[i] <= last_face; ++i)
-      found->widened = found->widened || widened[i] != 0;
+    for (std::size_t i = 0; i < np && face_of[i] <= last_face; ++i) found->widened = found->widened || wide_at[i] != 0;
   }
   if (g < tested) {
-    const double t = planes[g].t;
-    return corner_beyond(plane_face[g], planes[g], [t](double d) { return d > t; }) ? "non-planar face" : "not convex";
+    const double t = plane[g].t;
+    return corner_beyond(face_of[g], plane[g], [t](double d) { return d > t; }) ? "non-planar face" : "not convex";
   }
   if (stop) return stop;
   if (found) found->volume = six_volume / 6;

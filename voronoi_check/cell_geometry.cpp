@@ -142,9 +142,25 @@ void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<cons
     std::size_t batched = 0;
     if (below >= 0)
       for (std::size_t v = v0; v < v1; ++v) {
-        gather_planes(v);
-        if (s.plane_count != 3) continue;
-        const auto& pl = s.plane_at;
+        std::uint32_t pl[3];
+        if (in.bits) {
+          // A vertex on three faces (nearly all): gather_planes' answer read off its set
+          // when each face has a plane, else gather_planes decides.
+          std::uint64_t m = in.faces[v];
+          pl[0] = static_cast<std::uint32_t>(__builtin_ctzll(m | std::uint64_t{1} << 63)), m &= m - 1;
+          pl[1] = static_cast<std::uint32_t>(__builtin_ctzll(m | std::uint64_t{1} << 63)), m &= m - 1;
+          pl[2] = static_cast<std::uint32_t>(__builtin_ctzll(m | std::uint64_t{1} << 63)), m &= m - 1;
+          const bool three = m == 0 && pl[2] < 63;  // exactly three faces
+          if (!(three && face_ok[pl[0]] && face_ok[pl[1]] && face_ok[pl[2]])) {
+            gather_planes(v);
+            if (s.plane_count != 3) continue;
+            std::copy_n(s.plane_at.begin(), 3, pl);
+          }
+        } else {
+          gather_planes(v);
+          if (s.plane_count != 3) continue;
+          std::copy_n(s.plane_at.begin(), 3, pl);
+        }
         s.batch.add(c.vertices[v], st, s.filter[pl[0]], s.filter[pl[1]], s.filter[pl[2]]);
         s.batched[batched++] = static_cast<std::uint32_t>(v);
       }
