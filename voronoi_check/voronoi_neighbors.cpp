@@ -268,15 +268,21 @@ void VoronoiNeighbors::neighbors(std::uint32_t a, std::vector<std::uint32_t>& po
   const bool degenerate_star = degenerate_star_[a];  // else every interior edge of a is positive
   all.resize(corners.size());
   std::size_t distinct = 0;
+  mark[a] = 1;  // a is no neighbour of its own
   for (auto v : corners) {
     all[distinct] = v;
-    distinct += (v != a) & (mark[v] == 0);
+    distinct += mark[v] == 0;
     mark[v] = 1;
   }
   all.resize(distinct);
   mark[a] = 0;
   for (auto v : all) mark[v] = 0;
   std::sort(all.begin(), all.end());
+  if (!degenerate_star && !hull_vertex_[a]) {  // no hull edge, no degenerate tet: all positive
+    positive.swap(all);
+    degenerate.clear();
+    return;
+  }
   std::size_t kept = 0;
   for (auto v : all) {
     if (edge_positive(a, v, degenerate_star, scratch))
