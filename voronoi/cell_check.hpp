@@ -234,6 +234,11 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
   thread_local std::vector<std::uint32_t> plane_face;  // the face of each plane
   thread_local std::vector<char> widened;              // per plane: its tolerance above tol
   const std::size_t nv = c.vertices.size(), nf = c.face_count();
+  // The cell's arrays as raw pointers, read once (stores to the planes could alias the
+  // spans' members for the compiler, which then reloads them per face).
+  const Point3* const V = c.vertices.data();
+  const std::uint32_t* const offsets = c.face_offsets.data();
+  const std::uint32_t* const corners = c.face_vertices.data();
   xs.resize(nv), ys.resize(nv), zs.resize(nv);
   double *X = xs.data(), *Y = ys.data(), *Z = zs.data();
   Point3 lo = nv > 0 ? c.vertices[0] : Point3{0, 0, 0}, hi = lo;
@@ -261,24 +266,24 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
   std::size_t stop_face = nf;
   bool stop_planar = false;  // the stop is a face's planarity (its plane made)
   const auto corner_beyond = [&](std::size_t f, const FacePlane& pl, auto&& beyond) {
-    for (auto k = c.face_offsets[f] + 1; k < c.face_offsets[f + 1]; ++k)
-      if (beyond(dot(pl.n, c.vertices[c.face_vertices[k]] - pl.o))) return true;
+    for (auto k = offsets[f] + 1; k < offsets[f + 1]; ++k)
+      if (beyond(dot(pl.n, V[corners[k]] - pl.o))) return true;
     return false;
   };
   for (std::size_t f = 0; f < nf; ++f) {
-    const auto b = c.face_offsets[f], e = c.face_offsets[f + 1];
-    const Point3 o = c.vertices[c.face_vertices[b]];
+    const auto b = offsets[f], e = offsets[f + 1];
+    const Point3 o = V[corners[b]];
     // The fan from the first corner, each corner's difference to it carried to the next triangle.
     Point3 n{0, 0, 0};
     if (e - b >= 3) {
-      Point3 prev = c.vertices[c.face_vertices[b + 1]] - o;
+      Point3 prev = V[corners[b + 1]] - o;
       for (auto k = b + 2; k < e; ++k) {
-        const Point3 next = c.vertices[c.face_vertices[k]] - o;
+        const Point3 next = V[corners[k]] - o;
         n = n + cross(prev, next);
         prev = next;
       }
     }
-    six_volume += dot(o - c.vertices[0], n);
+    six_volume += dot(o - V[0], n);
     const double area2 = norm(n);
     if (area2 <= tol * tol) {
       if (!test.skip_tiny) {
@@ -295,7 +300,7 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
     if (vertex_error > 0 && !(room > 0 && static_cast<double>(triangles) * K < 0.5 * room * area2) &&
         rounded_plane_tolerance(vertex_error, D, D, area2, triangles) > tol) {
       double r2 = 0;
-      for (auto k = b + 1; k < e; ++k) r2 = std::max(r2, norm2(c.vertices[c.face_vertices[k]] - o));
+      for (auto k = b + 1; k < e; ++k) r2 = std::max(r2, norm2(V[corners[k]] - o));
       const double r = rounded_plane_tolerance(vertex_error, std::min(D, std::sqrt(r2) * (1 + 1e-15)), D, area2,
                                                triangles);
       if (r > tol) t = r, wide = true;
