@@ -219,57 +219,67 @@ struct ConvexFindings {
   double volume = NAN;
 };
 
-// Planar faces and convex (every vertex behind every face plane) as `test` says; "" or
-// the defect, that of the first face (in the cell's order) that shows one. Two passes:
-// each face's plane, tolerance and planarity below it (the first pass stops at a face
-// that fails), then every vertex against the planes before that face at once
-// (first_plane_exceeded, the vertices copied into per-thread coordinate arrays), which
-// also covers planarity above. `found` (if given) receives the findings above, of the
-// faces up to the one that failed.
-inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& test, ConvexFindings* found = nullptr) {
-  const double tol = test.tol, vertex_error = test.vertex_error;
-  using namespace vor;
-  thread_local std::vector<double> xs, ys, zs;
-  thread_local std::vector<FacePlane> planes;
-  thread_local std::vector<std::uint32_t> plane_face;  // the face of each plane
-  thread_local std::vector<char> widened;              // per plane: its tolerance above tol
-  const std::size_t nv = c.vertices.size(), nf = c.face_count();
+namespace detail {
+
+// Whether a corner of face f (past its first) lies beyond plane `pl` as beyond(distance) says.
+template <class Beyond>
+bool corner_beyond(const VoronoiCell& c, std::size_t f, const FacePlane& pl, Beyond&& beyond) {
+  const Point3* const V = c.vertices.data();
+  for (auto k = c.face_offsets[f] + 1; k < c.face_offsets[f + 1]; ++k)
+    if (beyond(dot(pl.n, V[c.face_vertices[k]] - pl.o))) return true;
+  return false;
+}
+
+// A face's tolerance: tol, or rounded_plane_tolerance where that is more. It can exceed
+// tol only where rounded_plane_tolerance(e, D, D, area2, T) > tol, i.e. where theta D =
+// T K / area2 (K = 2 (4 e D + 4 e^2) D) exceeds `room`, less 1e-9 of the terms (far more
+// than the roundings of either side). So that bound is computed only for faces with
+// T K >= room area2 / 2, or any face when room <= 0 (or NaN); a face let through is
+// decided as before, so the result is the same.
+struct FaceTolerance {
+  double tol, e, D, K, room;
+  FaceTolerance(double tol_, double e_, double D_)
+      : tol(tol_),
+        e(e_),
+        D(D_),
+        K(2 * (4 * e_ * D_ + 4 * e_ * e_) * D_),
+        room((tol_ - 0x1p-50 * D_) / (1 + 1e-12) - 2 * e_ - 1e-9 * (tol_ + 2 * e_ + 0x1p-50 * D_)) {}
+  // r2: the face's largest squared distance from its first corner, asked only when needed.
+  template <class R2>
+  double at(double area2, std::size_t triangles, R2&& r2, bool& wide) const {
+    wide = false;
+    if (!(e > 0) || (room > 0 && static_cast<double>(triangles) * K < 0.5 * room * area2) ||
+        !(rounded_plane_tolerance(e, D, D, area2, triangles) > tol))
+      return tol;
+    // R <= D: the face's own R only where the bound with D exceeds tol (thin faces).
+    const double r = rounded_plane_tolerance(e, std::min(D, std::sqrt(r2()) * (1 + 1e-15)), D, area2, triangles);
+    if (!(r > tol)) return tol;
+    wide = true;
+    return r;
+  }
+};
+
+// The convexity test's first pass over the faces in order: each face's plane (the
+// normalized fan normal at its first corner) and tolerance into plane[np], face_of[np],
+// wide_at[np], and its planarity below the plane; stops at a face that fails. Tiny
+// faces (area <= tol^2) make no plane: skipped, or the stop when !skip_tiny.
+struct FacePlanes {
+  std::size_t np = 0, first_tiny, stop_face;  // planes made; the first tiny face; the stop's face
+  const char* stop = nullptr;                 // the defect it stopped at
+  bool stop_planar = false;                   // the stop is a face's planarity (its plane made)
+  double six_volume = 0;                      // sum over faces of (o_f - v0) . n_f
+};
+inline FacePlanes face_planes(const VoronoiCell& c, const ConvexTest& test, const FaceTolerance& tolerance,
+                              FacePlane* plane, std::uint32_t* face_of, char* wide_at) {
   // The cell's arrays as raw pointers, read once (stores to the planes could alias the
   // spans' members for the compiler, which then reloads them per face).
   const Point3* const V = c.vertices.data();
   const std::uint32_t* const offsets = c.face_offsets.data();
   const std::uint32_t* const corners = c.face_vertices.data();
-  xs.resize(nv), ys.resize(nv), zs.resize(nv);
-  double *X = xs.data(), *Y = ys.data(), *Z = zs.data();
-  Point3 lo = nv > 0 ? c.vertices[0] : Point3{0, 0, 0}, hi = lo;
-  for (std::size_t i = 0; i < nv; ++i) {
-    const Point3& v = c.vertices[i];
-    X[i] = v.x, Y[i] = v.y, Z[i] = v.z;
-    lo = min3(lo, v), hi = max3(hi, v);
-  }
-  double six_volume = 0;
-  const double D = vertex_error > 0 ? norm(hi - lo) : 0;
-  // A face's tolerance can exceed tol only where rounded_plane_tolerance(e, D, D, area2,
-  // T) > tol, i.e. where theta D = T K / area2 (K = 2 (4 e D + 4 e^2) D) exceeds `room`,
-  // less 1e-9 of the terms (far more than the roundings of either side). So that bound
-  // is computed only for faces with T K >= room area2 / 2, or any face when room <= 0
-  // (or NaN); a face let through is decided as before, so the result is the same.
-  const double K = 2 * (4 * vertex_error * D + 4 * vertex_error * vertex_error) * D;
-  const double room =
-      (tol - 0x1p-50 * D) / (1 + 1e-12) - 2 * vertex_error - 1e-9 * (tol + 2 * vertex_error + 0x1p-50 * D);
-  planes.resize(nf), plane_face.resize(nf), widened.resize(nf);
-  FacePlane* const plane = planes.data();  // raw pointers: the thread's vectors are not reread per face
-  std::uint32_t* const face_of = plane_face.data();
-  char* const wide_at = widened.data();
-  std::size_t np = 0, first_tiny = nf;  // planes made; the first face skipped as tiny
-  const char* stop = nullptr;           // the first pass's defect, at face `stop_face`
-  std::size_t stop_face = nf;
-  bool stop_planar = false;  // the stop is a face's planarity (its plane made)
-  const auto corner_beyond = [&](std::size_t f, const FacePlane& pl, auto&& beyond) {
-    for (auto k = offsets[f] + 1; k < offsets[f + 1]; ++k)
-      if (beyond(dot(pl.n, V[corners[k]] - pl.o))) return true;
-    return false;
-  };
+  const std::size_t nf = c.face_count();
+  const double tol = test.tol;
+  FacePlanes out;
+  out.first_tiny = out.stop_face = nf;
   for (std::size_t f = 0; f < nf; ++f) {
     const auto b = offsets[f], e = offsets[f + 1];
     const Point3 o = V[corners[b]];
@@ -283,54 +293,85 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
         prev = next;
       }
     }
-    six_volume += dot(o - V[0], n);
+    out.six_volume += dot(o - V[0], n);
     const double area2 = norm(n);
     if (area2 <= tol * tol) {
       if (!test.skip_tiny) {
-        stop = "zero-area face", stop_face = f;
-        break;
+        out.stop = "zero-area face", out.stop_face = f;
+        return out;
       }
-      first_tiny = std::min(first_tiny, f);
+      out.first_tiny = std::min(out.first_tiny, f);
       continue;
     }
-    double t = tol;
+    const auto r2 = [&] {
+      double r = 0;
+      for (auto k = b + 1; k < e; ++k) r = std::max(r, norm2(V[corners[k]] - o));
+      return r;
+    };
     bool wide = false;
-    const std::size_t triangles = e - b > 2 ? e - b - 2 : 1;
-    // R <= D: the face's own R only where the bound with D exceeds tol (thin faces).
-    if (vertex_error > 0 && !(room > 0 && static_cast<double>(triangles) * K < 0.5 * room * area2) &&
-        rounded_plane_tolerance(vertex_error, D, D, area2, triangles) > tol) {
-      double r2 = 0;
-      for (auto k = b + 1; k < e; ++k) r2 = std::max(r2, norm2(V[corners[k]] - o));
-      const double r = rounded_plane_tolerance(vertex_error, std::min(D, std::sqrt(r2) * (1 + 1e-15)), D, area2,
-                                               triangles);
-      if (r > tol) t = r, wide = true;
-    }
-    plane[np] = {1.0 / area2 * n, o, t};
-    face_of[np] = static_cast<std::uint32_t>(f);
-    wide_at[np] = wide;
+    const double t = tolerance.at(area2, e - b > 2 ? e - b - 2 : 1, r2, wide);
+    plane[out.np] = {1.0 / area2 * n, o, t};
+    face_of[out.np] = static_cast<std::uint32_t>(f);
+    wide_at[out.np] = wide;
     // Planar below the plane (the first corner is on it; above: the second pass).
-    ++np;
-    if (corner_beyond(f, plane[np - 1], [t](double d) { return d < -t; })) {
-      stop = "non-planar face", stop_face = f, stop_planar = true;
-      break;
+    if (corner_beyond(c, f, plane[out.np++], [t](double d) { return d < -t; })) {
+      out.stop = "non-planar face", out.stop_face = f, out.stop_planar = true;
+      return out;
     }
   }
+  return out;
+}
+
+}  // namespace detail
+
+// Planar faces and convex (every vertex behind every face plane) as `test` says; "" or
+// the defect, that of the first face (in the cell's order) that shows one. Two passes:
+// each face's plane, tolerance and planarity below it (detail::face_planes, which stops
+// at a face that fails), then every vertex against the planes before that face at once
+// (first_plane_exceeded, the vertices copied into per-thread coordinate arrays), which
+// also covers planarity above. `found` (if given) receives the findings above, of the
+// faces up to the one that failed.
+inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& test, ConvexFindings* found = nullptr) {
+  using namespace vor;
+  thread_local std::vector<double> xs, ys, zs;
+  thread_local std::vector<FacePlane> planes;
+  thread_local std::vector<std::uint32_t> plane_face;  // the face of each plane
+  thread_local std::vector<char> widened;              // per plane: its tolerance above tol
+  const std::size_t nv = c.vertices.size(), nf = c.face_count();
+  xs.resize(nv), ys.resize(nv), zs.resize(nv);
+  double *X = xs.data(), *Y = ys.data(), *Z = zs.data();
+  Point3 lo = nv > 0 ? c.vertices[0] : Point3{0, 0, 0}, hi = lo;
+  for (std::size_t i = 0; i < nv; ++i) {
+    const Point3& v = c.vertices[i];
+    X[i] = v.x, Y[i] = v.y, Z[i] = v.z;
+    lo = min3(lo, v), hi = max3(hi, v);
+  }
+  const double D = test.vertex_error > 0 ? norm(hi - lo) : 0;
+  planes.resize(nf), plane_face.resize(nf), widened.resize(nf);
+  // Raw pointers: the thread's vectors are not reread per face.
+  FacePlane* const plane = planes.data();
+  std::uint32_t* const face_of = plane_face.data();
+  char* const wide_at = widened.data();
+  const detail::FacePlanes made =
+      detail::face_planes(c, test, {test.tol, test.vertex_error, D}, plane, face_of, wide_at);
   // The planes before the stop (a face stopped at by planarity is tested there: its
   // corners lie beyond below, the defect named is the same).
-  const std::size_t tested = stop_planar ? np - 1 : np;
+  const std::size_t tested = made.stop_planar ? made.np - 1 : made.np;
   const std::size_t g = first_plane_exceeded(X, Y, Z, nv, plane, tested);
   // The findings of the faces up to the first defect (the old single pass stopped there).
-  const std::size_t last_face = g < tested ? face_of[g] : stop_face;
+  const std::size_t last_face = g < tested ? face_of[g] : made.stop_face;
   if (found) {
-    found->skipped = first_tiny < last_face;
-    for (std::size_t i = 0; i < np && face_of[i] <= last_face; ++i) found->widened = found->widened || wide_at[i] != 0;
+    found->skipped = made.first_tiny < last_face;
+    for (std::size_t i = 0; i < made.np && face_of[i] <= last_face; ++i)
+      found->widened = found->widened || wide_at[i] != 0;
   }
   if (g < tested) {
     const double t = plane[g].t;
-    return corner_beyond(face_of[g], plane[g], [t](double d) { return d > t; }) ? "non-planar face" : "not convex";
+    return detail::corner_beyond(c, face_of[g], plane[g], [t](double d) { return d > t; }) ? "non-planar face"
+                                                                                           : "not convex";
   }
-  if (stop) return stop;
-  if (found) found->volume = six_volume / 6;
+  if (made.stop) return made.stop;
+  if (found) found->volume = made.six_volume / 6;
   return {};
 }
 
