@@ -1,6 +1,6 @@
 #pragma once
-// The inner loop of the convexity test (cell_check.hpp): whether some point of a cell
-// lies beyond a face's plane by more than the tolerance.
+// The inner loop of the convexity test (cell_check.hpp): the first face plane that some
+// point of a cell lies beyond by more than the plane's tolerance.
 #include <cstddef>
 
 #include "predicates/vec3.hpp"
@@ -20,12 +20,5 @@ struct FacePlane {
 // call per cell (a call per face cost more than its loop at 15 faces of 26 vertices).
 std::size_t first_plane_exceeded(const double* X, const double* Y, const double* Z, std::size_t points,
                                  const FacePlane* planes, std::size_t count);
-
-// Whether some point lies beyond one plane (first_plane_exceeded with that plane).
-inline bool any_above_plane(const double* X, const double* Y, const double* Z, std::size_t count, const Point3& n,
-                            const Point3& o, double tol) {
-  const FacePlane plane{n, o, tol};
-  return first_plane_exceeded(X, Y, Z, count, &plane, 1) == 0;
-}
 
 }  // namespace dtlab

@@ -102,39 +102,19 @@ inline void cell_incidence(const VoronoiCell& c, CellIncidence& in) {
 
 namespace detail {
 
-// Whether every directed edge of a cell of at most 64 vertices is used once, its
-// reverse once, no edge joins a vertex to itself and every vertex is used: the heads
-// of each vertex as a 64-bit set (a head already in it is a second use), and each
-// edge's reverse a bit of its head's set. No branch on the data (a cell is judged in a
-// few hundred cycles); a false answer is explained by check_cell_closed's search,
-// which names the first defect.
-inline bool edges_paired(std::size_t nv, const CellIncidence& in) {
-  std::uint64_t sets[64];
-  bool ok = true;
-  for (std::uint32_t u = 0; u < nv; ++u) {
-    std::uint64_t set = 0;
-    for (auto v : in.heads(u)) {
-      ok &= ((set >> v) & 1) == 0;
-      set |= std::uint64_t{1} << v;
-    }
-    ok &= (set != 0) & (((set >> u) & 1) == 0);
-    sets[u] = set;
-  }
-  for (std::uint32_t u = 0; u < nv; ++u)
-    for (auto v : in.heads(u)) ok &= ((sets[v] >> u) & 1) != 0;
-  return ok;
-}
-
-// The same from the bit sets: no edge listed twice, and per vertex u an edge out
-// (every vertex used), none to itself, and the heads of its edges out the tails of its
-// edges in (every edge's reverse present).
+// Whether every directed edge is used once, its reverse once, no edge joins a vertex to
+// itself and every vertex is used, from the bit sets: no edge listed twice, and per
+// vertex u an edge out, none to itself, and the heads of its edges out the tails of its
+// edges in. No branch on the data; a false answer is explained by closed_search, which
+// names the first defect.
 inline bool sets_paired(std::size_t nv, const CellIncidence& in) {
   bool ok = !in.repeated;
   for (std::size_t u = 0; u < nv; ++u) ok &= (in.out[u] != 0) & (((in.out[u] >> u) & 1) == 0) & (in.out[u] == in.in[u]);
   return ok;
 }
 
-// The first defect of a cell whose edges are not paired (rows), or the Euler test.
+// The first defect of a cell on rows, else the Euler test (what sets_paired decides at
+// once, searched; for the cells without bit sets and defective ones).
 inline std::string closed_search(const VoronoiCell& c, const CellIncidence& in, long euler) {
   const std::size_t nv = c.vertices.size();
   for (std::uint32_t u = 0; u < nv; ++u) {
@@ -166,15 +146,11 @@ inline std::string check_cell_closed(const VoronoiCell& c, const CellIncidence& 
   for (std::size_t f = 0; f < nf; ++f)
     if (c.face_offsets[f + 1] - c.face_offsets[f] < 3) return "face with fewer than 3 vertices";
   const long euler = long(nv) - long(c.face_vertices.size() / 2) + long(nf);
-  const auto euler_test = [&] { return euler == 2 ? std::string{} : "Euler characteristic " + std::to_string(euler); };
-  if (in.bits) {
-    if (detail::sets_paired(nv, in)) return euler_test();
-    thread_local CellIncidence rows;  // the search reads rows; a defective cell is rare
-    cell_rows(c, rows);
-    return detail::closed_search(c, rows, euler);
-  }
-  if (nv <= 64 && detail::edges_paired(nv, in)) return euler_test();
-  return detail::closed_search(c, in, euler);
+  if (!in.bits) return detail::closed_search(c, in, euler);
+  if (detail::sets_paired(nv, in)) return euler == 2 ? std::string{} : "Euler characteristic " + std::to_string(euler);
+  thread_local CellIncidence rows;  // the search reads rows; a defective cell is rare
+  cell_rows(c, rows);
+  return detail::closed_search(c, rows, euler);
 }
 
 // The same, building the incidence in an array kept by the thread.
@@ -244,24 +220,22 @@ struct FaceTolerance {
         D(D_),
         K(2 * (4 * e_ * D_ + 4 * e_ * e_) * D_),
         room((tol_ - 0x1p-50 * D_) / (1 + 1e-12) - 2 * e_ - 1e-9 * (tol_ + 2 * e_ + 0x1p-50 * D_)) {}
-  // r2: the face's largest squared distance from its first corner, asked only when needed.
+  // r2: the face's largest squared distance from its first corner, asked only when
+  // needed. Above tol exactly when widened.
   template <class R2>
-  double at(double area2, std::size_t triangles, R2&& r2, bool& wide) const {
-    wide = false;
+  double at(double area2, std::size_t triangles, R2&& r2) const {
     if (!(e > 0) || (room > 0 && static_cast<double>(triangles) * K < 0.5 * room * area2) ||
         !(rounded_plane_tolerance(e, D, D, area2, triangles) > tol))
       return tol;
     // R <= D: the face's own R only where the bound with D exceeds tol (thin faces).
     const double r = rounded_plane_tolerance(e, std::min(D, std::sqrt(r2()) * (1 + 1e-15)), D, area2, triangles);
-    if (!(r > tol)) return tol;
-    wide = true;
-    return r;
+    return r > tol ? r : tol;
   }
 };
 
 // The convexity test's first pass over the faces in order: each face's plane (the
-// normalized fan normal at its first corner) and tolerance into plane[np], face_of[np],
-// wide_at[np], and its planarity below the plane; stops at a face that fails. Tiny
+// normalized fan normal at its first corner) and tolerance into plane[np] and face_of[np],
+// and its planarity below the plane; stops at a face that fails. Tiny
 // faces (area <= tol^2) make no plane: skipped, or the stop when !skip_tiny.
 struct FacePlanes {
   std::size_t np = 0, first_tiny, stop_face;  // planes made; the first tiny face; the stop's face
@@ -270,7 +244,7 @@ struct FacePlanes {
   double six_volume = 0;                      // sum over faces of (o_f - v0) . n_f
 };
 inline FacePlanes face_planes(const VoronoiCell& c, const ConvexTest& test, const FaceTolerance& tolerance,
-                              FacePlane* plane, std::uint32_t* face_of, char* wide_at) {
+                              FacePlane* plane, std::uint32_t* face_of) {
   // The cell's arrays as raw pointers, read once (stores to the planes could alias the
   // spans' members for the compiler, which then reloads them per face).
   const Point3* const V = c.vertices.data();
@@ -308,11 +282,9 @@ inline FacePlanes face_planes(const VoronoiCell& c, const ConvexTest& test, cons
       for (auto k = b + 1; k < e; ++k) r = std::max(r, norm2(V[corners[k]] - o));
       return r;
     };
-    bool wide = false;
-    const double t = tolerance.at(area2, e - b > 2 ? e - b - 2 : 1, r2, wide);
+    const double t = tolerance.at(area2, e - b > 2 ? e - b - 2 : 1, r2);
     plane[out.np] = {1.0 / area2 * n, o, t};
     face_of[out.np] = static_cast<std::uint32_t>(f);
-    wide_at[out.np] = wide;
     // Planar below the plane (the first corner is on it; above: the second pass).
     if (corner_beyond(c, f, plane[out.np++], [t](double d) { return d < -t; })) {
       out.stop = "non-planar face", out.stop_face = f, out.stop_planar = true;
@@ -336,7 +308,6 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
   thread_local std::vector<double> xs, ys, zs;
   thread_local std::vector<FacePlane> planes;
   thread_local std::vector<std::uint32_t> plane_face;  // the face of each plane
-  thread_local std::vector<char> widened;              // per plane: its tolerance above tol
   const std::size_t nv = c.vertices.size(), nf = c.face_count();
   xs.resize(nv), ys.resize(nv), zs.resize(nv);
   double *X = xs.data(), *Y = ys.data(), *Z = zs.data();
@@ -347,13 +318,11 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
     lo = min3(lo, v), hi = max3(hi, v);
   }
   const double D = test.vertex_error > 0 ? norm(hi - lo) : 0;
-  planes.resize(nf), plane_face.resize(nf), widened.resize(nf);
+  planes.resize(nf), plane_face.resize(nf);
   // Raw pointers: the thread's vectors are not reread per face.
   FacePlane* const plane = planes.data();
   std::uint32_t* const face_of = plane_face.data();
-  char* const wide_at = widened.data();
-  const detail::FacePlanes made =
-      detail::face_planes(c, test, {test.tol, test.vertex_error, D}, plane, face_of, wide_at);
+  const detail::FacePlanes made = detail::face_planes(c, test, {test.tol, test.vertex_error, D}, plane, face_of);
   // The planes before the stop (a face stopped at by planarity is tested there: its
   // corners lie beyond below, the defect named is the same).
   const std::size_t tested = made.stop_planar ? made.np - 1 : made.np;
@@ -363,7 +332,7 @@ inline std::string check_cell_convex(const VoronoiCell& c, const ConvexTest& tes
   if (found) {
     found->skipped = made.first_tiny < last_face;
     for (std::size_t i = 0; i < made.np && face_of[i] <= last_face; ++i)
-      found->widened = found->widened || wide_at[i] != 0;
+      found->widened = found->widened || plane[i].t > test.tol;
   }
   if (g < tested) {
     const double t = plane[g].t;

@@ -131,6 +131,12 @@ void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<cons
     });
     s.plane_count = n;
   };
+  // A vertex on exactly three faces, each with a plane (nearly all), from its face set:
+  // gather_planes' answer without the visit (false: gather_planes decides).
+  const auto three_planes = [&](std::uint64_t m, std::uint32_t(&pl)[3]) {
+    for (auto& f : pl) f = static_cast<std::uint32_t>(__builtin_ctzll(m | std::uint64_t{1} << 63)), m &= m - 1;
+    return m == 0 && pl[2] < 63 && face_ok[pl[0]] && face_ok[pl[1]] && face_ok[pl[2]];
+  };
   // The filter first, on the vertices of three planes of a block of vertices at once
   // (one batch: every cell but a huge one is one block); the solve for the rest.
   const std::size_t nv = c.vertices.size();
@@ -143,20 +149,7 @@ void vertex_errors(const VoronoiCell& c, const CellIncidence& in, std::span<cons
     if (below >= 0)
       for (std::size_t v = v0; v < v1; ++v) {
         std::uint32_t pl[3];
-        if (in.bits) {
-          // A vertex on three faces (nearly all): gather_planes' answer read off its set
-          // when each face has a plane, else gather_planes decides.
-          std::uint64_t m = in.faces[v];
-          pl[0] = static_cast<std::uint32_t>(__builtin_ctzll(m | std::uint64_t{1} << 63)), m &= m - 1;
-          pl[1] = static_cast<std::uint32_t>(__builtin_ctzll(m | std::uint64_t{1} << 63)), m &= m - 1;
-          pl[2] = static_cast<std::uint32_t>(__builtin_ctzll(m | std::uint64_t{1} << 63)), m &= m - 1;
-          const bool three = m == 0 && pl[2] < 63;  // exactly three faces
-          if (!(three && face_ok[pl[0]] && face_ok[pl[1]] && face_ok[pl[2]])) {
-            gather_planes(v);
-            if (s.plane_count != 3) continue;
-            std::copy_n(s.plane_at.begin(), 3, pl);
-          }
-        } else {
+        if (!(in.bits && three_planes(in.faces[v], pl))) {
           gather_planes(v);
           if (s.plane_count != 3) continue;
           std::copy_n(s.plane_at.begin(), 3, pl);
